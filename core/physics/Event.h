@@ -1,0 +1,51 @@
+#pragma once
+// One event of a simulation, with everything the event list, the inspector and the time-of-impact
+// display need: time, kind, agents, and the agents' states just before and just after.
+
+#include "Ball.h"
+#include "Types.h"
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+namespace cuelab {
+
+enum class EventKind : std::uint8_t {
+    CueStrike,
+    BallBall,
+    BallCushion,   // a straight cushion segment (rail or facing)
+    BallJaw,       // a circular jaw tip; written to files as "ball-cushion" with the jaw's id
+    BallPocket,
+    SlideToRoll,
+    SlideToSpin,
+    SlideToStop,
+    RollToSpin,
+    RollToStop,
+    SpinToStop,
+};
+
+// CONTRACT.md names: "cue-strike", "ball-ball", "ball-cushion" (BallCushion and BallJaw),
+// "ball-pocket", "slide-to-roll", ...
+std::string_view toString(EventKind k);
+bool isTransition(EventKind k);
+bool isCollision(EventKind k);  // BallBall, BallCushion, BallJaw
+
+struct Event {
+    EventKind kind = EventKind::CueStrike;
+    double time = 0.0;                 // s
+    std::array<int, 2> balls{-1, -1};  // indices into the ball list; balls[1] only for BallBall
+    int cushion = -1;                  // index into Table::cushions (BallCushion)
+    int jaw = -1;                      // index into Table::jaws (BallJaw)
+    int pocket = -1;                   // index into Table::pockets (BallPocket)
+    std::array<BallState, 2> before{}; // states of balls[0], balls[1] just before the event
+    std::array<BallState, 2> after{};  // and just after
+
+    // Collision details (zero for transitions):
+    Vec2 contactPoint = Vec2::Zero();  // m, where the bodies touch (on the cloth plane)
+    Vec2 normal = Vec2::Zero();        // unit contact normal, from balls[0] towards the other body
+    double approachSpeed = 0.0;        // m/s, normal relative speed just before (> 0 when approaching)
+    Vec3 impulse = Vec3::Zero();       // N s, impulse on balls[0] (x, y, z in the table frame)
+};
+
+}  // namespace cuelab

@@ -1,0 +1,41 @@
+#pragma once
+// Physics parameters in SI units, defaults from ../shared/PHYSICS.md (sources cited per value).
+
+#include <cstdint>
+#include <string_view>
+
+namespace cuelab {
+
+enum class BallBallModel : std::uint8_t {
+    Frictionless,  // normal impulse with restitution only; spins unchanged
+    Frictional,    // plus a tangential impulse (throw), Coulomb-limited
+};
+enum class BallBallFriction : std::uint8_t {
+    Fixed,      // mu_b = PhysicsParams::ballBallFriction
+    Alciatore,  // mu_b(v_rel) = 9.951e-3 + 0.108 exp(-1.088 v_rel)  (Alciatore TP A-14)
+};
+enum class BallCushionModel : std::uint8_t {
+    Mirror,   // v' = v - (1 + e)(v.N)N, spins unchanged (the 2011 method)
+    Han2005,  // Han 2005, contact above the equator, Coulomb friction
+};
+
+std::string_view toString(BallBallModel m);     // "frictionless" | "frictional"
+std::string_view toString(BallCushionModel m);  // "mirror" | "han2005"
+
+struct PhysicsParams {
+    double gravity = 9.81;        // m/s^2
+    double muSlide = 0.2;         // sliding friction ball-cloth (Alciatore; 0.15-0.4)
+    double muRoll = 0.01;         // rolling resistance (Alciatore, pooltool; 0.005-0.015)
+    double muSpin = 0.0127;       // spin friction about z, alpha = 5 mu g / (2R) ~ 10.9 rad/s^2 (pooltool)
+
+    BallBallModel ballBallModel = BallBallModel::Frictionless;
+    double ballBallRestitution = 0.95;                        // (Alciatore, pooltool; 0.92-0.98)
+    BallBallFriction ballBallFrictionKind = BallBallFriction::Fixed;
+    double ballBallFriction = 0.05;                           // mu_b when Fixed (pooltool)
+
+    BallCushionModel ballCushionModel = BallCushionModel::Han2005;
+    double cushionRestitution = 0.85;                         // (Alciatore, pooltool; 0.6-0.9)
+    double cushionFriction = 0.2;                             // (pooltool)
+};
+
+}  // namespace cuelab

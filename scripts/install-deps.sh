@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs exactly the Debian 12 packages CueLab needs to build, run and test, and nothing else.
+# Idempotent: installs only what is missing, and says what it installs. Uses sudo when not root.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++                      # build tools
+  qt6-base-dev qt6-base-dev-tools            # Qt 6.4: Core, Gui, Widgets, OpenGL, Test
+  libqt6opengl6-dev                          # Qt6::OpenGLWidgets (QOpenGLWidget)
+  libgl-dev libgl1-mesa-dri                  # OpenGL headers; Mesa's llvmpipe software renderer
+  libeigen3-dev                              # Eigen 3.4 (the physics core's only dependency)
+  xvfb xauth                                 # a real X server for the GUI tests (xvfb-run)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
+  sudo=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
