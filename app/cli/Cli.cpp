@@ -1,22 +1,19 @@
-// cuelab-cli: the command-line tool of CONTRACT.md.
-// Exit status: 0 success, 1 setup refused, 2 usage error, 3 simulation could not finish.
+#include "Cli.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QTextStream>
 
-int main(int argc, char* argv[])
-{
-    QCoreApplication app(argc, argv);
-    QCoreApplication::setApplicationName(QStringLiteral("cuelab-cli"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(CUELAB_VERSION));
+namespace cuelab::cli {
 
+int run(const QStringList& arguments)
+{
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("CueLab's command-line tool."));
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("command"), QStringLiteral("The command to run."));
-    if (!parser.parse(QCoreApplication::arguments())) {
+    if (!parser.parse(arguments)) {
         QTextStream(stderr) << parser.errorText() << '\n';
         return 2;
     }
@@ -25,3 +22,5 @@ int main(int argc, char* argv[])
     QTextStream(stderr) << "cuelab-cli: no commands yet; see --help\n";
     return 2;
 }
+
+}  // namespace cuelab::cli
