@@ -1,16 +1,430 @@
-// SCAFFOLDING (foundation commit): returns the balls as set up, without motion or events.
-// The event-based simulator of issue 3 replaces this file.
+// The event loop (issue 3): next event -> evolve its agents to its time -> resolve it -> re-predict
+// only the balls it involved. Balls evolve lazily: each keeps the start time and state of its
+// current motion segment, and everything it will do is predicted from that segment's closed form.
+
 #include "Simulation.h"
+
+#include "BallBallCollision.h"
+#include "CueImpact.h"
+#include "CushionCollision.h"
+#include "Detection.h"
+#include "Motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
 
 namespace cuelab {
 
+namespace {
+
+// What an event acts on besides its ball; the order of the enumerators is the tie order of
+// simultaneous events of one ball (Simulation.h).
+enum class Agent : std::uint8_t { Transition, Pocket, Ball, Cushion, Jaw };
+
+// An event waiting to happen, ordered by (time, category, ball, agent kind, agent index):
+// category 0 = transitions and pockets, 1 = collisions.
+struct Candidate {
+    double time = kNever;  // s, absolute
+    int category = 0;
+    int ball = -1;
+    Agent agent = Agent::Transition;
+    int index = -1;  // the other ball, the cushion, the jaw or the pocket
+};
+
+bool earlier(const Candidate& x, const Candidate& y)
+{
+    if (x.time != y.time) return x.time < y.time;
+    if (x.category != y.category) return x.category < y.category;
+    if (x.ball != y.ball) return x.ball < y.ball;
+    if (x.agent != y.agent) return x.agent < y.agent;
+    return x.index < y.index;
+}
+
+// Axis-aligned box that holds a ball's centre over its whole motion segment (for culling).
+struct Box {
+    Vec2 lo = Vec2::Zero();
+    Vec2 hi = Vec2::Zero();
+};
+
+Box boxOf(const Path& path, double duration)
+{
+    Box b;
+    b.lo = b.hi = path.c0;
+    if (path.c1.isZero(0.0) && path.c2.isZero(0.0)) return b;
+    if (duration == kNever) {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        b.lo = Vec2(-inf, -inf);
+        b.hi = Vec2(inf, inf);
+        return b;
+    }
+    const Vec2 end = path.at(duration);
+    b.lo = b.lo.cwiseMin(end);
+    b.hi = b.hi.cwiseMax(end);
+    for (int k = 0; k < 2; ++k) {
+        // Extreme of c0 + c1 t + c2 t^2 at t = -c1 / (2 c2).
+        if (path.c2[k] == 0.0) continue;
+        const double t = -path.c1[k] / (2.0 * path.c2[k]);
+        if (t > 0.0 && t < duration) {
+            const double v = path.c0[k] + t * (path.c1[k] + t * path.c2[k]);
+            b.lo[k] = std::min(b.lo[k], v);
+            b.hi[k] = std::max(b.hi[k], v);
+        }
+    }
+    return b;
+}
+
+bool boxesMeet(const Box& a, double ra, const Box& b, double rb)
+{
+    const double reach = ra + rb + 1e-9;
+    return a.lo.x() - reach <= b.hi.x() && b.lo.x() - reach <= a.hi.x() && a.lo.y() - reach <= b.hi.y()
+           && b.lo.y() - reach <= a.hi.y();
+}
+
+bool boxNearCircle(const Box& a, double reach, const Vec2& c)
+{
+    const double dx = std::max({a.lo.x() - c.x(), 0.0, c.x() - a.hi.x()});
+    const double dy = std::max({a.lo.y() - c.y(), 0.0, c.y() - a.hi.y()});
+    return dx * dx + dy * dy <= (reach + 1e-9) * (reach + 1e-9);
+}
+
+bool boxNearSegment(const Box& a, double reach, const CushionSegment& s)
+{
+    const Vec2 lo = s.a.cwiseMin(s.b), hi = s.a.cwiseMax(s.b);
+    const double r = reach + 1e-9;
+    return a.lo.x() - r <= hi.x() && lo.x() - r <= a.hi.x() && a.lo.y() - r <= hi.y() && lo.y() - r <= a.hi.y();
+}
+
+class Simulator {
+public:
+    Simulator(SimulationResult& result, double limit, long long maxEvents)
+        : r_(result), table_(result.table), p_(result.physics), n_(static_cast<int>(result.balls.size())),
+          limit_(limit), maxEvents_(maxEvents)
+    {
+        const std::size_t n = static_cast<std::size_t>(n_);
+        start_.assign(n, 0.0);
+        state_.resize(n);
+        path_.resize(n);
+        end_.assign(n, kNever);
+        box_.resize(n);
+        own_.resize(n);
+        pair_.assign(n * n, kNever);
+        rowMin_.assign(n, kNever);
+        rowPartner_.assign(n, -1);
+        r_.timelines.assign(n, {});
+    }
+
+    void run(const std::optional<CueStrike>& shot);
+
+private:
+    double radius(int i) const { return r_.balls[static_cast<std::size_t>(i)].radius; }
+    double mass(int i) const { return r_.balls[static_cast<std::size_t>(i)].mass; }
+    std::size_t at(int i) const { return static_cast<std::size_t>(i); }
+
+    BallState stateNow(int i, double t) const { return evolve(state_[at(i)], radius(i), p_, t - start_[at(i)]); }
+    Path pathNow(int i, double t) const;
+    void beginSegment(int i, double t, const BallState& s);
+    void predictOwn(int i, double now);
+    void predictPairs(int i, double now);
+    double pairTime(int i, int j, double now) const;
+    Candidate next() const;
+    void process(const Candidate& c);
+    bool atRest(int i) const;
+
+    SimulationResult& r_;
+    const Table& table_;
+    const PhysicsParams& p_;
+    int n_;
+    double limit_;
+    long long maxEvents_;
+
+    // Flat per-ball arrays: the current motion segment and its predictions.
+    std::vector<double> start_;      // s, when the segment began
+    std::vector<BallState> state_;   // the state at start_
+    std::vector<Path> path_;         // position over the segment, from start_
+    std::vector<double> end_;        // s, absolute time of the transition that ends the segment
+    std::vector<Box> box_;           // where the centre can be during the segment
+    std::vector<Candidate> own_;     // next transition, pocket, cushion or jaw event
+    std::vector<double> pair_;       // n x n, next contact time of each pair (symmetric)
+    std::vector<double> rowMin_;     // per ball, the earliest of its row of pair_
+    std::vector<int> rowPartner_;    // and the partner (the smallest index among ties)
+};
+
+Path Simulator::pathNow(int i, double t) const
+{
+    // The segment's polynomial shifted to the origin t: p(tau0 + s) expanded in s.
+    const Path& p = path_[at(i)];
+    const double tau0 = t - start_[at(i)];
+    Path out;
+    out.c0 = p.at(tau0);
+    out.c1 = p.c1 + (2.0 * tau0) * p.c2;
+    out.c2 = p.c2;
+    return out;
+}
+
+bool Simulator::atRest(int i) const
+{
+    const MotionState m = state_[at(i)].motion;
+    return m == MotionState::Stationary || m == MotionState::Pocketed;
+}
+
+void Simulator::beginSegment(int i, double t, const BallState& s)
+{
+    BallState st = s;
+    if (st.motion != MotionState::Pocketed) st.motion = classify(st, radius(i));
+    start_[at(i)] = t;
+    state_[at(i)] = st;
+    path_[at(i)] = pathOf(st, radius(i), p_);
+    const Transition tr = nextTransition(st, radius(i), p_);
+    end_[at(i)] = tr.after == kNever ? kNever : t + tr.after;
+    box_[at(i)] = boxOf(path_[at(i)], tr.after);
+    r_.timelines[at(i)].push_back(MotionSegment{t, st});
+}
+
+void Simulator::predictOwn(int i, double now)
+{
+    Candidate best;
+    best.ball = i;
+    const BallState& s = state_[at(i)];
+    if (s.motion == MotionState::Pocketed) {
+        own_[at(i)] = best;
+        return;
+    }
+    if (end_[at(i)] != kNever) best = Candidate{end_[at(i)], 0, i, Agent::Transition, 0};
+    const bool moving = s.motion == MotionState::Sliding || s.motion == MotionState::Rolling;
+    if (moving) {
+        const Path p = pathNow(i, now);
+        const double horizon = end_[at(i)] - now;
+        const double R = radius(i);
+        const Box& box = box_[at(i)];
+        auto consider = [&](double ds, int category, Agent agent, int index) {
+            if (ds == kNever) return;
+            const Candidate c{now + ds, category, i, agent, index};
+            if (earlier(c, best)) best = c;
+        };
+        for (std::size_t k = 0; k < table_.pockets.size(); ++k)
+            if (boxNearCircle(box, table_.pockets[k].radius, table_.pockets[k].centre))
+                consider(pocketTime(p, table_.pockets[k], horizon), 0, Agent::Pocket, static_cast<int>(k));
+        for (std::size_t k = 0; k < table_.cushions.size(); ++k)
+            if (boxNearSegment(box, R, table_.cushions[k]))
+                consider(cushionTime(p, R, table_.cushions[k], horizon), 1, Agent::Cushion, static_cast<int>(k));
+        for (std::size_t k = 0; k < table_.jaws.size(); ++k)
+            if (boxNearCircle(box, R + table_.jaws[k].radius, table_.jaws[k].centre))
+                consider(jawTime(p, R, table_.jaws[k], horizon), 1, Agent::Jaw, static_cast<int>(k));
+    }
+    own_[at(i)] = best;
+}
+
+double Simulator::pairTime(int i, int j, double now) const
+{
+    const BallState& a = state_[at(i)];
+    const BallState& b = state_[at(j)];
+    if (a.motion == MotionState::Pocketed || b.motion == MotionState::Pocketed) return kNever;
+    const bool aMoves = a.motion == MotionState::Sliding || a.motion == MotionState::Rolling;
+    const bool bMoves = b.motion == MotionState::Sliding || b.motion == MotionState::Rolling;
+    if (!aMoves && !bMoves) return kNever;
+    if (!boxesMeet(box_[at(i)], radius(i), box_[at(j)], radius(j))) return kNever;
+    const double horizon = std::min(end_[at(i)], end_[at(j)]) - now;
+    const double s = ballBallTime(pathNow(i, now), radius(i), pathNow(j, now), radius(j), horizon);
+    return s == kNever ? kNever : now + s;
+}
+
+void Simulator::predictPairs(int i, double now)
+{
+    double best = kNever;
+    int partner = -1;
+    for (int j = 0; j < n_; ++j) {
+        if (j == i) continue;
+        const double t = pairTime(i, j, now);
+        const std::size_t ij = at(i) * at(n_) + at(j), ji = at(j) * at(n_) + at(i);
+        pair_[ij] = pair_[ji] = t;
+        if (t < best) {
+            best = t;
+            partner = j;
+        }
+        // Keep j's row minimum: i may now be its earliest partner, or may have been and no longer be.
+        if (t < rowMin_[at(j)] || (t == rowMin_[at(j)] && t != kNever && i < rowPartner_[at(j)])) {
+            rowMin_[at(j)] = t;
+            rowPartner_[at(j)] = i;
+        } else if (rowPartner_[at(j)] == i && t != rowMin_[at(j)]) {
+            double m = kNever;
+            int q = -1;
+            for (int k = 0; k < n_; ++k) {
+                const double tk = pair_[at(j) * at(n_) + at(k)];
+                if (k != j && tk < m) {
+                    m = tk;
+                    q = k;
+                }
+            }
+            rowMin_[at(j)] = m;
+            rowPartner_[at(j)] = q;
+        }
+    }
+    rowMin_[at(i)] = best;
+    rowPartner_[at(i)] = partner;
+}
+
+Candidate Simulator::next() const
+{
+    Candidate best;
+    for (int i = 0; i < n_; ++i) {
+        if (earlier(own_[at(i)], best)) best = own_[at(i)];
+        const int j = rowPartner_[at(i)];
+        if (j >= 0 && rowMin_[at(i)] != kNever) {
+            const Candidate c{rowMin_[at(i)], 1, std::min(i, j), Agent::Ball, std::max(i, j)};
+            if (earlier(c, best)) best = c;
+        }
+    }
+    return best;
+}
+
+void Simulator::process(const Candidate& c)
+{
+    const double t = c.time;
+    const int i = c.ball;
+    Event e;
+    e.time = t;
+    e.balls[0] = i;
+    e.before[0] = stateNow(i, t);
+    switch (c.agent) {
+    case Agent::Transition: {
+        e.after[0] = applyTransition(state_[at(i)], radius(i), p_);
+        e.kind = nextTransition(state_[at(i)], radius(i), p_).kind;
+        break;
+    }
+    case Agent::Pocket: {
+        const Pocket& pocket = table_.pockets[at(c.index)];
+        e.kind = EventKind::BallPocket;
+        e.pocket = c.index;
+        e.after[0] = BallState{};
+        e.after[0].position = pocket.centre;
+        e.after[0].motion = MotionState::Pocketed;
+        e.after[0].pocket = c.index;
+        e.contactPoint = e.before[0].position;
+        break;
+    }
+    case Agent::Cushion:
+    case Agent::Jaw: {
+        Vec2 normal;  // from the cushion towards the ball
+        if (c.agent == Agent::Cushion) {
+            const CushionSegment& seg = table_.cushions[at(c.index)];
+            normal = seg.normal;
+            e.kind = EventKind::BallCushion;
+            e.cushion = c.index;
+        } else {
+            const JawTip& jaw = table_.jaws[at(c.index)];
+            normal = (e.before[0].position - jaw.centre).normalized();
+            e.kind = EventKind::BallJaw;
+            e.jaw = c.index;
+        }
+        const CushionResult res = resolveCushion(e.before[0], normal, radius(i), mass(i), table_.cushionHeight, p_);
+        e.after[0] = res.after;
+        e.contactPoint = e.before[0].position - radius(i) * normal;
+        e.normal = -normal;
+        e.approachSpeed = res.approachSpeed;
+        e.impulse = res.impulse;
+        break;
+    }
+    case Agent::Ball: {
+        const int j = c.index;
+        e.kind = EventKind::BallBall;
+        e.balls[1] = j;
+        e.before[1] = stateNow(j, t);
+        const BallBallResult res = resolveBallBall({e.before[0], radius(i), mass(i)}, {e.before[1], radius(j), mass(j)}, p_);
+        e.after[0] = res.a;
+        e.after[1] = res.b;
+        e.contactPoint = res.contactPoint;
+        e.normal = res.normal;
+        e.approachSpeed = res.approachSpeed;
+        e.impulse = res.impulse;
+        break;
+    }
+    }
+    r_.events.push_back(e);
+    for (int k = 0; k < 2; ++k)
+        if (e.balls[static_cast<std::size_t>(k)] >= 0)
+            beginSegment(e.balls[static_cast<std::size_t>(k)], t, e.after[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < 2; ++k) {
+        const int b = e.balls[static_cast<std::size_t>(k)];
+        if (b < 0) continue;
+        predictOwn(b, t);
+        predictPairs(b, t);
+    }
+}
+
+void Simulator::run(const std::optional<CueStrike>& shot)
+{
+    for (int i = 0; i < n_; ++i) beginSegment(i, 0.0, r_.balls[at(i)].state);
+
+    if (shot) {
+        const int i = r_.ballIndex(shot->ball);
+        if (i >= 0 && state_[at(i)].motion != MotionState::Pocketed) {
+            const CueImpactResult strike = resolveCueStrike(state_[at(i)], radius(i), mass(i), *shot);
+            Event e;
+            e.kind = EventKind::CueStrike;
+            e.time = 0.0;
+            e.balls[0] = i;
+            e.before[0] = state_[at(i)];
+            e.after[0] = strike.after;
+            e.contactPoint = strike.contactPoint;
+            e.normal = strike.heading;
+            e.approachSpeed = shot->speed;
+            e.impulse = strike.impulse;
+            r_.events.push_back(e);
+            beginSegment(i, 0.0, strike.after);
+        }
+    }
+    for (int i = 0; i < n_; ++i) predictOwn(i, 0.0);
+    for (int i = 0; i < n_; ++i) predictPairs(i, 0.0);
+
+    double lastEvent = 0.0;
+    for (;;) {
+        const Candidate c = next();
+        if (c.time == kNever || c.time > limit_) break;
+        if (static_cast<long long>(r_.events.size()) >= maxEvents_) {
+            r_.status = SimulationStatus::EventLimit;
+            r_.endTime = lastEvent;
+            std::ostringstream msg;
+            msg << "the simulation stopped after " << maxEvents_ << " events at t = " << lastEvent
+                << " s with balls still moving (event limit reached)";
+            r_.error = msg.str();
+            return;
+        }
+        process(c);
+        lastEvent = c.time;
+    }
+    bool rest = true;
+    for (int i = 0; i < n_; ++i) rest = rest && atRest(i);
+    if (rest) {
+        r_.status = SimulationStatus::AllAtRest;
+        r_.endTime = r_.events.empty() ? 0.0 : lastEvent;
+    } else {
+        r_.status = SimulationStatus::ReachedUntil;
+        r_.endTime = limit_;
+    }
+}
+
+}  // namespace
+
 BallState SimulationResult::stateAt(int index, double t) const
 {
-    const auto& timeline = timelines.at(static_cast<std::size_t>(index));
-    BallState s = timeline.front().state;
-    for (const MotionSegment& seg : timeline)
-        if (seg.start <= t) s = seg.state;
-    return s;
+    const std::vector<MotionSegment>& timeline = timelines.at(static_cast<std::size_t>(index));
+    const double R = balls.at(static_cast<std::size_t>(index)).radius;
+    // The last segment starting at or before t: at an event time, the state just after it.
+    auto it = std::upper_bound(timeline.begin(), timeline.end(), t,
+                               [](double time, const MotionSegment& s) { return time < s.start; });
+    if (it != timeline.begin()) --it;
+    BallState s = it->state;
+    double start = it->start;
+    // Past the run's end (a time limit) the ball carries on through its transitions, collision-free.
+    for (;;) {
+        const Transition tr = nextTransition(s, R, physics);
+        if (tr.after == kNever || start + tr.after > t) break;
+        s = applyTransition(s, R, physics);
+        start += tr.after;
+    }
+    return evolve(s, R, physics, t - start);
 }
 
 std::vector<BallState> SimulationResult::statesAt(double t) const
@@ -28,13 +442,17 @@ int SimulationResult::ballIndex(const std::string& id) const
     return -1;
 }
 
-SimulationResult simulate(const Setup& setup, const SimulationOptions&)
+SimulationResult simulate(const Setup& setup, const SimulationOptions& options)
 {
     SimulationResult r;
     r.table = makeTable(setup.table);
     r.physics = setup.physics;
     r.balls = setup.balls;
-    for (const Ball& b : setup.balls) r.timelines.push_back({MotionSegment{0.0, b.state}});
+    const double limit = options.until >= 0.0 ? std::min(options.until, setup.simulation.maxTime)
+                                              : setup.simulation.maxTime;
+    r.events.reserve(64 + 16 * setup.balls.size());
+    Simulator sim(r, limit, options.maxEvents);
+    sim.run(setup.shot);
     return r;
 }
 

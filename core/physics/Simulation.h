@@ -49,6 +49,17 @@ public:
     int ballIndex(const std::string& id) const;  // -1 if unknown
 };
 
+// Runs the setup: a cue strike at t = 0 (the first event) when the setup has a shot, then every event
+// in time order until all balls rest, the time limit, or the event cap.
+//
+// Simultaneous events (exactly equal times) are processed in this documented, deterministic order:
+//   1. the cue strike;
+//   2. motion transitions and pocketings, by ball index, a ball's transition before its pocketing;
+//   3. collisions, by the lower ball index involved, then the agent: another ball (by its index), a
+//      straight cushion (by index in Table::cushions), a jaw tip (by index in Table::jaws).
+// After each event only its balls are re-predicted, so a chain of touching balls (a frozen rack,
+// Newton's cradle) resolves as a sequence of events at the same instant, one pair at a time, each
+// pair only while it approaches.
 SimulationResult simulate(const Setup& setup, const SimulationOptions& options = {});
 
 }  // namespace cuelab

@@ -1,0 +1,47 @@
+#include "CueImpact.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace cuelab {
+
+CueImpactResult resolveCueStrike(const BallState& before, double radius, double mass, const CueStrike& strike)
+{
+    const double R = radius;
+    double a = strike.side * R;    // m, sideways offset of the tip (+ = player's right)
+    double b = strike.height * R;  // m, vertical offset (+ = above the centre)
+    // The tip must touch the ball: keep (a, b) inside the silhouette.
+    const double offset = std::hypot(a, b);
+    if (offset > R) {
+        a *= R / offset;
+        b *= R / offset;
+    }
+    const double c = std::sqrt(std::max(0.0, R * R - a * a - b * b));
+
+    const double phi = strike.headingDeg * std::numbers::pi / 180.0;
+    const double theta = strike.elevationDeg * std::numbers::pi / 180.0;
+    const Vec3 d(std::cos(phi), std::sin(phi), 0.0);
+    const Vec3 z(0.0, 0.0, 1.0);
+    const Vec3 right = d.cross(z);
+    const Vec3 e = std::cos(theta) * d - std::sin(theta) * z;  // cue axis, pointing into the ball
+    const Vec3 q = a * right + b * z - c * d;                  // contact point relative to the centre
+
+    const double inertia = 0.4 * mass * R * R;
+    const double lever2 = q.cross(e).squaredNorm();  // m^2, |Q x e|^2
+    const double F = 2.0 * strike.speed / (1.0 / strike.cueMass + 1.0 / mass + lever2 / inertia);  // N s
+
+    CueImpactResult r;
+    r.impulse = F * e;
+    r.after = before;
+    r.after.velocity = before.velocity + (F * std::cos(theta) / mass) * d.head<2>();
+    r.after.spin = before.spin + q.cross(r.impulse) / inertia;
+    r.after.motion = classify(r.after, R);
+    r.contactPoint = before.position + q.head<2>();
+    r.heading = d.head<2>();
+    return r;
+}
+
+}  // namespace cuelab

@@ -1,0 +1,186 @@
+#include "Motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cuelab {
+
+namespace {
+
+// |wz| falls linearly at alpha and stays at zero (PHYSICS.md, "Spin about z").
+double decayedSpin(double wz0, double alpha, double tau)
+{
+    const double magnitude = std::abs(wz0) - alpha * tau;
+    return magnitude > 0.0 ? std::copysign(magnitude, wz0) : 0.0;
+}
+
+// Unit direction of the slip, fixed for the whole slide: the friction force -mu_s m g u_hat changes
+// u only along u_hat (du/dt = -(7/2) mu_s g u_hat), so its direction never turns.
+Vec2 slipDirection(const BallState& s, double radius)
+{
+    const Vec2 u = slipVelocity(s, radius);
+    return u / u.norm();
+}
+
+double slideDuration(const BallState& s, double radius, const PhysicsParams& p)
+{
+    const double decel = p.muSlide * p.gravity;
+    if (decel <= 0.0) return kNever;
+    // u(t) = u0 - (7/2) mu_s g t u_hat reaches zero at t_s = 2 |u0| / (7 mu_s g).
+    return 2.0 * slipVelocity(s, radius).norm() / (7.0 * decel);
+}
+
+double rollDuration(const BallState& s, const PhysicsParams& p)
+{
+    const double decel = p.muRoll * p.gravity;
+    if (decel <= 0.0) return kNever;
+    return s.velocity.norm() / decel;
+}
+
+double spinDuration(const BallState& s, double radius, const PhysicsParams& p)
+{
+    const double alpha = spinDeceleration(p, radius);
+    if (alpha <= 0.0) return kNever;
+    return std::abs(s.spin.z()) / alpha;
+}
+
+// The horizontal velocity at the end of a slide (PHYSICS.md): v = (5/7) v0 + (2/7) R (w0 x z), with
+// w0 x z = (wy, -wx). Independent of mu_s.
+Vec2 velocityAfterSlide(const BallState& s, double radius)
+{
+    return (5.0 / 7.0) * s.velocity + (2.0 / 7.0) * radius * Vec2(s.spin.y(), -s.spin.x());
+}
+
+}  // namespace
+
+double spinDeceleration(const PhysicsParams& p, double radius)
+{
+    return 5.0 * p.muSpin * p.gravity / (2.0 * radius);
+}
+
+Path pathOf(const BallState& s, double radius, const PhysicsParams& p)
+{
+    Path path;
+    path.c0 = s.position;
+    switch (classify(s, radius)) {
+    case MotionState::Sliding:
+        path.c1 = s.velocity;
+        path.c2 = -0.5 * p.muSlide * p.gravity * slipDirection(s, radius);
+        break;
+    case MotionState::Rolling:
+        path.c1 = s.velocity;
+        path.c2 = -0.5 * p.muRoll * p.gravity * s.velocity.normalized();
+        break;
+    case MotionState::Stationary:
+    case MotionState::Spinning:
+    case MotionState::Pocketed: break;
+    }
+    return path;
+}
+
+Transition nextTransition(const BallState& s, double radius, const PhysicsParams& p)
+{
+    const double alpha = spinDeceleration(p, radius);
+    switch (classify(s, radius)) {
+    case MotionState::Sliding: {
+        const double ts = slideDuration(s, radius, p);
+        if (ts == kNever) return {};
+        const Vec2 vEnd = velocityAfterSlide(s, radius);
+        // A slide that ends at rest (draw exactly cancelling the speed) leaves velocities that are
+        // zero up to rounding; 1e-12 of the speeds involved is far below any physical speed.
+        const double scale = s.velocity.norm() + radius * s.spin.head<2>().norm();
+        if (vEnd.norm() > 1e-12 * scale)
+            return {ts, EventKind::SlideToRoll};
+        return {ts, decayedSpin(s.spin.z(), alpha, ts) != 0.0 ? EventKind::SlideToSpin : EventKind::SlideToStop};
+    }
+    case MotionState::Rolling: {
+        const double tr = rollDuration(s, p);
+        if (tr == kNever) return {};
+        return {tr, decayedSpin(s.spin.z(), alpha, tr) != 0.0 ? EventKind::RollToSpin : EventKind::RollToStop};
+    }
+    case MotionState::Spinning: {
+        const double tsp = spinDuration(s, radius, p);
+        if (tsp == kNever) return {};
+        return {tsp, EventKind::SpinToStop};
+    }
+    case MotionState::Stationary:
+    case MotionState::Pocketed: break;
+    }
+    return {};
+}
+
+BallState evolve(const BallState& s, double radius, const PhysicsParams& p, double dt)
+{
+    BallState out = s;
+    if (dt <= 0.0) return out;
+    const double alpha = spinDeceleration(p, radius);
+    switch (classify(s, radius)) {
+    case MotionState::Sliding: {
+        const double tau = std::min(dt, slideDuration(s, radius, p));
+        const Vec2 uHat = slipDirection(s, radius);
+        const double a = p.muSlide * p.gravity;  // m/s^2, friction deceleration along u_hat
+        out.position = s.position + tau * s.velocity - (0.5 * a * tau * tau) * uHat;
+        out.velocity = s.velocity - (a * tau) * uHat;
+        // dw/dt = (5 mu_s g / (2R)) (z x u_hat), z x u_hat = (-u_y, u_x): the friction torque over
+        // I = 2/5 m R^2.
+        const double k = 2.5 * a / radius * tau;
+        out.spin.x() = s.spin.x() - k * uHat.y();
+        out.spin.y() = s.spin.y() + k * uHat.x();
+        out.spin.z() = decayedSpin(s.spin.z(), alpha, tau);
+        break;
+    }
+    case MotionState::Rolling: {
+        const double tau = std::min(dt, rollDuration(s, p));
+        const Vec2 vHat = s.velocity.normalized();
+        const double a = p.muRoll * p.gravity;  // m/s^2
+        out.position = s.position + tau * s.velocity - (0.5 * a * tau * tau) * vHat;
+        out.velocity = s.velocity - (a * tau) * vHat;
+        out.spin.x() = -out.velocity.y() / radius;  // rolling: u = 0
+        out.spin.y() = out.velocity.x() / radius;
+        out.spin.z() = decayedSpin(s.spin.z(), alpha, tau);
+        break;
+    }
+    case MotionState::Spinning:
+        out.spin.z() = decayedSpin(s.spin.z(), alpha, std::min(dt, spinDuration(s, radius, p)));
+        break;
+    case MotionState::Stationary:
+    case MotionState::Pocketed: break;
+    }
+    return out;
+}
+
+BallState applyTransition(const BallState& s, double radius, const PhysicsParams& p)
+{
+    const Transition t = nextTransition(s, radius, p);
+    if (t.after == kNever) return s;
+    BallState out = evolve(s, radius, p, t.after);
+    switch (t.kind) {
+    case EventKind::SlideToRoll:
+        out.spin.x() = -out.velocity.y() / radius;
+        out.spin.y() = out.velocity.x() / radius;
+        break;
+    case EventKind::SlideToSpin:
+    case EventKind::RollToSpin:
+        out.velocity.setZero();
+        out.spin.x() = 0.0;
+        out.spin.y() = 0.0;
+        break;
+    case EventKind::SlideToStop:
+    case EventKind::RollToStop:
+    case EventKind::SpinToStop:
+        out.velocity.setZero();
+        out.spin.setZero();
+        break;
+    default: break;
+    }
+    out.motion = classify(out, radius);
+    return out;
+}
+
+double kineticEnergy(const BallState& s, double radius, double mass)
+{
+    if (s.motion == MotionState::Pocketed) return 0.0;
+    return 0.5 * mass * s.velocity.squaredNorm() + 0.5 * ballInertia(mass, radius) * s.spin.squaredNorm();
+}
+
+}  // namespace cuelab

@@ -1,0 +1,58 @@
+#pragma once
+// Closed-form motion of one ball between events (PHYSICS.md, "Motion between events"): sliding,
+// rolling, spinning, stationary and pocketed, and the transitions between those states.
+//
+// Within one motion state the position is a quadratic polynomial of the elapsed time, the horizontal
+// spin is linear (sliding) or follows the velocity (rolling), and |wz| falls linearly to zero in
+// every state. A state ends at a transition whose time is known in closed form; evolve() never runs
+// past that time (it holds the state reached there), so a caller chains states through transitions.
+
+#include "Ball.h"
+#include "Event.h"
+#include "Parameters.h"
+#include "Types.h"
+
+#include <limits>
+
+namespace cuelab {
+
+inline constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// Moment of inertia of a solid sphere about a diameter, I = 2/5 m R^2 (kg m^2).
+inline double ballInertia(double mass, double radius) { return 0.4 * mass * radius * radius; }
+
+// Angular deceleration of the spin about z: alpha = 5 mu_sp g / (2 R) (rad/s^2). PHYSICS.md: the
+// torque of the spin friction over I = 2/5 m R^2.
+double spinDeceleration(const PhysicsParams& p, double radius);
+
+// Position over the current motion state: r(tau) = c0 + c1 tau + c2 tau^2 for 0 <= tau <= the
+// state's duration (the acceleration is constant within a state, so c2 = a / 2).
+struct Path {
+    Vec2 c0 = Vec2::Zero();  // m
+    Vec2 c1 = Vec2::Zero();  // m/s
+    Vec2 c2 = Vec2::Zero();  // m/s^2
+    Vec2 at(double tau) const { return c0 + tau * (c1 + tau * c2); }
+};
+Path pathOf(const BallState& s, double radius, const PhysicsParams& p);
+
+// How long the ball stays in its present motion state (kNever for stationary and pocketed balls, or
+// a frictionless cloth), and which transition ends it.
+struct Transition {
+    double after = kNever;                  // s from the state's start
+    EventKind kind = EventKind::SpinToStop; // meaningful only when `after` is finite
+};
+Transition nextTransition(const BallState& s, double radius, const PhysicsParams& p);
+
+// The state `dt` seconds later without leaving the present motion state: dt is clamped to the
+// state's duration. The motion label is left as it is.
+BallState evolve(const BallState& s, double radius, const PhysicsParams& p, double dt);
+
+// The state just after the transition that ends the present state: evolve() to its end, then make
+// the numbers exact (a rolling ball's spin follows its velocity; a ball that stops has v = 0 and
+// horizontal w = 0; a stopped spin is 0) and label the result with classify().
+BallState applyTransition(const BallState& s, double radius, const PhysicsParams& p);
+
+// Translational plus rotational kinetic energy (J). A pocketed ball has none.
+double kineticEnergy(const BallState& s, double radius, double mass);
+
+}  // namespace cuelab
