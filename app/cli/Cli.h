@@ -1,11 +1,23 @@
 #pragma once
+// cuelab-cli (CONTRACT.md): validate, simulate, state and trajectory of a setup file.
 
+#include <QByteArray>
 #include <QStringList>
 
 namespace cuelab::cli {
 
-// Runs cuelab-cli with `arguments` (argv, program name first). Writes to stdout/stderr and returns
-// the exit status of CONTRACT.md: 0 success, 1 setup refused, 2 usage error, 3 simulation failed.
+// Exit statuses of CONTRACT.md.
+enum ExitStatus : int {
+    Success = 0,
+    SetupRefused = 1,
+    UsageError = 2,
+    SimulationUnfinished = 3,  // the event cap was hit, or max_time came before every ball rested
+};
+
+// Runs cuelab-cli with `arguments` (program name first), collecting what it prints.
+int run(const QStringList& arguments, QByteArray* out, QByteArray* err);
+
+// The same, printing to the process's stdout and stderr.
 int run(const QStringList& arguments);
 
 }  // namespace cuelab::cli

@@ -1,0 +1,156 @@
+#include "ResultText.h"
+
+#include "JsonText.h"
+
+#include <algorithm>
+
+namespace cuelab::cli {
+
+namespace {
+
+using io::JsonWriter;
+using Layout = JsonWriter::Layout;
+
+const std::string& pocketId(const SimulationResult& result, int pocket)
+{
+    return result.table.pockets.at(static_cast<std::size_t>(pocket)).id;
+}
+
+void writeBallState(JsonWriter& w, const SimulationResult& result, int ball, const BallState& s)
+{
+    w.beginObject(Layout::Line);
+    w.key("id");
+    w.value(result.balls.at(static_cast<std::size_t>(ball)).id);
+    w.key("state");
+    w.value(toString(s.motion));
+    if (s.motion == MotionState::Pocketed) {
+        w.key("pocket");
+        w.value(pocketId(result, s.pocket));
+    }
+    w.key("position");
+    w.numbers(s.position.data(), 2);
+    w.key("velocity");
+    w.numbers(s.velocity.data(), 2);
+    w.key("spin");
+    w.numbers(s.spin.data(), 3);
+    w.endObject();
+}
+
+void writeEvent(JsonWriter& w, const SimulationResult& result, const Event& e)
+{
+    const int agents = e.kind == EventKind::BallBall ? 2 : 1;
+    w.beginObject(Layout::Line);
+    w.key("time");
+    w.value(e.time);
+    w.key("type");
+    w.value(toString(e.kind));
+    w.key("balls");
+    w.beginArray(Layout::Line);
+    for (int i = 0; i < agents; ++i) w.value(result.balls.at(static_cast<std::size_t>(e.balls[i])).id);
+    w.endArray();
+    // A jaw is a rounded cushion tip: the file format names it as the cushion of a ball-cushion event.
+    if (e.kind == EventKind::BallCushion) {
+        w.key("cushion");
+        w.value(result.table.cushions.at(static_cast<std::size_t>(e.cushion)).id);
+    } else if (e.kind == EventKind::BallJaw) {
+        w.key("cushion");
+        w.value(result.table.jaws.at(static_cast<std::size_t>(e.jaw)).id);
+    } else if (e.kind == EventKind::BallPocket) {
+        w.key("pocket");
+        w.value(pocketId(result, e.pocket));
+    }
+    for (const char* key : {"before", "after"}) {
+        const auto& states = key[0] == 'b' ? e.before : e.after;
+        w.key(key);
+        w.beginArray(Layout::Line);
+        for (int i = 0; i < agents; ++i) writeBallState(w, result, e.balls[i], states[i]);
+        w.endArray();
+    }
+    w.endObject();
+}
+
+void writeBalls(JsonWriter& w, const SimulationResult& result, double t)
+{
+    const std::vector<BallState> states = result.statesAt(t);
+    w.key("balls");
+    w.beginArray(Layout::Block);
+    for (std::size_t i = 0; i < states.size(); ++i) writeBallState(w, result, static_cast<int>(i), states[i]);
+    w.endArray();
+}
+
+// RFC 4180: a field holding a comma, a quote or a line break is quoted, its quotes doubled.
+std::string csvField(const std::string& text)
+{
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (const char c : text) {
+        if (c == '"') quoted += '"';
+        quoted += c;
+    }
+    return quoted + '"';
+}
+
+}  // namespace
+
+std::string simulationJson(const SimulationResult& result)
+{
+    JsonWriter w;
+    w.beginObject(Layout::Block);
+    w.key("end_time");
+    w.value(result.endTime);
+    w.key("events");
+    w.beginArray(Layout::Block);
+    for (const Event& e : result.events) writeEvent(w, result, e);
+    w.endArray();
+    writeBalls(w, result, result.endTime);
+    w.endObject();
+    return w.text();
+}
+
+std::string stateJson(const SimulationResult& result, double t)
+{
+    JsonWriter w;
+    w.beginObject(Layout::Block);
+    w.key("time");
+    w.value(t);
+    writeBalls(w, result, t);
+    w.endObject();
+    return w.text();
+}
+
+std::string trajectoryCsv(const SimulationResult& result, double frameDt)
+{
+    // Frame times are k * frameDt, never a running sum, so that they do not drift.
+    std::vector<double> times;
+    for (long long k = 0; static_cast<double>(k) * frameDt <= result.endTime; ++k)
+        times.push_back(static_cast<double>(k) * frameDt);
+    for (const Event& e : result.events) times.push_back(e.time);
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+
+    std::vector<std::string> ids;
+    for (const Ball& b : result.balls) ids.push_back(csvField(b.id));
+
+    std::string out = "time,ball,state,x,y,vx,vy,wx,wy,wz\n";
+    for (const double t : times) {
+        const std::string time = io::roundTripNumber(t);
+        const std::vector<BallState> states = result.statesAt(t);
+        for (std::size_t i = 0; i < states.size(); ++i) {
+            const BallState& s = states[i];
+            out += time;
+            out += ',';
+            out += ids[i];
+            out += ',';
+            out += toString(s.motion);
+            for (const double x : {s.position.x(), s.position.y(), s.velocity.x(), s.velocity.y(), s.spin.x(),
+                                   s.spin.y(), s.spin.z()}) {
+                out += ',';
+                out += io::roundTripNumber(x);
+            }
+            out += '\n';
+        }
+    }
+    return out;
+}
+
+}  // namespace cuelab::cli

@@ -1,0 +1,377 @@
+// parseSetup: JSON text -> Setup, refusing (never half-loading) anything CONTRACT.md version 1 does
+// not allow or the simulator cannot take. Every refusal names the JSON path of the culprit.
+
+#include "SetupFile.h"
+#include "SetupGeometry.h"
+#include "SetupProblem.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+#include <QSet>
+
+#include <cmath>
+#include <initializer_list>
+
+namespace cuelab::io {
+
+namespace {
+
+// Thrown at the first problem and caught in parseSetup, so that the parsing code reads top-down.
+struct Refusal {
+    SetupProblem problem;
+};
+
+[[noreturn]] void refuse(const QString& path, const QString& message) { throw Refusal{{path, message}}; }
+
+QString child(const QString& path, const char* key)
+{
+    return path.isEmpty() ? QLatin1String(key) : path + QLatin1Char('.') + QLatin1String(key);
+}
+
+QString element(const QString& path, qsizetype index) { return path + QStringLiteral("[%1]").arg(index); }
+
+QString describe(const QJsonValue& v)
+{
+    switch (v.type()) {
+    case QJsonValue::Null: return QStringLiteral("null");
+    case QJsonValue::Bool: return QStringLiteral("true/false");
+    case QJsonValue::Double: return QStringLiteral("a number");
+    case QJsonValue::String: return QStringLiteral("a string");
+    case QJsonValue::Array: return QStringLiteral("an array");
+    case QJsonValue::Object: return QStringLiteral("an object");
+    case QJsonValue::Undefined: break;
+    }
+    return QStringLiteral("nothing");
+}
+
+[[noreturn]] void wrongType(const QString& path, const char* expected, const QJsonValue& found)
+{
+    refuse(path, QStringLiteral("expected %1, found %2").arg(QLatin1String(expected), describe(found)));
+}
+
+// An object with its path. Reading a key that is absent yields nullopt for optional keys and a
+// refusal for required ones; keys not in `allowed` are refused (typos must not pass silently).
+class ObjectReader {
+public:
+    ObjectReader(const QJsonValue& value, QString path, std::initializer_list<const char*> allowed)
+        : path_(std::move(path))
+    {
+        if (!value.isObject()) wrongType(path_, "an object", value);
+        object_ = value.toObject();
+        for (auto it = object_.begin(); it != object_.end(); ++it) {
+            bool known = false;
+            for (const char* key : allowed) known = known || it.key() == QLatin1String(key);
+            if (!known) {
+                QStringList names;
+                for (const char* key : allowed) names << QLatin1String(key);
+                refuse(child(path_, it.key().toUtf8().constData()),
+                       QStringLiteral("unknown key (expected one of: %1)").arg(names.join(QStringLiteral(", "))));
+            }
+        }
+    }
+
+    const QString& path() const { return path_; }
+    QString pathOf(const char* key) const { return child(path_, key); }
+    bool has(const char* key) const { return object_.contains(QLatin1String(key)); }
+
+    QJsonValue required(const char* key) const
+    {
+        if (!has(key)) refuse(pathOf(key), QStringLiteral("required key is missing"));
+        return object_.value(QLatin1String(key));
+    }
+    QJsonValue value(const char* key) const { return object_.value(QLatin1String(key)); }
+
+    double number(const char* key) const { return toNumber(required(key), pathOf(key)); }
+    std::optional<double> optionalNumber(const char* key) const
+    {
+        if (!has(key)) return std::nullopt;
+        return toNumber(value(key), pathOf(key));
+    }
+    QString string(const char* key) const
+    {
+        const QJsonValue v = required(key);
+        if (!v.isString()) wrongType(pathOf(key), "a string", v);
+        return v.toString();
+    }
+    std::optional<QString> optionalString(const char* key) const
+    {
+        if (!has(key)) return std::nullopt;
+        return string(key);
+    }
+    std::optional<bool> optionalBool(const char* key) const
+    {
+        if (!has(key)) return std::nullopt;
+        const QJsonValue v = value(key);
+        if (!v.isBool()) wrongType(pathOf(key), "true or false", v);
+        return v.toBool();
+    }
+
+    static double toNumber(const QJsonValue& v, const QString& path)
+    {
+        if (!v.isDouble()) wrongType(path, "a number", v);
+        const double x = v.toDouble();
+        // Qt's parser already refuses numbers that overflow a double; this guards the contract anyway.
+        if (!std::isfinite(x)) refuse(path, QStringLiteral("the number is not finite"));
+        return x;
+    }
+
+private:
+    QString path_;
+    QJsonObject object_;
+};
+
+// Range checks. Each names the bound in its message.
+double positive(double x, const QString& path)
+{
+    if (!(x > 0.0)) refuse(path, QStringLiteral("must be greater than 0 (found %1)").arg(x));
+    return x;
+}
+double nonNegative(double x, const QString& path)
+{
+    if (x < 0.0) refuse(path, QStringLiteral("must not be negative (found %1)").arg(x));
+    return x;
+}
+double unitInterval(double x, const QString& path)
+{
+    if (x < 0.0 || x > 1.0) refuse(path, QStringLiteral("must lie between 0 and 1 (found %1)").arg(x));
+    return x;
+}
+
+template <int N>
+Eigen::Matrix<double, N, 1> vector(const QJsonValue& v, const QString& path)
+{
+    if (!v.isArray()) wrongType(path, N == 2 ? "an array of 2 numbers" : "an array of 3 numbers", v);
+    const QJsonArray array = v.toArray();
+    if (array.size() != N)
+        refuse(path, QStringLiteral("expected %1 numbers, found %2").arg(N).arg(array.size()));
+    Eigen::Matrix<double, N, 1> out;
+    for (int i = 0; i < N; ++i) out[i] = ObjectReader::toNumber(array[i], element(path, i));
+    return out;
+}
+
+void checkHeader(const ObjectReader& root)
+{
+    const QString format = root.string("format");
+    if (format != QLatin1String("cuelab-setup"))
+        refuse(root.pathOf("format"), QStringLiteral("expected \"cuelab-setup\", found \"%1\"").arg(format));
+    const double version = root.number("version");
+    if (version != 1.0)
+        refuse(root.pathOf("version"),
+               QStringLiteral("version %1 is not supported (this CueLab reads version 1)").arg(version));
+}
+
+TableSpec parseTable(const QJsonValue& value)
+{
+    const ObjectReader in(value, QStringLiteral("table"), {"kind", "length", "width", "cushion_height", "pockets"});
+    TableSpec spec;
+    if (const auto kind = in.optionalString("kind")) {
+        if (!parseTableKind(kind->toStdString(), spec.kind))
+            refuse(in.pathOf("kind"),
+                   QStringLiteral("unknown table kind \"%1\" (expected pool-9ft, pool-8ft, pool-7ft, snooker or carom)")
+                       .arg(*kind));
+    }
+    if (const auto x = in.optionalNumber("length")) spec.length = positive(*x, in.pathOf("length"));
+    if (const auto x = in.optionalNumber("width")) spec.width = positive(*x, in.pathOf("width"));
+    if (const auto x = in.optionalNumber("cushion_height"))
+        spec.cushionHeight = positive(*x, in.pathOf("cushion_height"));
+    if (const auto pockets = in.optionalBool("pockets")) spec.pockets = *pockets;
+    return spec;
+}
+
+void parseBallBall(const QJsonValue& value, const QString& path, PhysicsParams& p)
+{
+    const ObjectReader in(value, path, {"model", "restitution", "friction"});
+    if (const auto model = in.optionalString("model")) {
+        if (*model == QLatin1String("frictionless"))
+            p.ballBallModel = BallBallModel::Frictionless;
+        else if (*model == QLatin1String("frictional"))
+            p.ballBallModel = BallBallModel::Frictional;
+        else
+            refuse(in.pathOf("model"),
+                   QStringLiteral("unknown model \"%1\" (expected frictionless or frictional)").arg(*model));
+    }
+    if (const auto e = in.optionalNumber("restitution")) p.ballBallRestitution = unitInterval(*e, in.pathOf("restitution"));
+    if (in.has("friction")) {
+        const QJsonValue friction = in.value("friction");
+        if (friction.isString()) {
+            if (friction.toString() != QLatin1String("alciatore"))
+                refuse(in.pathOf("friction"),
+                       QStringLiteral("expected a number or \"alciatore\", found \"%1\"").arg(friction.toString()));
+            p.ballBallFrictionKind = BallBallFriction::Alciatore;
+        } else if (friction.isDouble()) {
+            p.ballBallFrictionKind = BallBallFriction::Fixed;
+            p.ballBallFriction = nonNegative(ObjectReader::toNumber(friction, in.pathOf("friction")), in.pathOf("friction"));
+        } else {
+            wrongType(in.pathOf("friction"), "a number or \"alciatore\"", friction);
+        }
+    }
+}
+
+void parseBallCushion(const QJsonValue& value, const QString& path, PhysicsParams& p)
+{
+    const ObjectReader in(value, path, {"model", "restitution", "friction"});
+    if (const auto model = in.optionalString("model")) {
+        if (*model == QLatin1String("mirror"))
+            p.ballCushionModel = BallCushionModel::Mirror;
+        else if (*model == QLatin1String("han2005"))
+            p.ballCushionModel = BallCushionModel::Han2005;
+        else
+            refuse(in.pathOf("model"), QStringLiteral("unknown model \"%1\" (expected mirror or han2005)").arg(*model));
+    }
+    if (const auto e = in.optionalNumber("restitution")) p.cushionRestitution = unitInterval(*e, in.pathOf("restitution"));
+    if (const auto mu = in.optionalNumber("friction")) p.cushionFriction = nonNegative(*mu, in.pathOf("friction"));
+}
+
+PhysicsParams parsePhysics(const QJsonValue& value)
+{
+    const ObjectReader in(value, QStringLiteral("physics"),
+                          {"gravity", "mu_slide", "mu_roll", "mu_spin", "ball_ball", "ball_cushion"});
+    PhysicsParams p;
+    if (const auto g = in.optionalNumber("gravity")) p.gravity = positive(*g, in.pathOf("gravity"));
+    // The cloth frictions must be positive: with zero friction a ball would slide, roll or spin for
+    // ever and every transition time (|u| / (mu g), ...) would divide by zero.
+    if (const auto mu = in.optionalNumber("mu_slide")) p.muSlide = positive(*mu, in.pathOf("mu_slide"));
+    if (const auto mu = in.optionalNumber("mu_roll")) p.muRoll = positive(*mu, in.pathOf("mu_roll"));
+    if (const auto mu = in.optionalNumber("mu_spin")) p.muSpin = positive(*mu, in.pathOf("mu_spin"));
+    if (in.has("ball_ball")) parseBallBall(in.value("ball_ball"), in.pathOf("ball_ball"), p);
+    if (in.has("ball_cushion")) parseBallCushion(in.value("ball_cushion"), in.pathOf("ball_cushion"), p);
+    return p;
+}
+
+std::vector<Ball> parseBalls(const QJsonValue& value, const Table& table)
+{
+    const QString path = QStringLiteral("balls");
+    if (!value.isArray()) wrongType(path, "an array", value);
+    const QJsonArray array = value.toArray();
+    std::vector<Ball> balls;
+    QSet<QString> ids;
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const ObjectReader in(array[i], element(path, i), {"id", "position", "velocity", "spin", "radius", "mass"});
+        Ball ball;
+        const QString id = in.string("id");
+        if (id.isEmpty()) refuse(in.pathOf("id"), QStringLiteral("the id must not be empty"));
+        if (ids.contains(id)) refuse(in.pathOf("id"), QStringLiteral("duplicate id \"%1\"").arg(id));
+        ids.insert(id);
+        ball.id = id.toStdString();
+        ball.state.position = vector<2>(in.required("position"), in.pathOf("position"));
+        if (in.has("velocity")) ball.state.velocity = vector<2>(in.value("velocity"), in.pathOf("velocity"));
+        if (in.has("spin")) ball.state.spin = vector<3>(in.value("spin"), in.pathOf("spin"));
+        ball.radius = positive(in.optionalNumber("radius").value_or(table.ballRadius), in.pathOf("radius"));
+        ball.mass = positive(in.optionalNumber("mass").value_or(table.ballMass), in.pathOf("mass"));
+        ball.state.motion = classify(ball.state, ball.radius);
+        balls.push_back(std::move(ball));
+    }
+    return balls;
+}
+
+CueStrike parseShot(const QJsonValue& value, const std::vector<Ball>& balls)
+{
+    const ObjectReader in(value, QStringLiteral("shot"),
+                          {"ball", "speed", "heading", "elevation", "side", "height", "cue_mass"});
+    CueStrike shot;
+    const QString ball = in.string("ball");
+    shot.ball = ball.toStdString();
+    bool found = false;
+    for (const Ball& b : balls) found = found || b.id == shot.ball;
+    if (!found) refuse(in.pathOf("ball"), QStringLiteral("there is no ball \"%1\"").arg(ball));
+    shot.speed = nonNegative(in.number("speed"), in.pathOf("speed"));
+    shot.headingDeg = in.number("heading");
+    shot.elevationDeg = in.number("elevation");
+    if (shot.elevationDeg < 0.0 || shot.elevationDeg > 90.0)
+        refuse(in.pathOf("elevation"),
+               QStringLiteral("must lie between 0 and 90 degrees (found %1)").arg(shot.elevationDeg));
+    shot.side = in.number("side");
+    shot.height = in.number("height");
+    // The tip must meet the ball: the offset from the centre is less than one radius.
+    if (std::hypot(shot.side, shot.height) >= 1.0)
+        refuse(in.pathOf(std::abs(shot.side) >= std::abs(shot.height) ? "side" : "height"),
+               QStringLiteral("the tip misses the ball: side and height must satisfy side² + height² < 1"));
+    if (const auto m = in.optionalNumber("cue_mass")) shot.cueMass = positive(*m, in.pathOf("cue_mass"));
+    return shot;
+}
+
+SimulationSettings parseSimulation(const QJsonValue& value)
+{
+    const ObjectReader in(value, QStringLiteral("simulation"), {"frame_dt", "max_time"});
+    SimulationSettings s;
+    if (const auto dt = in.optionalNumber("frame_dt")) s.frameDt = positive(*dt, in.pathOf("frame_dt"));
+    if (const auto t = in.optionalNumber("max_time")) s.maxTime = positive(*t, in.pathOf("max_time"));
+    return s;
+}
+
+Setup parseDocument(const QJsonValue& document)
+{
+    if (!document.isObject()) wrongType(QString(), "a JSON object at the top level", document);
+    // The header first, so that another kind of JSON file is refused as such, not for its keys.
+    {
+        const QJsonObject root = document.toObject();
+        if (!root.contains(QLatin1String("format")))
+            refuse(QStringLiteral("format"), QStringLiteral("required key is missing (not a CueLab setup file?)"));
+        QJsonObject header;
+        header.insert(QStringLiteral("format"), root.value(QLatin1String("format")));
+        if (root.contains(QLatin1String("version"))) header.insert(QStringLiteral("version"), root.value(QLatin1String("version")));
+        checkHeader(ObjectReader(header, QString(), {"format", "version"}));
+    }
+    const ObjectReader in(document, QString(),
+                          {"format", "version", "name", "notes", "table", "physics", "balls", "shot", "simulation"});
+    Setup setup;
+    setup.name = in.optionalString("name").value_or(QString()).toStdString();
+    setup.notes = in.optionalString("notes").value_or(QString()).toStdString();
+    if (in.has("table")) setup.table = parseTable(in.value("table"));
+    if (in.has("physics")) setup.physics = parsePhysics(in.value("physics"));
+    const Table table = makeTable(setup.table);
+    setup.balls = parseBalls(in.required("balls"), table);
+    if (in.has("shot")) setup.shot = parseShot(in.value("shot"), setup.balls);
+    if (in.has("simulation")) setup.simulation = parseSimulation(in.value("simulation"));
+    if (auto problem = checkGeometry(setup)) throw Refusal{*problem};
+    return setup;
+}
+
+// Line and column (both from 1; the column counts characters, not bytes) of a byte offset.
+std::pair<int, int> lineAndColumn(const QByteArray& text, qsizetype offset)
+{
+    int line = 1, column = 1;
+    for (qsizetype i = 0; i < std::min(offset, text.size()); ++i) {
+        const char c = text[i];
+        if (c == '\n') {
+            ++line;
+            column = 1;
+        } else if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) {  // not a UTF-8 continuation byte
+            ++column;
+        }
+    }
+    return {line, column};
+}
+
+}  // namespace
+
+std::optional<Setup> parseSetup(const QByteArray& json, const QString& fileName, QString* error)
+{
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        const auto [line, column] = lineAndColumn(json, parseError.offset);
+        if (error)
+            *error = QStringLiteral("%1: line %2, column %3: not valid JSON (%4)")
+                         .arg(fileName)
+                         .arg(line)
+                         .arg(column)
+                         .arg(parseError.errorString());
+        return std::nullopt;
+    }
+    try {
+        const QJsonValue root = document.isObject() ? QJsonValue(document.object()) : QJsonValue(document.array());
+        return parseDocument(root);
+    } catch (const Refusal& refusal) {
+        if (error) {
+            const SetupProblem& p = refusal.problem;
+            *error = p.path.isEmpty() ? QStringLiteral("%1: %2").arg(fileName, p.message)
+                                      : QStringLiteral("%1: %2: %3").arg(fileName, p.path, p.message);
+        }
+        return std::nullopt;
+    }
+}
+
+}  // namespace cuelab::io

@@ -1,0 +1,167 @@
+// serializeSetup: Setup -> JSON text in CONTRACT.md's key order. Numbers print with the shortest
+// text that reads back to the same double, so a saved setup loads bit-identical (except that a
+// negative zero reads back as zero: Qt's JSON parser drops the sign of "-0").
+
+#include "JsonText.h"
+#include "SetupFile.h"
+
+#include <bit>
+#include <cstdint>
+
+namespace cuelab::io {
+
+namespace {
+
+using Layout = JsonWriter::Layout;
+
+bool isPlusZero(double x) { return std::bit_cast<std::uint64_t>(x) == 0; }
+bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+void writeTable(JsonWriter& w, const TableSpec& spec)
+{
+    w.key("table");
+    w.beginObject(Layout::Line);
+    w.key("kind");
+    w.value(toString(spec.kind));
+    if (spec.length) {
+        w.key("length");
+        w.value(*spec.length);
+    }
+    if (spec.width) {
+        w.key("width");
+        w.value(*spec.width);
+    }
+    if (spec.cushionHeight) {
+        w.key("cushion_height");
+        w.value(*spec.cushionHeight);
+    }
+    w.key("pockets");
+    w.value(spec.pockets);
+    w.endObject();
+}
+
+// Every physics value is written, defaults included: a shared file must reproduce the same shot
+// even if a later CueLab changes its defaults.
+void writePhysics(JsonWriter& w, const PhysicsParams& p)
+{
+    w.key("physics");
+    w.beginObject(Layout::Block);
+    w.key("gravity");
+    w.value(p.gravity);
+    w.key("mu_slide");
+    w.value(p.muSlide);
+    w.key("mu_roll");
+    w.value(p.muRoll);
+    w.key("mu_spin");
+    w.value(p.muSpin);
+    w.key("ball_ball");
+    w.beginObject(Layout::Line);
+    w.key("model");
+    w.value(toString(p.ballBallModel));
+    w.key("restitution");
+    w.value(p.ballBallRestitution);
+    w.key("friction");
+    if (p.ballBallFrictionKind == BallBallFriction::Alciatore)
+        w.value("alciatore");
+    else
+        w.value(p.ballBallFriction);
+    w.endObject();
+    w.key("ball_cushion");
+    w.beginObject(Layout::Line);
+    w.key("model");
+    w.value(toString(p.ballCushionModel));
+    w.key("restitution");
+    w.value(p.cushionRestitution);
+    w.key("friction");
+    w.value(p.cushionFriction);
+    w.endObject();
+    w.endObject();
+}
+
+// Optional ball keys are left out when they hold their default (zero motion, the table's ball).
+void writeBall(JsonWriter& w, const Ball& ball, const Table& table)
+{
+    const BallState& s = ball.state;
+    w.beginObject(Layout::Line);
+    w.key("id");
+    w.value(ball.id);
+    w.key("position");
+    w.numbers(s.position.data(), 2);
+    if (!isPlusZero(s.velocity.x()) || !isPlusZero(s.velocity.y())) {
+        w.key("velocity");
+        w.numbers(s.velocity.data(), 2);
+    }
+    if (!isPlusZero(s.spin.x()) || !isPlusZero(s.spin.y()) || !isPlusZero(s.spin.z())) {
+        w.key("spin");
+        w.numbers(s.spin.data(), 3);
+    }
+    if (!sameBits(ball.radius, table.ballRadius)) {
+        w.key("radius");
+        w.value(ball.radius);
+    }
+    if (!sameBits(ball.mass, table.ballMass)) {
+        w.key("mass");
+        w.value(ball.mass);
+    }
+    w.endObject();
+}
+
+void writeShot(JsonWriter& w, const CueStrike& shot)
+{
+    w.key("shot");
+    w.beginObject(Layout::Line);
+    w.key("ball");
+    w.value(shot.ball);
+    w.key("speed");
+    w.value(shot.speed);
+    w.key("heading");
+    w.value(shot.headingDeg);
+    w.key("elevation");
+    w.value(shot.elevationDeg);
+    w.key("side");
+    w.value(shot.side);
+    w.key("height");
+    w.value(shot.height);
+    w.key("cue_mass");
+    w.value(shot.cueMass);
+    w.endObject();
+}
+
+}  // namespace
+
+QByteArray serializeSetup(const Setup& setup)
+{
+    JsonWriter w;
+    w.beginObject(Layout::Block);
+    w.key("format");
+    w.value("cuelab-setup");
+    w.key("version");
+    w.value(1);
+    if (!setup.name.empty()) {
+        w.key("name");
+        w.value(setup.name);
+    }
+    if (!setup.notes.empty()) {
+        w.key("notes");
+        w.value(setup.notes);
+    }
+    writeTable(w, setup.table);
+    writePhysics(w, setup.physics);
+    w.key("balls");
+    w.beginArray(Layout::Block);
+    const Table table = makeTable(setup.table);
+    for (const Ball& ball : setup.balls) writeBall(w, ball, table);
+    w.endArray();
+    if (setup.shot) writeShot(w, *setup.shot);
+    w.key("simulation");
+    w.beginObject(Layout::Line);
+    w.key("frame_dt");
+    w.value(setup.simulation.frameDt);
+    w.key("max_time");
+    w.value(setup.simulation.maxTime);
+    w.endObject();
+    w.endObject();
+    return QByteArray::fromStdString(w.text());
+}
+
+}  // namespace cuelab::io
