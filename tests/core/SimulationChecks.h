@@ -1,0 +1,83 @@
+#pragma once
+// Shared checks of whole simulation results for the core test suites: overlaps, balls on the
+// table, energy, and the agreement of timelines with the event log.
+
+#include "Motion.h"
+#include "Simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace cuelab::testing {
+
+inline Ball ballAt(const Table& table, const std::string& id, const Vec2& position, const Vec2& velocity = Vec2::Zero(),
+                   const Vec3& spin = Vec3::Zero())
+{
+    Ball b;
+    b.id = id;
+    b.radius = table.ballRadius;
+    b.mass = table.ballMass;
+    b.state.position = position;
+    b.state.velocity = velocity;
+    b.state.spin = spin;
+    b.state.motion = classify(b.state, b.radius);
+    return b;
+}
+
+// The largest overlap (m) between two balls or a ball and a cushion nose or jaw at time t; <= 0
+// when nothing overlaps.
+inline double maxOverlapAt(const SimulationResult& r, double t)
+{
+    const std::vector<BallState> s = r.statesAt(t);
+    double worst = -1.0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (s[i].motion == MotionState::Pocketed) continue;
+        const double R = r.balls[i].radius;
+        for (std::size_t j = i + 1; j < s.size(); ++j) {
+            if (s[j].motion == MotionState::Pocketed) continue;
+            worst = std::max(worst, R + r.balls[j].radius - (s[i].position - s[j].position).norm());
+        }
+        for (const CushionSegment& c : r.table.cushions) {
+            const Vec2 ab = c.b - c.a;
+            const double lambda = (s[i].position - c.a).dot(ab) / ab.squaredNorm();
+            if (lambda < 0.0 || lambda > 1.0) continue;
+            const double d = (s[i].position - c.a).dot(c.normal);
+            if (d < -R) continue;  // far behind the nose line: a ball in a pocket's mouth region
+            worst = std::max(worst, R - d);
+        }
+        for (const JawTip& j : r.table.jaws)
+            worst = std::max(worst, R + j.radius - (s[i].position - j.centre).norm());
+    }
+    return worst;
+}
+
+// A ball that is not pocketed must have its centre on the playing surface, or (near a pocket) in
+// that pocket's mouth.
+inline bool onTable(const SimulationResult& r, const BallState& s, double radius)
+{
+    if (s.motion == MotionState::Pocketed) return true;
+    const Vec2& p = s.position;
+    const double tol = 1e-9;
+    const bool inside = p.x() >= radius - tol && p.x() <= r.table.length - radius + tol && p.y() >= radius - tol
+                        && p.y() <= r.table.width - radius + tol;
+    if (inside) return true;
+    for (const Pocket& k : r.table.pockets)
+        if ((p - k.centre).norm() < k.radius + 3.0 * radius) return true;
+    return false;
+}
+
+inline double totalEnergy(const SimulationResult& r, const std::vector<BallState>& s)
+{
+    double e = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i) e += kineticEnergy(s[i], r.balls[i].radius, r.balls[i].mass);
+    return e;
+}
+
+inline bool sameState(const BallState& a, const BallState& b)
+{
+    return a.position == b.position && a.velocity == b.velocity && a.spin == b.spin && a.motion == b.motion
+           && a.pocket == b.pocket;
+}
+
+}  // namespace cuelab::testing
