@@ -96,6 +96,28 @@ bool boxNearSegment(const Box& a, double reach, const CushionSegment& s)
     return a.lo.x() - r <= hi.x() && lo.x() - r <= a.hi.x() && a.lo.y() - r <= hi.y() && lo.y() - r <= a.hi.y();
 }
 
+// Keeps the separation speed of a ball-ball collision at least kMinSeparationSpeed (Detection.h) by
+// an extra normal impulse shared as the masses dictate (momentum is kept).
+void enforceSeparation(BallBallResult& r, double massA, double massB)
+{
+    const double separation = (r.b.velocity - r.a.velocity).dot(r.normal);
+    if (separation >= kMinSeparationSpeed) return;
+    const double extra = (kMinSeparationSpeed - separation) / (1.0 / massA + 1.0 / massB);  // N s
+    r.a.velocity -= (extra / massA) * r.normal;
+    r.b.velocity += (extra / massB) * r.normal;
+    r.impulse.head<2>() -= extra * r.normal;
+}
+
+// The same for a ball leaving a cushion or jaw whose normal (towards the ball) is `normal`.
+void enforceSeparation(CushionResult& r, const Vec2& normal, double mass)
+{
+    const double separation = r.after.velocity.dot(normal);
+    if (separation >= kMinSeparationSpeed) return;
+    const double extra = kMinSeparationSpeed - separation;  // m/s
+    r.after.velocity += extra * normal;
+    r.impulse.head<2>() += (mass * extra) * normal;
+}
+
 class Simulator {
 public:
     Simulator(SimulationResult& result, double limit, long long maxEvents)
@@ -318,7 +340,9 @@ void Simulator::process(const Candidate& c)
             e.kind = EventKind::BallJaw;
             e.jaw = c.index;
         }
-        const CushionResult res = resolveCushion(e.before[0], normal, radius(i), mass(i), table_.cushionHeight, p_);
+        CushionResult res = resolveCushion(e.before[0], normal, radius(i), mass(i), table_.cushionHeight, p_);
+        enforceSeparation(res, normal, mass(i));
+        res.after.motion = classify(res.after, radius(i));
         e.after[0] = res.after;
         e.contactPoint = e.before[0].position - radius(i) * normal;
         e.normal = -normal;
@@ -331,7 +355,10 @@ void Simulator::process(const Candidate& c)
         e.kind = EventKind::BallBall;
         e.balls[1] = j;
         e.before[1] = stateNow(j, t);
-        const BallBallResult res = resolveBallBall({e.before[0], radius(i), mass(i)}, {e.before[1], radius(j), mass(j)}, p_);
+        BallBallResult res = resolveBallBall({e.before[0], radius(i), mass(i)}, {e.before[1], radius(j), mass(j)}, p_);
+        enforceSeparation(res, mass(i), mass(j));
+        res.a.motion = classify(res.a, radius(i));
+        res.b.motion = classify(res.b, radius(j));
         e.after[0] = res.a;
         e.after[1] = res.b;
         e.contactPoint = res.contactPoint;
