@@ -1,5 +1,7 @@
 #pragma once
 // Real roots of polynomials up to degree four, for times of impact.
+// Pure, deterministic functions of their arguments; standard library only. Method and references in
+// Quartic.cpp.
 
 #include <array>
 
@@ -9,12 +11,17 @@ namespace cuelab {
 using Quartic = std::array<double, 5>;
 
 // All real roots of the quartic, sorted ascending, written to roots; returns their count (0..4).
-// A (near-)vanishing leading coefficient degrades gracefully to the cubic, quadratic or linear case.
-// Double roots are reported once or twice, never missed.
+// A (near-)vanishing leading coefficient degrades gracefully to the cubic, quadratic or linear case
+// (a leading coefficient below 2^-200 of the largest one is dropped; the roots it carries would lie
+// beyond 1e60). Double roots are reported once or twice, never missed: where p touches zero within
+// the rounding error of its evaluation (a grazing contact), the touching point is a root. A constant
+// or zero polynomial, or one with a NaN or infinite coefficient, has no roots here.
 int solveQuartic(const Quartic& c, std::array<double, 4>& roots);
 
 // The smallest root t of the quartic with lo < t <= hi, or +infinity if there is none.
-// This is what event detection needs; it may be faster than solving for every root.
+// lo and hi may be infinite. A root within rounding of lo counts as lying at lo, so it is excluded:
+// calling again with lo set to the root just found gives the next one. This is what event detection
+// needs; it computes only what precedes the first root, so it is faster than solving for every root.
 double smallestRootInInterval(const Quartic& c, double lo, double hi);
 
 }  // namespace cuelab

@@ -1,0 +1,365 @@
+// Real roots of polynomials up to degree four by recursive bracketing on the critical points.
+//
+// Method. Between two consecutive real roots of p' (the critical points of p), p is monotone, so it
+// has at most one root there, and it has one exactly when p changes sign between the two ends. The
+// critical points are the roots of p', found the same way from the roots of p'', which come from the
+// closed-form quadratic. Each bracketed root is then found by Halley's method safeguarded by
+// bisection, started from the quadratic Taylor model at a critical end point, which is already close
+// for near-double roots (where an unguided iteration crawls). This is the derivative sequence of
+// Collins & Loos (real root isolation, 1976); bracketing the smallest root between critical points
+// and a Cauchy bound is the alternative PHYSICS.md gives to Orellana & De Michele (ACM TOMS
+// Algorithm 1010, 2020). The walk runs from lo upwards and computes critical points only as far as
+// it has to, so the event-detection question "the first root after lo" costs only what precedes it.
+//
+// Tangential roots. A double root (a grazing contact) is a critical point where p vanishes; rounding
+// makes the computed value a tiny number of either sign. Where the sign shows no crossing but the
+// value is within the forward error bound of its evaluation (Higham, Accuracy and Stability of
+// Numerical Algorithms, 2nd ed., 5.1: the error of Horner's rule at x is at most
+// gamma_2n sum |c_i| |x|^i), the critical point is taken as a root. So a double root is never lost to
+// a rounding error of the wrong sign, and a root within rounding of lo counts as lying at lo, which is
+// excluded.
+
+#include "Quartic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cuelab {
+
+namespace {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A computed |p(x)| at or below this many units of eps times sum |c_i| |x|^i counts as zero. The
+// evaluation's own bound is a few eps for degree <= 4; the margin absorbs a few ulps of error in the
+// coefficients themselves, which a caller computes from positions and velocities. A grazing miss by
+// less than this (about 1e-14 of the squared contact distance) is reported as a touch.
+constexpr double kZeroTolerance = 16.0 * kEpsilon;
+
+// Leading coefficients at or below this fraction of the largest one are dropped: the roots they carry
+// lie beyond 2^200 (about 1e60) and evaluating near them would overflow.
+constexpr double kNegligibleLeading = 0x1p-200;
+
+// The iteration stops once its estimated error is this small relative to the root: a further step
+// would be lost in the rounding of the evaluation.
+constexpr double kRootTolerance = kEpsilon;
+
+// Safeguarded Halley converges in a handful of steps. Bisection alone halves the bracket, which spans
+// at most 2^202 (the root bound below), down to adjacent doubles: some 1100 steps across every binade
+// to the smallest subnormal. The cap only guarantees termination on inputs that defeat both.
+constexpr int kMaxIterations = 2200;
+
+// p(x) for a polynomial of degree D (coefficients a[0..D], highest first) by Estrin's splitting on
+// x2 = x^2. Its error bound is that of Horner's rule up to a small constant (Higham, 5.1 and 5.6),
+// but its chain of dependent operations is about half as long, and that chain bounds the speed here.
+template <int D>
+double estrin(const double* a, double x, double x2)
+{
+    if constexpr (D == 0)
+        return a[0];
+    else if constexpr (D == 1)
+        return a[0] * x + a[1];
+    else if constexpr (D == 2)
+        return a[0] * x2 + (a[1] * x + a[2]);
+    else if constexpr (D == 3)
+        return (a[0] * x + a[1]) * x2 + (a[2] * x + a[3]);
+    else
+        return (a[0] * x2 + (a[1] * x + a[2])) * x2 + (a[3] * x + a[4]);
+}
+
+// A polynomial of degree N (3 or 4) and its Taylor coefficient polynomials d1 = p', d2 = p'' / 2 and
+// d3 = p''' / 6, so that p(x + h) = p(x) + d1(x) h + d2(x) h^2 + d3(x) h^3 + ...
+template <int N>
+struct Expansion {
+    double c[N + 1];
+    double absC[N + 1];  // |c_i|, for the rounding bound of p(x)
+    double d1[N];
+    double d2[N - 1];
+    double d3[N - 2];
+
+    explicit Expansion(const double* coefficients)
+    {
+        for (int i = 0; i <= N; ++i) {
+            c[i] = coefficients[i];
+            absC[i] = std::abs(c[i]);
+        }
+        for (int i = 0; i < N; ++i) d1[i] = c[i] * (N - i);
+        for (int i = 0; i < N - 1; ++i) d2[i] = c[i] * ((N - i) * (N - i - 1) / 2);
+        for (int i = 0; i < N - 2; ++i) d3[i] = c[i] * ((N - i) * (N - i - 1) * (N - i - 2) / 6);
+    }
+
+    double value(double x) const { return estrin<N>(c, x, x * x); }
+
+    // Whether a computed value f = p(x) is indistinguishable from zero: within the rounding error of
+    // its evaluation, bounded by kZeroTolerance sum |c_i| |x|^i.
+    bool negligible(double f, double x) const
+    {
+        return std::abs(f) <= kZeroTolerance * estrin<N>(absC, std::abs(x), x * x);
+    }
+};
+
+// A starting point inside (a, b) for the root of p there. At a critical end point e the Taylor
+// model p(e) + p''(e) (x - e)^2 / 2 gives the root to second order, which is what makes near-double
+// roots cheap; without one, the secant through the ends (regula falsi) is used.
+template <int N>
+double startingPoint(const Expansion<N>& p, double a, double fa, bool aCritical, double b, double fb,
+                     bool bCritical)
+{
+    const bool fromA = aCritical && (!bCritical || std::abs(fa) <= std::abs(fb));
+    if (fromA || bCritical) {
+        const double e = fromA ? a : b;
+        const double fe = fromA ? fa : fb;
+        const double halfCurvature = estrin<N - 2>(p.d2, e, e * e);
+        const double offset = std::sqrt(std::abs(fe / halfCurvature));
+        const double x = fromA ? e + offset : e - offset;
+        if (x > a && x < b) return x;  // false for NaN (curvature 0) or a model that overshoots
+    }
+    const double x = a + (b - a) * (fa / (fa - fb));
+    return (x > a && x < b) ? x : a + 0.5 * (b - a);
+}
+
+// The root of p in (a, b), given p(a) and p(b) of opposite signs and p monotone on [a, b].
+// Halley's method, step s = p p' / (p'^2 - p p'' / 2), which converges cubically, safeguarded by
+// bisection when a step would leave the bracket or is not below half the step before (the rtsafe
+// safeguard of Press et al., Numerical Recipes, 3rd ed., 9.4). It stops when the error left after the
+// step just taken, estimated by Halley's error recursion e' = (A^2 - B) e^3 with A = p'' / (2 p') and
+// B = p''' / (6 p') (Traub, Iterative Methods for the Solution of Equations, 1964, 8.3), is below the
+// rounding of x; that saves a last, merely confirming, evaluation.
+template <int N>
+double rootInBracket(const Expansion<N>& p, double a, double fa, bool aCritical, double b, double fb,
+                     bool bCritical)
+{
+    double x = startingPoint<N>(p, a, fa, aCritical, b, fb, bCritical);
+    const bool rising = fa < 0.0;
+    double stepBefore = b - a;
+    for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+        const double x2 = x * x;
+        const double f = estrin<N>(p.c, x, x2);
+        const double d1 = estrin<N - 1>(p.d1, x, x2);
+        const double d2 = estrin<N - 2>(p.d2, x, x2);
+        if (f == 0.0) return x;
+        if ((f < 0.0) == rising)
+            a = x;
+        else
+            b = x;
+        const double step = f * d1 / (d1 * d1 - f * d2);
+        const double next = x - step;
+        if (next > a && next < b && std::abs(2.0 * step) <= std::abs(stepBefore)) {
+            const double d3 = estrin<N - 3>(p.d3, x, x2);
+            const double errorFactor = std::abs(d2 * d2 - d1 * d3);
+            const double stepCubed = std::abs(step * step * step);
+            x = next;
+            stepBefore = step;
+            if (errorFactor * stepCubed <= kRootTolerance * std::abs(x) * (d1 * d1)) return x;
+        } else {
+            stepBefore = 0.5 * (b - a);
+            x = a + stepBefore;
+            if (x == a || x == b) return x;  // the bracket is two adjacent doubles
+        }
+    }
+    return x;
+}
+
+// The real roots of a polynomial of degree N in (lo, hi], one at a time in ascending order. next()
+// finds the next one lazily: asking only for the first root costs only the critical points before it.
+// The critical points come from a Walker over the derivative. Requires lo < hi, both finite, and a
+// nonzero leading coefficient. A root of multiplicity two or more comes out once or, when rounding
+// splits it, as two nearly equal values.
+template <int N>
+class Walker {
+public:
+    Walker(const double* c, double lo, double hi)
+        : p_(c), derivative_(p_.d1, lo, hi), hi_(hi), a_(lo), fa_(p_.value(lo))
+    {
+        if (p_.negligible(fa_, lo)) fa_ = 0.0;  // a root within rounding of lo counts as at lo
+    }
+
+    bool next(double& root)
+    {
+        while (!done_) {
+            double b = hi_;
+            const bool bCritical = derivative_.next(b) && b < hi_;
+            if (!bCritical) {
+                done_ = true;
+                b = hi_;
+            }
+            const double fb = p_.value(b);
+            const double a = a_;
+            const double fa = fa_;
+            const bool aCritical = aCritical_;
+            a_ = b;
+            fa_ = fb;
+            aCritical_ = bCritical;
+            if ((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) {
+                root = rootInBracket<N>(p_, a, fa, aCritical, b, fb, bCritical);
+                return true;
+            }
+            // No sign change: p at b is either clear of zero or a (tangential) root within rounding.
+            // Only here is a tiny value snapped to zero; a tiny value of the crossing sign was taken
+            // at its word above, so that a resolvable pair of close roots yields both.
+            if (fb == 0.0 || p_.negligible(fb, b)) {
+                fa_ = 0.0;
+                root = b;
+                return true;
+            }
+        }
+        return false;
+    }
+
+private:
+    Expansion<N> p_;            // declared before derivative_, which is built from p_.d1
+    Walker<N - 1> derivative_;
+    double hi_;
+    double a_;                  // the walk has covered (lo, a_]
+    double fa_;                 // p(a_), or 0 where a_ was taken as a root
+    bool aCritical_ = false;    // a_ is a critical point (not lo)
+    bool done_ = false;
+};
+
+// Degree two in closed form: the stable quadratic formula (no cancellation between -B and the
+// square root), with a discriminant within its rounding error taken as zero, a double root.
+template <>
+class Walker<2> {
+public:
+    Walker(const double* c, double lo, double hi)
+    {
+        const double A = c[0];
+        const double B = c[1];
+        const double C = c[2];
+        const double discriminant = B * B - 4.0 * A * C;
+        const double noise = kZeroTolerance * (B * B + 4.0 * std::abs(A * C));
+        double roots[2];
+        int n = 0;
+        if (std::abs(discriminant) <= noise) {
+            roots[n++] = -B / (2.0 * A);
+        } else if (discriminant > 0.0) {
+            const double q = -0.5 * (B + std::copysign(std::sqrt(discriminant), B));
+            const double r1 = q / A;
+            const double r2 = C / q;  // q != 0: discriminant > noise >= 0 means B != 0 or A C < 0
+            roots[n++] = std::min(r1, r2);
+            roots[n++] = std::max(r1, r2);
+        }
+        for (int i = 0; i < n; ++i)
+            if (roots[i] > lo && roots[i] <= hi) roots_[count_++] = roots[i];
+    }
+
+    bool next(double& root)
+    {
+        if (taken_ == count_) return false;
+        root = roots_[taken_++];
+        return true;
+    }
+
+private:
+    double roots_[2] = {0.0, 0.0};
+    int count_ = 0;
+    int taken_ = 0;
+};
+
+template <>
+class Walker<1> {
+public:
+    Walker(const double* c, double lo, double hi)
+        : root_(-c[1] / c[0]), pending_(root_ > lo && root_ <= hi)
+    {
+    }
+
+    bool next(double& root)
+    {
+        if (!pending_) return false;
+        pending_ = false;
+        root = root_;
+        return true;
+    }
+
+private:
+    double root_;
+    bool pending_;
+};
+
+// A polynomial prepared for root finding: scaled by a power of two (exact) when its coefficients are
+// extreme, negligible leading coefficients dropped, and a bound on its roots.
+struct Normalised {
+    std::array<double, 5> c{};  // c[0 .. degree] hold the coefficients, highest degree first
+    int degree = -1;            // -1: no usable polynomial (all zero, or not finite)
+    double bound = 0.0;         // every root t satisfies |t| < bound
+};
+
+Normalised normalise(const Quartic& input)
+{
+    Normalised n;
+    const double largest = std::max({std::abs(input[0]), std::abs(input[1]), std::abs(input[2]),
+                                     std::abs(input[3]), std::abs(input[4])});
+    const bool finite = largest <= std::numeric_limits<double>::max() &&
+                        !std::isnan(input[0] + input[1] + input[2] + input[3] + input[4]);
+    if (!(largest > 0.0) || !finite) return n;
+
+    int first = 0;
+    while (std::abs(input[first]) <= kNegligibleLeading * largest) ++first;
+    n.degree = 4 - first;
+    // Scaling keeps |p(bound)| <~ largest 2^600 finite; in the usual range it is not needed.
+    if (largest > 0x1p300 || largest < 0x1p-300) {
+        const int exponent = std::ilogb(largest);
+        for (int i = 0; i <= n.degree; ++i) n.c[i] = std::ldexp(input[first + i], -exponent);
+    } else {
+        for (int i = 0; i <= n.degree; ++i) n.c[i] = input[first + i];
+    }
+
+    // Cauchy's bound |t| < 1 + M with M = max |c_i / c_0|; doubling M makes |p(+-bound)| at least
+    // half the leading term, so the sign of p there is not at the mercy of rounding.
+    double ratio = 0.0;
+    for (int i = 1; i <= n.degree; ++i) ratio = std::max(ratio, std::abs(n.c[i]));
+    n.bound = 1.0 + 2.0 * ratio / std::abs(n.c[0]);
+    return n;
+}
+
+// Calls visit(root) for each real root in (lo, hi] in ascending order until it returns false.
+template <int N, typename Visit>
+void visitRoots(const double* c, double lo, double hi, Visit visit)
+{
+    Walker<N> walker(c, lo, hi);
+    double root = 0.0;
+    while (walker.next(root))
+        if (!visit(root)) return;
+}
+
+template <typename Visit>
+void visitRootsOfNormalised(const Normalised& n, double lo, double hi, Visit visit)
+{
+    lo = std::max(lo, -n.bound);
+    hi = std::min(hi, n.bound);
+    if (!(lo < hi)) return;  // also false for NaN
+    switch (n.degree) {
+    case 4: visitRoots<4>(n.c.data(), lo, hi, visit); break;
+    case 3: visitRoots<3>(n.c.data(), lo, hi, visit); break;
+    case 2: visitRoots<2>(n.c.data(), lo, hi, visit); break;
+    case 1: visitRoots<1>(n.c.data(), lo, hi, visit); break;
+    default: break;
+    }
+}
+
+}  // namespace
+
+int solveQuartic(const Quartic& c, std::array<double, 4>& roots)
+{
+    int count = 0;
+    visitRootsOfNormalised(normalise(c), -kInfinity, kInfinity, [&](double root) {
+        roots[count++] = root;
+        return count < 4;
+    });
+    return count;
+}
+
+double smallestRootInInterval(const Quartic& c, double lo, double hi)
+{
+    double smallest = kInfinity;
+    visitRootsOfNormalised(normalise(c), lo, hi, [&](double root) {
+        smallest = root;
+        return false;
+    });
+    return smallest;
+}
+
+}  // namespace cuelab
