@@ -61,6 +61,8 @@ void writePhysics(JsonWriter& w, const PhysicsParams& p)
     w.key("restitution");
     w.value(p.ballBallRestitution);
     w.key("friction");
+    // The file holds either the fit's name or a fixed coefficient, so with the fit the (unused)
+    // fixed coefficient is not saved and reads back as its default.
     if (p.ballBallFrictionKind == BallBallFriction::Alciatore)
         w.value("alciatore");
     else

@@ -74,7 +74,9 @@ inline QStringList setupDifferences(const Setup& a, const Setup& b)
     d.check("physics.ballBallModel", p.ballBallModel, q.ballBallModel);
     d.check("physics.ballBallRestitution", p.ballBallRestitution, q.ballBallRestitution);
     d.check("physics.ballBallFrictionKind", p.ballBallFrictionKind, q.ballBallFrictionKind);
-    d.check("physics.ballBallFriction", p.ballBallFriction, q.ballBallFriction);
+    // With the speed-dependent fit the fixed coefficient is unused, and the file has no place for it.
+    if (p.ballBallFrictionKind == BallBallFriction::Fixed)
+        d.check("physics.ballBallFriction", p.ballBallFriction, q.ballBallFriction);
     d.check("physics.ballCushionModel", p.ballCushionModel, q.ballCushionModel);
     d.check("physics.cushionRestitution", p.cushionRestitution, q.cushionRestitution);
     d.check("physics.cushionFriction", p.cushionFriction, q.cushionFriction);
