@@ -2,102 +2,23 @@
 
 #include "Quartic.h"
 
-#include <array>
 #include <cmath>
 
 namespace cuelab {
 
 namespace {
 
-// ---- TEMPORARY: stands in for Quartic.cpp (solveQuartic) until it is committed; deleted then. ----
-double evalPoly(const double* c, int degree, double x)
-{
-    double v = c[0];
-    for (int i = 1; i <= degree; ++i) v = v * x + c[i];
-    return v;
-}
-int tempRealRoots(const double* c, int degree, double lo, double hi, double* roots)
-{
-    while (degree > 0 && c[0] == 0.0) {
-        ++c;
-        --degree;
-    }
-    if (degree <= 0) return 0;
-    if (degree == 1) {
-        const double r = -c[1] / c[0];
-        if (r >= lo && r <= hi) {
-            roots[0] = r;
-            return 1;
-        }
-        return 0;
-    }
-    double deriv[4];
-    for (int i = 0; i < degree; ++i) deriv[i] = c[i] * static_cast<double>(degree - i);
-    double crit[4];
-    const int nc = tempRealRoots(deriv, degree - 1, lo, hi, crit);
-    double knots[6];
-    int nk = 0;
-    knots[nk++] = lo;
-    for (int i = 0; i < nc; ++i) knots[nk++] = crit[i];
-    knots[nk++] = hi;
-    int n = 0;
-    for (int k = 0; k + 1 < nk; ++k) {
-        double a = knots[k], b = knots[k + 1];
-        double fa = evalPoly(c, degree, a), fb = evalPoly(c, degree, b);
-        if (fa == 0.0) {
-            if (n == 0 || roots[n - 1] != a) roots[n++] = a;
-            continue;
-        }
-        if ((fa > 0) == (fb > 0) && fb != 0.0) continue;
-        if (fb == 0.0) continue;  // reported as the next piece's left end
-        for (int it = 0; it < 200 && b - a > 0; ++it) {
-            const double m = 0.5 * (a + b);
-            if (m <= a || m >= b) break;
-            const double fm = evalPoly(c, degree, m);
-            if ((fm > 0) == (fa > 0)) {
-                a = m;
-                fa = fm;
-            } else {
-                b = m;
-            }
-        }
-        roots[n++] = 0.5 * (a + b);
-    }
-    if (nk > 0) {
-        const double fh = evalPoly(c, degree, hi);
-        if (fh == 0.0 && (n == 0 || roots[n - 1] != hi)) roots[n++] = hi;
-    }
-    return n;
-}
-int solveQuarticTemp(const Quartic& c, std::array<double, 4>& roots)
-{
-    double scale = 0.0;
-    for (double x : c) scale = std::max(scale, std::abs(x));
-    if (scale == 0.0) return 0;
-    // Cauchy bound on the roots' magnitude.
-    int lead = 0;
-    while (lead < 4 && c[static_cast<std::size_t>(lead)] == 0.0) ++lead;
-    double bound = 0.0;
-    for (int i = lead + 1; i <= 4; ++i)
-        bound = std::max(bound, std::abs(c[static_cast<std::size_t>(i)] / c[static_cast<std::size_t>(lead)]));
-    bound += 1.0;
-    double r[8];
-    const int n = tempRealRoots(c.data(), 4, -bound, bound, r);
-    for (int i = 0; i < n && i < 4; ++i) roots[static_cast<std::size_t>(i)] = r[i];
-    return std::min(n, 4);
-}
-// ---- end TEMPORARY ----
-
-// The first root s in (0, H] of f at which f falls (f' < 0): where a gap closes.
+// The first root s in (0, H] of f at which f falls (f' < 0): where a gap closes. A root where f
+// rises (the bodies part) or only touches zero (a graze) is passed over; a quartic has at most four.
 double firstFallingRoot(const Quartic& f, double horizon)
 {
-    std::array<double, 4> roots{};
-    const int n = solveQuarticTemp(f, roots);
-    for (int i = 0; i < n; ++i) {
-        const double s = roots[static_cast<std::size_t>(i)];
-        if (s <= 0.0 || s > horizon) continue;
+    double lo = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        const double s = smallestRootInInterval(f, lo, horizon);
+        if (s == kNever) return kNever;
         const double slope = ((4.0 * f[0] * s + 3.0 * f[1]) * s + 2.0 * f[2]) * s + f[3];
         if (slope < 0.0) return s;
+        lo = s;
     }
     return kNever;
 }
