@@ -29,6 +29,9 @@ const char* const kCommands =
     "3 the simulation could not finish (event cap, or max_time before every ball rested).\n"
     "Times in seconds. See docs/cli.md.";
 
+// The most frames `trajectory` prints (10 minutes at 60 frames per second is 36000).
+constexpr double kMaxFrames = 1e7;
+
 // What the command line asked for, once checked.
 struct Request {
     QString command;
@@ -164,7 +167,15 @@ int execute(const Request& request, const Output& output)
         return finished ? Success : SimulationUnfinished;
     }
     const bool finished = simulateFor(*setup, request, request.until.value_or(-1.0), result, output);
-    *output.out += QByteArray::fromStdString(trajectoryCsv(result, request.frameDt.value_or(setup->simulation.frameDt)));
+    const double frameDt = request.frameDt.value_or(setup->simulation.frameDt);
+    // A frame step far below the run's length would print without end: refuse before printing.
+    if (result.endTime / frameDt > kMaxFrames)
+        return output.usage(QStringLiteral("trajectory: a frame step of %1 s gives more than %2 frames over %3 s; "
+                                           "choose a larger --frame-dt")
+                                .arg(QString::fromStdString(io::roundTripNumber(frameDt)))
+                                .arg(static_cast<long long>(kMaxFrames))
+                                .arg(QString::fromStdString(io::roundTripNumber(result.endTime))));
+    *output.out += QByteArray::fromStdString(trajectoryCsv(result, frameDt));
     return finished ? Success : SimulationUnfinished;
 }
 
