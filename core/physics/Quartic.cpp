@@ -46,6 +46,16 @@ constexpr double kNegligibleLeading = 0x1p-200;
 // would be lost in the rounding of the evaluation.
 constexpr double kRootTolerance = kEpsilon;
 
+// Critical points serve first as ends of the monotone pieces, and for that a rough one does: p(x) at
+// an x off the true critical point by e differs from the critical value by about p'' e^2 / 2, which
+// only matters when that value is itself that small. So they are computed to this relative accuracy
+// and refined to kRootTolerance only in that case (see Walker::next), which saves an iteration each.
+constexpr double kCriticalPointTolerance = 1e-7;
+
+// A critical point with estimated error e is refined when |p| there is below |p''| / 2 (kErrorMargin
+// e)^2: a margin on the error estimate, which is asymptotic, not a bound.
+constexpr double kErrorMargin = 16.0;
+
 // Safeguarded Halley converges in a handful of steps. Bisection alone halves the bracket, which spans
 // at most 2^202 (the root bound below), down to adjacent doubles: some 1100 steps across every binade
 // to the smallest subnormal. The cap only guarantees termination on inputs that defeat both.
@@ -74,17 +84,13 @@ double estrin(const double* a, double x, double x2)
 template <int N>
 struct Expansion {
     double c[N + 1];
-    double absC[N + 1];  // |c_i|, for the rounding bound of p(x)
     double d1[N];
     double d2[N - 1];
     double d3[N - 2];
 
     explicit Expansion(const double* coefficients)
     {
-        for (int i = 0; i <= N; ++i) {
-            c[i] = coefficients[i];
-            absC[i] = std::abs(c[i]);
-        }
+        for (int i = 0; i <= N; ++i) c[i] = coefficients[i];
         for (int i = 0; i < N; ++i) d1[i] = c[i] * (N - i);
         for (int i = 0; i < N - 1; ++i) d2[i] = c[i] * ((N - i) * (N - i - 1) / 2);
         for (int i = 0; i < N - 2; ++i) d3[i] = c[i] * ((N - i) * (N - i - 1) * (N - i - 2) / 6);
@@ -96,7 +102,10 @@ struct Expansion {
     // its evaluation, bounded by kZeroTolerance sum |c_i| |x|^i.
     bool negligible(double f, double x) const
     {
-        return std::abs(f) <= kZeroTolerance * estrin<N>(absC, std::abs(x), x * x);
+        const double ax = std::abs(x);
+        double bound = std::abs(c[0]);
+        for (int i = 1; i <= N; ++i) bound = bound * ax + std::abs(c[i]);
+        return std::abs(f) <= kZeroTolerance * bound;
     }
 };
 
@@ -120,26 +129,30 @@ double startingPoint(const Expansion<N>& p, double a, double fa, bool aCritical,
     return (x > a && x < b) ? x : a + 0.5 * (b - a);
 }
 
-// The root of p in (a, b), given p(a) and p(b) of opposite signs and p monotone on [a, b].
+// The root of p in (a, b) from x, given p(a) and p(b) of opposite signs and p monotone on [a, b],
+// to the relative accuracy tolerance; error receives an estimate of the remaining absolute error.
 // Halley's method, step s = p p' / (p'^2 - p p'' / 2), which converges cubically, safeguarded by
 // bisection when a step would leave the bracket or is not below half the step before (the rtsafe
 // safeguard of Press et al., Numerical Recipes, 3rd ed., 9.4). It stops when the error left after the
 // step just taken, estimated by Halley's error recursion e' = (A^2 - B) e^3 with A = p'' / (2 p') and
 // B = p''' / (6 p') (Traub, Iterative Methods for the Solution of Equations, 1964, 8.3), is below the
-// rounding of x; that saves a last, merely confirming, evaluation.
+// tolerance; that saves a last, merely confirming, evaluation.
 template <int N>
-double rootInBracket(const Expansion<N>& p, double a, double fa, bool aCritical, double b, double fb,
-                     bool bCritical)
+double rootInBracket(const Expansion<N>& p, double a, double fa, double b, double x, double tolerance,
+                     double& error)
 {
-    double x = startingPoint<N>(p, a, fa, aCritical, b, fb, bCritical);
     const bool rising = fa < 0.0;
     double stepBefore = b - a;
+    error = stepBefore;
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         const double x2 = x * x;
         const double f = estrin<N>(p.c, x, x2);
         const double d1 = estrin<N - 1>(p.d1, x, x2);
         const double d2 = estrin<N - 2>(p.d2, x, x2);
-        if (f == 0.0) return x;
+        if (f == 0.0) {
+            error = 0.0;
+            return x;
+        }
         if ((f < 0.0) == rising)
             a = x;
         else
@@ -148,14 +161,18 @@ double rootInBracket(const Expansion<N>& p, double a, double fa, bool aCritical,
         const double next = x - step;
         if (next > a && next < b && std::abs(2.0 * step) <= std::abs(stepBefore)) {
             const double d3 = estrin<N - 3>(p.d3, x, x2);
-            const double errorFactor = std::abs(d2 * d2 - d1 * d3);
-            const double stepCubed = std::abs(step * step * step);
+            const double errorTimesSlope2 = std::abs(d2 * d2 - d1 * d3) * std::abs(step * step * step);
+            const double slope2 = d1 * d1;
             x = next;
             stepBefore = step;
-            if (errorFactor * stepCubed <= kRootTolerance * std::abs(x) * (d1 * d1)) return x;
+            if (errorTimesSlope2 <= tolerance * std::abs(x) * slope2) {  // no division on this path
+                error = errorTimesSlope2 / slope2;
+                return x;
+            }
         } else {
             stepBefore = 0.5 * (b - a);
             x = a + stepBefore;
+            error = stepBefore;
             if (x == a || x == b) return x;  // the bracket is two adjacent doubles
         }
     }
@@ -170,30 +187,52 @@ double rootInBracket(const Expansion<N>& p, double a, double fa, bool aCritical,
 template <int N>
 class Walker {
 public:
-    Walker(const double* c, double lo, double hi)
-        : p_(c), derivative_(p_.d1, lo, hi), hi_(hi), a_(lo), fa_(p_.value(lo))
+    // tolerance: the relative accuracy of the roots, kRootTolerance or kCriticalPointTolerance.
+    Walker(const double* c, double lo, double hi, double tolerance)
+        : p_(c), derivative_(p_.d1, lo, hi, kCriticalPointTolerance), tolerance_(tolerance), hi_(hi),
+          a_(lo), fa_(p_.value(lo))
     {
-        if (p_.negligible(fa_, lo)) fa_ = 0.0;  // a root within rounding of lo counts as at lo
     }
 
-    bool next(double& root)
+    // The next root, and an estimate of its absolute error.
+    bool next(double& root, double& error)
     {
         while (!done_) {
             double b = hi_;
-            const bool bCritical = derivative_.next(b) && b < hi_;
+            double bError = 0.0;
+            bool bCritical = derivative_.next(b, bError) && b < hi_;
+            double fb = p_.value(b);
+            if (bCritical && bError > 0.0) {
+                // Is p(b) close enough to zero that the critical point's error could change its sign?
+                const double halfCurvature = estrin<N - 2>(p_.d2, b, b * b);
+                const double offset = kErrorMargin * bError;
+                if (std::abs(fb) <= std::abs(halfCurvature) * offset * offset || p_.negligible(fb, b)) {
+                    derivative_.refine(b, bError);
+                    bCritical = b < hi_;
+                    fb = p_.value(b);
+                }
+            }
             if (!bCritical) {
                 done_ = true;
                 b = hi_;
+                bError = 0.0;
+                fb = p_.value(b);
             }
-            const double fb = p_.value(b);
             const double a = a_;
             const double fa = fa_;
             const bool aCritical = aCritical_;
+            const bool aIsLo = aIsLo_;
             a_ = b;
             fa_ = fb;
             aCritical_ = bCritical;
-            if ((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) {
-                root = rootInBracket<N>(p_, a, fa, aCritical, b, fb, bCritical);
+            aIsLo_ = false;
+            // A crossing from a value at lo that is zero within rounding is a root at lo, excluded.
+            if (((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) && !(aIsLo && p_.negligible(fa, a))) {
+                bracketA_ = a;
+                bracketFa_ = fa;
+                bracketB_ = b;
+                const double start = startingPoint<N>(p_, a, fa, aCritical, b, fb, bCritical);
+                root = rootInBracket<N>(p_, a, fa, b, start, tolerance_, error);
                 return true;
             }
             // No sign change: p at b is either clear of zero or a (tangential) root within rounding.
@@ -201,21 +240,35 @@ public:
             // at its word above, so that a resolvable pair of close roots yields both.
             if (fb == 0.0 || p_.negligible(fb, b)) {
                 fa_ = 0.0;
+                bracketA_ = bracketB_ = b;  // a root at a critical point is as accurate as that
                 root = b;
+                error = bError;
                 return true;
             }
         }
         return false;
     }
 
+    // Refines the root last returned by next() to full accuracy.
+    void refine(double& root, double& error)
+    {
+        if (bracketA_ < bracketB_)
+            root = rootInBracket<N>(p_, bracketA_, bracketFa_, bracketB_, root, kRootTolerance, error);
+    }
+
 private:
     Expansion<N> p_;            // declared before derivative_, which is built from p_.d1
     Walker<N - 1> derivative_;
+    double tolerance_;
     double hi_;
     double a_;                  // the walk has covered (lo, a_]
     double fa_;                 // p(a_), or 0 where a_ was taken as a root
-    bool aCritical_ = false;    // a_ is a critical point (not lo)
+    bool aCritical_ = false;    // a_ is a critical point
+    bool aIsLo_ = true;         // a_ is lo
     bool done_ = false;
+    double bracketA_ = 0.0;     // the bracket of the root last returned, for refine()
+    double bracketFa_ = 0.0;
+    double bracketB_ = 0.0;
 };
 
 // Degree two in closed form: the stable quadratic formula (no cancellation between -B and the
@@ -223,7 +276,7 @@ private:
 template <>
 class Walker<2> {
 public:
-    Walker(const double* c, double lo, double hi)
+    Walker(const double* c, double lo, double hi, double /*tolerance: always full*/)
     {
         const double A = c[0];
         const double B = c[1];
@@ -245,12 +298,15 @@ public:
             if (roots[i] > lo && roots[i] <= hi) roots_[count_++] = roots[i];
     }
 
-    bool next(double& root)
+    bool next(double& root, double& error)
     {
         if (taken_ == count_) return false;
         root = roots_[taken_++];
+        error = 0.0;
         return true;
     }
+
+    void refine(double& /*root*/, double& /*error*/) {}
 
 private:
     double roots_[2] = {0.0, 0.0};
@@ -261,16 +317,17 @@ private:
 template <>
 class Walker<1> {
 public:
-    Walker(const double* c, double lo, double hi)
+    Walker(const double* c, double lo, double hi, double /*tolerance: always full*/)
         : root_(-c[1] / c[0]), pending_(root_ > lo && root_ <= hi)
     {
     }
 
-    bool next(double& root)
+    bool next(double& root, double& error)
     {
         if (!pending_) return false;
         pending_ = false;
         root = root_;
+        error = 0.0;
         return true;
     }
 
@@ -290,28 +347,27 @@ struct Normalised {
 Normalised normalise(const Quartic& input)
 {
     Normalised n;
-    const double largest = std::max({std::abs(input[0]), std::abs(input[1]), std::abs(input[2]),
-                                     std::abs(input[3]), std::abs(input[4])});
-    const bool finite = largest <= std::numeric_limits<double>::max() &&
-                        !std::isnan(input[0] + input[1] + input[2] + input[3] + input[4]);
-    if (!(largest > 0.0) || !finite) return n;
+    const double total = std::abs(input[0]) + std::abs(input[1]) + std::abs(input[2]) +
+                         std::abs(input[3]) + std::abs(input[4]);
+    if (!(total > 0.0 && total <= std::numeric_limits<double>::max())) return n;  // 0, inf or NaN
 
     int first = 0;
-    while (std::abs(input[first]) <= kNegligibleLeading * largest) ++first;
+    while (std::abs(input[first]) <= kNegligibleLeading * total) ++first;
     n.degree = 4 - first;
-    // Scaling keeps |p(bound)| <~ largest 2^600 finite; in the usual range it is not needed.
-    if (largest > 0x1p300 || largest < 0x1p-300) {
-        const int exponent = std::ilogb(largest);
+    // Scaling keeps |p(bound)| <~ total 2^600 finite; in the usual range it is not needed.
+    if (total > 0x1p300 || total < 0x1p-300) {
+        const int exponent = std::ilogb(total);
         for (int i = 0; i <= n.degree; ++i) n.c[i] = std::ldexp(input[first + i], -exponent);
     } else {
         for (int i = 0; i <= n.degree; ++i) n.c[i] = input[first + i];
     }
 
-    // Cauchy's bound |t| < 1 + M with M = max |c_i / c_0|; doubling M makes |p(+-bound)| at least
-    // half the leading term, so the sign of p there is not at the mercy of rounding.
-    double ratio = 0.0;
-    for (int i = 1; i <= n.degree; ++i) ratio = std::max(ratio, std::abs(n.c[i]));
-    n.bound = 1.0 + 2.0 * ratio / std::abs(n.c[0]);
+    // Every root has |t| < 1 + 2 S / |c_0|, with S = sum over i > 0 of |c_i| (a Cauchy-type bound:
+    // for t >= that bound, |c_0| |t|^n - S |t|^(n-1) >= |c_0| |t|^n / 2). So p(+-bound) is at least
+    // half the leading term, and its sign is not at the mercy of rounding.
+    double rest = 0.0;
+    for (int i = 1; i <= n.degree; ++i) rest += std::abs(n.c[i]);
+    n.bound = 1.0 + 2.0 * rest / std::abs(n.c[0]);
     return n;
 }
 
@@ -319,9 +375,10 @@ Normalised normalise(const Quartic& input)
 template <int N, typename Visit>
 void visitRoots(const double* c, double lo, double hi, Visit visit)
 {
-    Walker<N> walker(c, lo, hi);
+    Walker<N> walker(c, lo, hi, kRootTolerance);
     double root = 0.0;
-    while (walker.next(root))
+    double error = 0.0;
+    while (walker.next(root, error))
         if (!visit(root)) return;
 }
 
