@@ -3,6 +3,7 @@
 #include "JsonText.h"
 
 #include <algorithm>
+#include <array>
 
 namespace cuelab::cli {
 
@@ -59,13 +60,14 @@ void writeEvent(JsonWriter& w, const SimulationResult& result, const Event& e)
         w.key("pocket");
         w.value(pocketId(result, e.pocket));
     }
-    for (const char* key : {"before", "after"}) {
-        const auto& states = key[0] == 'b' ? e.before : e.after;
+    auto writeStates = [&](const char* key, const std::array<BallState, 2>& states) {
         w.key(key);
         w.beginArray(Layout::Line);
         for (int i = 0; i < agents; ++i) writeBallState(w, result, e.balls[i], states[i]);
         w.endArray();
-    }
+    };
+    writeStates("before", e.before);
+    writeStates("after", e.after);
     w.endObject();
 }
 

@@ -151,15 +151,22 @@ Eigen::Matrix<double, N, 1> vector(const QJsonValue& v, const QString& path)
     return out;
 }
 
-void checkHeader(const ObjectReader& root)
+// The header is read before anything else, so that another kind of JSON file is refused as such,
+// not for its keys.
+void checkHeader(const QJsonObject& root)
 {
-    const QString format = root.string("format");
-    if (format != QLatin1String("cuelab-setup"))
-        refuse(root.pathOf("format"), QStringLiteral("expected \"cuelab-setup\", found \"%1\"").arg(format));
-    const double version = root.number("version");
-    if (version != 1.0)
-        refuse(root.pathOf("version"),
-               QStringLiteral("version %1 is not supported (this CueLab reads version 1)").arg(version));
+    const QJsonValue format = root.value(QLatin1String("format"));
+    if (format.isUndefined())
+        refuse(QStringLiteral("format"), QStringLiteral("required key is missing (not a CueLab setup file?)"));
+    if (!format.isString()) wrongType(QStringLiteral("format"), "a string", format);
+    if (format.toString() != QLatin1String("cuelab-setup"))
+        refuse(QStringLiteral("format"), QStringLiteral("expected \"cuelab-setup\", found \"%1\"").arg(format.toString()));
+    const QJsonValue version = root.value(QLatin1String("version"));
+    if (version.isUndefined()) refuse(QStringLiteral("version"), QStringLiteral("required key is missing"));
+    const double number = ObjectReader::toNumber(version, QStringLiteral("version"));
+    if (number != 1.0)
+        refuse(QStringLiteral("version"),
+               QStringLiteral("version %1 is not supported (this CueLab reads version 1)").arg(number));
 }
 
 TableSpec parseTable(const QJsonValue& value)
@@ -304,16 +311,7 @@ SimulationSettings parseSimulation(const QJsonValue& value)
 Setup parseDocument(const QJsonValue& document)
 {
     if (!document.isObject()) wrongType(QString(), "a JSON object at the top level", document);
-    // The header first, so that another kind of JSON file is refused as such, not for its keys.
-    {
-        const QJsonObject root = document.toObject();
-        if (!root.contains(QLatin1String("format")))
-            refuse(QStringLiteral("format"), QStringLiteral("required key is missing (not a CueLab setup file?)"));
-        QJsonObject header;
-        header.insert(QStringLiteral("format"), root.value(QLatin1String("format")));
-        if (root.contains(QLatin1String("version"))) header.insert(QStringLiteral("version"), root.value(QLatin1String("version")));
-        checkHeader(ObjectReader(header, QString(), {"format", "version"}));
-    }
+    checkHeader(document.toObject());
     const ObjectReader in(document, QString(),
                           {"format", "version", "name", "notes", "table", "physics", "balls", "shot", "simulation"});
     Setup setup;
