@@ -1,0 +1,52 @@
+#pragma once
+// The Balls dock: every ball with its set-up position (editable, in metres) and its state, position
+// and speed at the current time; add, remove, duplicate, and rack presets.
+
+#include <QWidget>
+
+class QAction;
+class QMenu;
+class QTableWidget;
+
+namespace cuelab {
+
+class Document;
+
+class BallsPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit BallsPanel(Document* document, QWidget* parent = nullptr);
+
+    enum Column { IdColumn, XColumn, YColumn, StateColumn, PositionColumn, SpeedColumn, ColumnCount };
+
+    QTableWidget* table() const { return table_; }
+    QAction* addBallAction() const { return add_; }
+    QAction* removeBallAction() const { return remove_; }
+    QAction* duplicateBallAction() const { return duplicate_; }
+    QMenu* rackMenu() const { return rackMenu_; }
+    int selectedBall() const;
+
+public slots:
+    void setTime(double seconds);
+    void setSelectedBall(int index);  // -1 = none; does not emit ballSelected
+
+signals:
+    void ballSelected(int index);
+
+private:
+    void rebuild();         // rows from the setup
+    void refreshMotion();   // the columns that depend on the time
+    void commitItem(int row, int column);
+    void updateActions();
+
+    Document* document_;
+    QTableWidget* table_;
+    QAction* add_;
+    QAction* remove_;
+    QAction* duplicate_;
+    QMenu* rackMenu_;
+    double time_ = 0.0;  // s
+    bool refreshing_ = false;
+};
+
+}  // namespace cuelab

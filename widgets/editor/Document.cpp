@@ -1,0 +1,346 @@
+#include "Document.h"
+
+#include "SetupFile.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QUndoStack>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <cmath>
+#include <exception>
+
+namespace cuelab {
+
+namespace {
+
+constexpr double kPlacementGap = 1e-4;  // m, the least gap between a newly placed ball and the others
+
+SimulationOutcome runSimulation(const Setup& setup, quint64 generation)
+{
+    SimulationOutcome out;
+    out.generation = generation;
+    try {
+        auto result = std::make_shared<SimulationResult>(simulate(setup));
+        if (result->status == SimulationStatus::EventLimit)
+            out.error = QString::fromStdString(result->error);
+        out.result = std::move(result);
+    } catch (const std::exception& e) {
+        out.error = QObject::tr("The simulation failed: %1").arg(QString::fromUtf8(e.what()));
+    }
+    return out;
+}
+
+// A new document: a 9-ft table, the cue ball on the head spot and one object ball on the foot spot,
+// the cue aimed at it.
+Setup startingSetup()
+{
+    Setup s;
+    s.name = "Untitled";
+    const Table table = makeTable(s.table);
+    s.balls = rackBalls(RackPreset::Straight, table);
+    s.shot = CueStrike{};
+    s.shot->ball = s.balls.front().id;
+    return s;
+}
+
+bool overlapsAny(const Setup& setup, const Vec2& p, double radius)
+{
+    for (const Ball& b : setup.balls)
+        if ((b.state.position - p).norm() < b.radius + radius + kPlacementGap) return true;
+    return false;
+}
+
+// The smallest positive integer id that is not taken ("1", "2", ...).
+std::string freeId(const Setup& setup)
+{
+    for (int n = 1;; ++n) {
+        const std::string id = std::to_string(n);
+        bool taken = false;
+        for (const Ball& b : setup.balls) taken = taken || b.id == id;
+        if (!taken) return id;
+    }
+}
+
+// A free spot near `preferred`: tries a spiral of positions one diameter apart.
+std::optional<Vec2> freeSpot(const Setup& setup, const Table& table, const Vec2& preferred, double radius)
+{
+    const double step = 2.0 * radius + 2.0 * kPlacementGap;
+    for (int ring = 0; ring < 40; ++ring) {
+        const int count = ring == 0 ? 1 : 6 * ring;
+        for (int k = 0; k < count; ++k) {
+            const double angle = 2.0 * 3.14159265358979323846 * k / count;
+            const Vec2 p = preferred + ring * step * Vec2(std::cos(angle), std::sin(angle));
+            const bool onCloth = p.x() >= radius && p.x() <= table.length - radius && p.y() >= radius &&
+                                 p.y() <= table.width - radius;
+            if (onCloth && !overlapsAny(setup, p, radius)) return p;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+Document::Document(QObject* parent)
+    : QObject(parent), undoStack_(new QUndoStack(this)), watcher_(new QFutureWatcher<SimulationOutcome>(this))
+{
+    connect(undoStack_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+    connect(watcher_, &QFutureWatcher<SimulationOutcome>::finished, this, &Document::simulationFinished);
+    replace(startingSetup(), QString(), tr("Untitled"));
+}
+
+Document::~Document()
+{
+    // The running task holds its own copy of the setup; it only has to end before the process does.
+    watcher_->disconnect(this);
+    watcher_->waitForFinished();
+}
+
+QString Document::displayName() const
+{
+    return filePath_.isEmpty() ? untitledTitle_ : QFileInfo(filePath_).fileName();
+}
+
+bool Document::isModified() const { return !undoStack_->isClean(); }
+
+void Document::newDocument() { replace(startingSetup(), QString(), tr("Untitled")); }
+
+bool Document::load(const QString& path, QString* error)
+{
+    std::optional<Setup> loaded = io::loadSetup(path, error);
+    if (!loaded) return false;
+    replace(*loaded, QFileInfo(path).absoluteFilePath(), QString());
+    return true;
+}
+
+bool Document::loadData(const QByteArray& json, const QString& title, QString* error)
+{
+    std::optional<Setup> loaded = io::parseSetup(json, title, error);
+    if (!loaded) return false;
+    replace(*loaded, QString(), title);
+    return true;
+}
+
+bool Document::save(const QString& path, QString* error)
+{
+    if (!io::saveSetup(setup_, path, error)) return false;
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    undoStack_->setClean();
+    if (absolute != filePath_) {
+        filePath_ = absolute;
+        emit filePathChanged(filePath_);
+    }
+    return true;
+}
+
+void Document::replace(const Setup& setup, const QString& path, const QString& title)
+{
+    undoStack_->clear();  // also makes the stack clean
+    ++mergeSession_;
+    filePath_ = path;
+    untitledTitle_ = title;
+    applySetup(setup);
+    emit filePathChanged(filePath_);
+    emit modifiedChanged(false);
+    emit documentReplaced();
+}
+
+bool Document::validate(const Setup& setup, QString* error) const
+{
+    // The file format's validator is the one authority on what a valid setup is (CONTRACT.md):
+    // an edit is accepted exactly when the setup could be saved and opened again.
+    return io::parseSetup(io::serializeSetup(setup), displayName(), error).has_value();
+}
+
+bool Document::edit(const QString& text, const Setup& after, MergeKey merge)
+{
+    QString error;
+    if (!validate(after, &error)) {
+        emit editRefused(error);
+        return false;
+    }
+    undoStack_->push(new SetupCommand(this, text, setup_, after, merge, mergeSession_));
+    return true;
+}
+
+void Document::endMerge() { ++mergeSession_; }
+
+bool Document::moveBall(int index, const Vec2& position)
+{
+    if (index < 0 || index >= static_cast<int>(setup_.balls.size())) return false;
+    Setup after = setup_;
+    Ball& ball = after.balls[static_cast<std::size_t>(index)];
+    ball.state.position = position;
+    return edit(tr("Move ball %1").arg(QString::fromStdString(ball.id)), after, {MergeKind::MoveBall, index});
+}
+
+bool Document::setBall(int index, const Ball& ball, const QString& text, int field)
+{
+    if (index < 0 || index >= static_cast<int>(setup_.balls.size())) return false;
+    Setup after = setup_;
+    const std::string oldId = after.balls[static_cast<std::size_t>(index)].id;
+    after.balls[static_cast<std::size_t>(index)] = ball;
+    if (after.shot && after.shot->ball == oldId) after.shot->ball = ball.id;  // a rename keeps the shot
+    return edit(text, after, {MergeKind::BallField, index * 16 + field});
+}
+
+int Document::addBall()
+{
+    const Table table = makeTable(setup_.table);
+    const std::optional<Vec2> spot =
+        freeSpot(setup_, table, Vec2(0.5 * table.length, 0.5 * table.width), table.ballRadius);
+    if (!spot) {
+        emit editRefused(tr("There is no free place on the table for another ball."));
+        return -1;
+    }
+    Setup after = setup_;
+    Ball ball;
+    ball.id = freeId(setup_);
+    ball.radius = table.ballRadius;
+    ball.mass = table.ballMass;
+    ball.state.position = *spot;
+    after.balls.push_back(ball);
+    if (!edit(tr("Add ball %1").arg(QString::fromStdString(ball.id)), after)) return -1;
+    return static_cast<int>(setup_.balls.size()) - 1;
+}
+
+bool Document::removeBall(int index)
+{
+    if (index < 0 || index >= static_cast<int>(setup_.balls.size())) return false;
+    Setup after = setup_;
+    const std::string id = after.balls[static_cast<std::size_t>(index)].id;
+    after.balls.erase(after.balls.begin() + index);
+    // The shot must name a ball: it moves to the first ball left, or goes when none is.
+    if (after.shot && after.shot->ball == id) {
+        if (after.balls.empty()) after.shot.reset();
+        else after.shot->ball = after.balls.front().id;
+    }
+    return edit(tr("Remove ball %1").arg(QString::fromStdString(id)), after);
+}
+
+int Document::duplicateBall(int index)
+{
+    if (index < 0 || index >= static_cast<int>(setup_.balls.size())) return -1;
+    const Table table = makeTable(setup_.table);
+    Ball copy = setup_.balls[static_cast<std::size_t>(index)];
+    const std::optional<Vec2> spot = freeSpot(setup_, table, copy.state.position, copy.radius);
+    if (!spot) {
+        emit editRefused(tr("There is no free place on the table for another ball."));
+        return -1;
+    }
+    const std::string original = copy.id;
+    copy.id = freeId(setup_);
+    copy.state.position = *spot;
+    Setup after = setup_;
+    after.balls.push_back(copy);
+    if (!edit(tr("Duplicate ball %1").arg(QString::fromStdString(original)), after)) return -1;
+    return static_cast<int>(setup_.balls.size()) - 1;
+}
+
+bool Document::applyRack(RackPreset preset)
+{
+    const std::vector<Ball> rack = rackBalls(preset, makeTable(setup_.table));
+    // One undo step made of the single-ball edits: clear the table, then place every ball.
+    Setup cleared = setup_;
+    cleared.balls.clear();
+    cleared.shot.reset();
+    Setup placed = cleared;
+    for (const Ball& b : rack) placed.balls.push_back(b);
+    placed.shot = setup_.shot.value_or(CueStrike{});
+    placed.shot->ball = rack.front().id;
+    QString error;
+    if (!validate(placed, &error)) {
+        emit editRefused(error);
+        return false;
+    }
+    undoStack_->beginMacro(tr("Rack: %1").arg(rackName(preset)));
+    edit(tr("Clear the table"), cleared);
+    Setup partial = cleared;
+    for (const Ball& b : rack) {
+        partial.balls.push_back(b);
+        edit(tr("Place ball %1").arg(QString::fromStdString(b.id)), partial);
+    }
+    edit(tr("Aim at the rack"), placed);
+    undoStack_->endMacro();
+    return true;
+}
+
+bool Document::setPhysics(const PhysicsParams& physics, const QString& text, int field)
+{
+    Setup after = setup_;
+    after.physics = physics;
+    return edit(text, after, {MergeKind::Physics, field});
+}
+
+bool Document::resetPhysics()
+{
+    Setup after = setup_;
+    after.physics = PhysicsParams{};
+    return edit(tr("Reset physics to defaults"), after);
+}
+
+bool Document::setShot(const std::optional<CueStrike>& shot, const QString& text, int field)
+{
+    Setup after = setup_;
+    after.shot = shot;
+    return edit(text, after, {MergeKind::Shot, field});
+}
+
+bool Document::setSimulationSettings(const SimulationSettings& settings, const QString& text, int field)
+{
+    Setup after = setup_;
+    after.simulation = settings;
+    return edit(text, after, {MergeKind::Simulation, field});
+}
+
+void Document::applySetup(const Setup& setup)
+{
+    setup_ = setup;
+    ++generation_;
+    emit setupChanged();
+    scheduleSimulation();
+}
+
+void Document::scheduleSimulation()
+{
+    // One run at a time: a setup that changes while a run is busy is simulated when it ends, and
+    // the busy run's result is dropped then (simulationFinished compares generations).
+    if (!running_) startSimulation();
+}
+
+void Document::startSimulation()
+{
+    if (!running_) {
+        running_ = true;
+        emit simulatingChanged(true);
+    }
+    watcher_->setFuture(QtConcurrent::run(runSimulation, setup_, generation_));
+}
+
+void Document::simulationFinished()
+{
+    const SimulationOutcome outcome = watcher_->result();
+    if (outcome.generation != generation_) {  // stale: the setup changed meanwhile
+        startSimulation();
+        return;
+    }
+    running_ = false;
+    emit simulatingChanged(false);
+    if (!outcome.error.isEmpty()) emit simulationFailed(outcome.error);
+    if (outcome.result) {
+        result_ = outcome.result;
+        resultGeneration_ = outcome.generation;
+        emit resultChanged();
+    }
+}
+
+void Document::waitForResult()
+{
+    while (running_) {
+        watcher_->waitForFinished();
+        QCoreApplication::processEvents();  // delivers finished(), which may start the next run
+    }
+}
+
+}  // namespace cuelab

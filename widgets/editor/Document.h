@@ -1,0 +1,110 @@
+#pragma once
+// The one place every edit passes through (STYLE.md, after KDE Step's world model): the document owns
+// the setup, its file, the undo stack and the current simulation result. Every edit is a
+// SetupCommand on the stack; every change of the setup re-simulates in the background, and a result
+// that arrives for an older setup is dropped. Results are derived data, never undone.
+
+#include "RackPresets.h"
+#include "SetupCommand.h"
+
+#include "Setup.h"
+#include "Simulation.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <optional>
+
+class QUndoStack;
+template <typename T> class QFutureWatcher;
+
+namespace cuelab {
+
+struct SimulationOutcome {
+    std::shared_ptr<const SimulationResult> result;  // null when the simulator threw
+    QString error;                                   // why it failed or was cut short
+    quint64 generation = 0;                          // which setup it belongs to
+};
+
+class Document : public QObject {
+    Q_OBJECT
+public:
+    explicit Document(QObject* parent = nullptr);
+    ~Document() override;
+
+    const Setup& setup() const { return setup_; }
+    QString filePath() const { return filePath_; }  // empty while untitled
+    QString displayName() const;                    // the file's name, or the untitled title
+    QUndoStack* undoStack() const { return undoStack_; }
+    bool isModified() const;
+
+    // The result of the newest simulation that finished; null before the first one. It may belong
+    // to an older setup while isSimulating() (the window keeps showing it until the new one lands).
+    std::shared_ptr<const SimulationResult> result() const { return result_; }
+    bool isSimulating() const { return running_; }
+    // True when result() belongs to the current setup.
+    bool isResultCurrent() const { return resultGeneration_ == generation_ && result_ != nullptr; }
+
+    // Files. A refused file leaves the document exactly as it was and returns false with the
+    // loader's message in *error.
+    void newDocument();
+    bool load(const QString& path, QString* error);
+    // Opens setup text as a new untitled document (bundled examples); `title` names it.
+    bool loadData(const QByteArray& json, const QString& title, QString* error);
+    bool save(const QString& path, QString* error);
+
+    // Edits. Each call is one undo step, except that consecutive edits with the same MergeKey merge
+    // until endMerge(). An edit whose setup the file format would refuse (a ball off the cloth, two
+    // balls overlapping, ...) is not applied: editRefused carries the validator's message.
+    bool edit(const QString& text, const Setup& after, MergeKey merge = {});
+    void endMerge();  // the next edit starts a new undo step (drag released, slider let go)
+
+    bool moveBall(int index, const Vec2& position);  // merges while dragging
+    bool setBall(int index, const Ball& ball, const QString& text, int field);
+    int addBall();                                   // a new ball on a free spot; its index or -1
+    bool removeBall(int index);
+    int duplicateBall(int index);                    // the copy's index or -1
+    bool applyRack(RackPreset preset);               // one macro: remove the balls, place the rack
+    bool setPhysics(const PhysicsParams& physics, const QString& text, int field);
+    bool resetPhysics();
+    bool setShot(const std::optional<CueStrike>& shot, const QString& text, int field);
+    bool setSimulationSettings(const SimulationSettings& settings, const QString& text, int field);
+
+    // Blocks (processing events) until the result belongs to the current setup. For tests and for
+    // callers that need the result right now; the window itself never waits.
+    void waitForResult();
+
+signals:
+    void setupChanged();
+    void resultChanged();
+    void simulatingChanged(bool running);
+    void simulationFailed(const QString& message);
+    void editRefused(const QString& message);
+    void filePathChanged(const QString& path);
+    void modifiedChanged(bool modified);
+    void documentReplaced();  // new, load: selection and time should start afresh
+
+private:
+    friend class SetupCommand;
+    void applySetup(const Setup& setup);  // called by commands only
+    void replace(const Setup& setup, const QString& path, const QString& title);
+    bool validate(const Setup& setup, QString* error) const;
+    void scheduleSimulation();
+    void startSimulation();
+    void simulationFinished();
+
+    Setup setup_;
+    QString filePath_;
+    QString untitledTitle_;
+    QUndoStack* undoStack_;
+    int mergeSession_ = 0;
+
+    std::shared_ptr<const SimulationResult> result_;
+    QFutureWatcher<SimulationOutcome>* watcher_;
+    quint64 generation_ = 0;        // bumped by every change of the setup
+    quint64 resultGeneration_ = 0;  // the generation result_ was computed for
+    bool running_ = false;
+};
+
+}  // namespace cuelab

@@ -1,0 +1,135 @@
+#include "InspectorPanel.h"
+
+#include "EventTableModel.h"
+#include "Quantities.h"
+
+#include "Motion.h"
+
+#include <QHeaderView>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace cuelab {
+
+namespace {
+// Linear momentum, kg m/s; a pocketed ball has left the table and carries none.
+Vec2 momentum(const BallState& state, double mass)
+{
+    if (state.motion == MotionState::Pocketed) return Vec2::Zero();
+    return mass * state.velocity;
+}
+}  // namespace
+
+InspectorPanel::InspectorPanel(QWidget* parent) : QWidget(parent), tree_(new QTreeWidget(this))
+{
+    tree_->setColumnCount(2);
+    tree_->setHeaderLabels({tr("Quantity"), tr("Value")});
+    tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    tree_->setRootIsDecorated(true);
+    tree_->setAlternatingRowColors(true);
+    tree_->setSelectionMode(QAbstractItemView::NoSelection);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(tree_);
+    showNothing();
+}
+
+QTreeWidgetItem* InspectorPanel::add(QTreeWidgetItem* parent, const QString& quantity, const QString& value,
+                                     const QString& toolTip)
+{
+    auto* item = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(tree_);
+    item->setText(0, quantity);
+    item->setText(1, value);
+    if (!toolTip.isEmpty()) item->setToolTip(0, toolTip);
+    return item;
+}
+
+QString InspectorPanel::value(const QString& quantity) const
+{
+    const QList<QTreeWidgetItem*> found = tree_->findItems(quantity, Qt::MatchExactly | Qt::MatchRecursive, 0);
+    return found.isEmpty() ? QString() : found.front()->text(1);
+}
+
+void InspectorPanel::showNothing()
+{
+    tree_->clear();
+    auto* hint = add(nullptr, tr("Select a ball or an event"), QString());
+    hint->setDisabled(true);
+}
+
+void InspectorPanel::addState(QTreeWidgetItem* parent, const BallState& s, double radius)
+{
+    add(parent, tr("State"), toQString(toString(s.motion)));
+    if (s.motion == MotionState::Pocketed) return;
+    add(parent, tr("Position"), formatVector(s.position, QStringLiteral("m"), 4));
+    add(parent, tr("Velocity"), formatVector(s.velocity, QStringLiteral("m/s"), 4));
+    add(parent, tr("Speed"), formatQuantity(s.velocity.norm(), QStringLiteral("m/s"), 4));
+    add(parent, tr("Spin"), formatVector(s.spin, QStringLiteral("rad/s"), 3), tr("Angular velocity (ωx, ωy, ωz); ωz > 0 is counter-clockwise seen from above"));
+    add(parent, tr("Slip"), formatVector(slipVelocity(s, radius), QStringLiteral("m/s"), 4),
+        tr("Velocity of the contact point with the cloth, v + R (z × ω); zero when rolling"));
+}
+
+void InspectorPanel::showBall(const SimulationResult& result, int index, double time)
+{
+    tree_->clear();
+    if (index < 0 || index >= static_cast<int>(result.balls.size())) return showNothing();
+    const Ball& ball = result.balls[static_cast<std::size_t>(index)];
+    const BallState s = result.stateAt(index, time);
+    auto* top = add(nullptr, tr("Ball %1").arg(QString::fromStdString(ball.id)), tr("at t = %1").arg(formatQuantity(time, QStringLiteral("s"), 4)));
+    addState(top, s, ball.radius);
+    if (s.motion == MotionState::Pocketed && s.pocket >= 0 && s.pocket < static_cast<int>(result.table.pockets.size()))
+        add(top, tr("Pocket"), QString::fromStdString(result.table.pockets[static_cast<std::size_t>(s.pocket)].id));
+    add(top, tr("Momentum"), formatVector(momentum(s, ball.mass), QStringLiteral("kg·m/s"), 4));
+    add(top, tr("Kinetic energy"), formatQuantity(kineticEnergy(s, ball.radius, ball.mass), QStringLiteral("J"), 5),
+        tr("Translation plus rotation, I = 2/5 m R²"));
+    add(top, tr("Radius"), formatQuantity(ball.radius * 1000.0, QStringLiteral("mm"), 3));
+    add(top, tr("Mass"), formatQuantity(ball.mass, QStringLiteral("kg"), 4));
+    tree_->expandAll();
+}
+
+void InspectorPanel::showEvent(const SimulationResult& result, int index)
+{
+    tree_->clear();
+    if (index < 0 || index >= static_cast<int>(result.events.size())) return showNothing();
+    const std::size_t i = static_cast<std::size_t>(index);
+    const Event& e = result.events[i];
+    auto* top = add(nullptr, tr("Event %1").arg(index + 1), toQString(toString(e.kind)));
+    add(top, tr("Agents"), EventTableModel::agents(result, e));
+    add(top, tr("Time of impact"), formatQuantity(e.time, QStringLiteral("s"), 9),
+        tr("Exact time of the event: a root of the polynomial that describes the contact"));
+    if (i > 0) add(top, tr("Since previous"), formatQuantity(e.time - result.events[i - 1].time, QStringLiteral("s"), 9));
+    if (isCollision(e.kind)) {
+        add(top, tr("Contact point"), formatVector(e.contactPoint, QStringLiteral("m"), 4));
+        add(top, tr("Contact normal"), formatVector(e.normal, QString(), 5), tr("Unit normal from the first ball towards the other body"));
+        add(top, tr("Relative speed"), formatQuantity(e.approachSpeed, QStringLiteral("m/s"), 4), tr("Normal approach speed just before contact"));
+        add(top, tr("Impulse"), formatVector(e.impulse, QStringLiteral("N·s"), 5), tr("Impulse on the first ball, table frame"));
+        add(top, tr("|Impulse|"), formatQuantity(e.impulse.norm(), QStringLiteral("N·s"), 5));
+    }
+
+    const int agents = e.kind == EventKind::BallBall ? 2 : 1;
+    Vec2 pBefore = Vec2::Zero(), pAfter = Vec2::Zero();
+    double keBefore = 0.0, keAfter = 0.0;
+    for (int k = 0; k < agents; ++k) {
+        const int b = e.balls[static_cast<std::size_t>(k)];
+        if (b < 0 || b >= static_cast<int>(result.balls.size())) continue;
+        const Ball& ball = result.balls[static_cast<std::size_t>(b)];
+        const BallState& before = e.before[static_cast<std::size_t>(k)];
+        const BallState& after = e.after[static_cast<std::size_t>(k)];
+        auto* node = add(nullptr, tr("Ball %1").arg(QString::fromStdString(ball.id)), QString());
+        addState(add(node, tr("Before"), QString()), before, ball.radius);
+        addState(add(node, tr("After"), QString()), after, ball.radius);
+        pBefore += momentum(before, ball.mass);
+        pAfter += momentum(after, ball.mass);
+        keBefore += kineticEnergy(before, ball.radius, ball.mass);
+        keAfter += kineticEnergy(after, ball.radius, ball.mass);
+    }
+    auto* totals = add(nullptr, agents == 2 ? tr("Both balls") : tr("Totals"), QString());
+    add(totals, tr("Momentum before"), formatVector(pBefore, QStringLiteral("kg·m/s"), 5));
+    add(totals, tr("Momentum after"), formatVector(pAfter, QStringLiteral("kg·m/s"), 5));
+    add(totals, tr("Kinetic energy before"), formatQuantity(keBefore, QStringLiteral("J"), 6), tr("Translation plus rotation, I = 2/5 m R²"));
+    add(totals, tr("Kinetic energy after"), formatQuantity(keAfter, QStringLiteral("J"), 6));
+    add(totals, tr("Energy change"), formatQuantity(keAfter - keBefore, QStringLiteral("J"), 6));
+    tree_->expandAll();
+}
+
+}  // namespace cuelab
