@@ -35,8 +35,12 @@ double circleContactTime(const Vec2& d0, const Vec2& d1, const Vec2& d2, double 
 {
     const double dist = d0.norm();
     if (dist - reach <= kContactTolerance) {
-        // Touching (or overlapping by rounding): a contact now if the gap is closing.
-        if (d0.dot(d1) < 0.0) return 0.0;
+        // Touching (or overlapping by rounding): a contact now if the gap is closing, or if it is
+        // not opening (normal speed below kRestingSpeed) while the accelerations press the bodies
+        // together: |d|^2 then falls from s = 0 on, a double root at 0 no root finder reports.
+        const double normalSpeed = d0.dot(d1) / dist;
+        if (normalSpeed < 0.0) return 0.0;
+        if (normalSpeed <= kRestingSpeed && d1.squaredNorm() + 2.0 * d0.dot(d2) < 0.0) return 0.0;
     }
     return firstFallingRoot(distanceQuartic(d0, d1, d2, reach), horizon);
 }
@@ -72,7 +76,10 @@ double cushionTime(const Path& p, double radius, const CushionSegment& seg, doub
         const double lambda = (p.at(s) - seg.a).dot(along);
         return lambda >= 0.0 && lambda <= along2;
     };
-    if (std::abs(g0) <= kContactTolerance && g1 < 0.0 && onSegment(0.0)) return 0.0;
+    // Touching: a contact now if the ball approaches, or rests against the nose (normal speed below
+    // kRestingSpeed) while its acceleration presses it in.
+    if (std::abs(g0) <= kContactTolerance && (g1 < 0.0 || (g1 <= kRestingSpeed && g2 < 0.0)) && onSegment(0.0))
+        return 0.0;
 
     // Roots of the quadratic, stably (no cancellation between -g1 and the square root).
     double roots[2];

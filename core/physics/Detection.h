@@ -17,6 +17,10 @@ namespace cuelab {
 // m: bodies closer than this (or overlapping by rounding) count as touching.
 inline constexpr double kContactTolerance = 1e-10;
 
+// m/s: a normal speed below this between touching bodies counts as resting contact (neither
+// approaching nor parting); the contact begins now if the accelerations press the bodies together.
+inline constexpr double kRestingSpeed = 1e-9;
+
 // m/s: the least normal speed at which two bodies leave a collision. Restitution models break down
 // for micro-impacts, and without a floor a ball that keeps pushing another (a sliding cue ball
 // following through into a frozen ball, a ball driven into a rail by its spin) turns a sustained

@@ -20,8 +20,14 @@ namespace cuelab {
 namespace {
 
 // What an event acts on besides its ball; the order of the enumerators is the tie order of
-// simultaneous events of one ball (Simulation.h).
-enum class Agent : std::uint8_t { Transition, Pocket, Ball, Cushion, Jaw };
+// simultaneous events of one ball (Simulation.h). Refresh is internal: the end of a ball's
+// prediction window, where it is re-predicted without any change to its motion (never logged).
+enum class Agent : std::uint8_t { Transition, Pocket, Refresh, Ball, Cushion, Jaw };
+
+// m: how far ahead a moving ball's pair predictions look. Predicting pairs only over the next
+// kLookahead of travel keeps the box of each ball small, so the boxes cull almost every pair even
+// on a large table with many balls; the price is one internal refresh per kLookahead travelled.
+constexpr double kLookahead = 1.0;
 
 // An event waiting to happen, ordered by (time, category, ball, agent kind, agent index):
 // category 0 = transitions and pockets, 1 = collisions.
@@ -131,6 +137,8 @@ public:
         end_.assign(n, kNever);
         box_.resize(n);
         own_.resize(n);
+        horizon_.assign(n, kNever);
+        window_.resize(n);
         pair_.assign(n * n, kNever);
         rowMin_.assign(n, kNever);
         rowPartner_.assign(n, -1);
@@ -167,7 +175,9 @@ private:
     std::vector<Path> path_;         // position over the segment, from start_
     std::vector<double> end_;        // s, absolute time of the transition that ends the segment
     std::vector<Box> box_;           // where the centre can be during the segment
-    std::vector<Candidate> own_;     // next transition, pocket, cushion or jaw event
+    std::vector<Candidate> own_;     // next transition, pocket, cushion or jaw event, or refresh
+    std::vector<double> horizon_;    // s, absolute end of the ball's prediction window
+    std::vector<Box> window_;        // where the centre can be from the last prediction to horizon_
     std::vector<double> pair_;       // n x n, next contact time of each pair (symmetric)
     std::vector<double> rowMin_;     // per ball, the earliest of its row of pair_
     std::vector<int> rowPartner_;    // and the partner (the smallest index among ties)
@@ -209,6 +219,8 @@ void Simulator::predictOwn(int i, double now)
     Candidate best;
     best.ball = i;
     const BallState& s = state_[at(i)];
+    window_[at(i)] = boxOf(pathNow(i, now), 0.0);
+    horizon_[at(i)] = end_[at(i)];
     if (s.motion == MotionState::Pocketed) {
         own_[at(i)] = best;
         return;
@@ -234,6 +246,13 @@ void Simulator::predictOwn(int i, double now)
         for (std::size_t k = 0; k < table_.jaws.size(); ++k)
             if (boxNearCircle(box, R + table_.jaws[k].radius, table_.jaws[k].centre))
                 consider(jawTime(p, R, table_.jaws[k], horizon), 1, Agent::Jaw, static_cast<int>(k));
+        // The pair window ends at the ball's own next event (it is re-predicted there anyway) or after
+        // kLookahead of travel, whichever comes first; |r(t) - r(now)| <= |v(now)| (t - now) while
+        // the ball decelerates.
+        const double lookahead = now + kLookahead / p.c1.norm();
+        if (lookahead < best.time) best = Candidate{lookahead, 0, i, Agent::Refresh, 0};
+        horizon_[at(i)] = best.time;
+        window_[at(i)] = boxOf(p, best.time - now);
     }
     own_[at(i)] = best;
 }
@@ -246,8 +265,9 @@ double Simulator::pairTime(int i, int j, double now) const
     const bool aMoves = a.motion == MotionState::Sliding || a.motion == MotionState::Rolling;
     const bool bMoves = b.motion == MotionState::Sliding || b.motion == MotionState::Rolling;
     if (!aMoves && !bMoves) return kNever;
-    if (!boxesMeet(box_[at(i)], radius(i), box_[at(j)], radius(j))) return kNever;
-    const double horizon = std::min(end_[at(i)], end_[at(j)]) - now;
+    if (!boxesMeet(window_[at(i)], radius(i), window_[at(j)], radius(j))) return kNever;
+    const double horizon = std::min(horizon_[at(i)], horizon_[at(j)]) - now;
+    if (horizon < 0.0) return kNever;  // j is refreshed at this very instant, and predicts the pair then
     const double s = ballBallTime(pathNow(i, now), radius(i), pathNow(j, now), radius(j), horizon);
     return s == kNever ? kNever : now + s;
 }
@@ -305,11 +325,17 @@ void Simulator::process(const Candidate& c)
 {
     const double t = c.time;
     const int i = c.ball;
+    if (c.agent == Agent::Refresh) {
+        predictOwn(i, t);
+        predictPairs(i, t);
+        return;
+    }
     Event e;
     e.time = t;
     e.balls[0] = i;
     e.before[0] = stateNow(i, t);
     switch (c.agent) {
+    case Agent::Refresh:  // handled above
     case Agent::Transition: {
         e.after[0] = applyTransition(state_[at(i)], radius(i), p_);
         e.kind = nextTransition(state_[at(i)], radius(i), p_).kind;
@@ -419,7 +445,7 @@ void Simulator::run(const std::optional<CueStrike>& shot)
             return;
         }
         process(c);
-        lastEvent = c.time;
+        if (c.agent != Agent::Refresh) lastEvent = c.time;
     }
     bool rest = true;
     for (int i = 0; i < n_; ++i) rest = rest && atRest(i);

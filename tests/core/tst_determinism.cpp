@@ -16,7 +16,7 @@ using namespace cuelab;
 
 namespace {
 
-constexpr std::uint64_t kBreakHash = 0xaf375f4081510567ULL;
+constexpr std::uint64_t kBreakHash = 0x2937c4242037c386ULL;
 
 // FNV-1a, 64 bit.
 class Hasher {
