@@ -11,6 +11,12 @@
 // Algorithm 1010, 2020). The walk runs from lo upwards and computes critical points only as far as
 // it has to, so the event-detection question "the first root after lo" costs only what precedes it.
 //
+// Close roots. Next to a close pair of roots |p| is tiny and plain evaluation returns rounding noise
+// there, which limits a root r to about eps sum |c_i| |r|^i / |p'(r)|. Where that would exceed 1e-13
+// relative, and at critical points whose value is within rounding, p is evaluated again with the
+// compensated Horner scheme (twice the precision): the roots of the given coefficients are then
+// resolved even for pairs 1e-12 apart.
+//
 // Tangential roots. A double root (a grazing contact) is a critical point where p vanishes; rounding
 // makes the computed value a tiny number of either sign. Where the sign shows no crossing but the
 // value is within the forward error bound of its evaluation (Higham, Accuracy and Stability of
@@ -56,6 +62,10 @@ constexpr double kCriticalPointTolerance = 1e-7;
 // e)^2: a margin on the error estimate, which is asymptotic, not a bound.
 constexpr double kErrorMargin = 16.0;
 
+// Roots whose attainable accuracy with plain evaluation is worse than this (relative) are refined
+// with compensated evaluation.
+constexpr double kConditionLimit = 1e-13;
+
 // Safeguarded Halley converges in a handful of steps. Bisection alone halves the bracket, which spans
 // at most 2^202 (the root bound below), down to adjacent doubles: some 1100 steps across every binade
 // to the smallest subnormal. The cap only guarantees termination on inputs that defeat both.
@@ -84,13 +94,17 @@ double estrin(const double* a, double x, double x2)
 template <int N>
 struct Expansion {
     double c[N + 1];
+    double absC[N + 1];  // |c_i|, for magnitude()
     double d1[N];
     double d2[N - 1];
     double d3[N - 2];
 
     explicit Expansion(const double* coefficients)
     {
-        for (int i = 0; i <= N; ++i) c[i] = coefficients[i];
+        for (int i = 0; i <= N; ++i) {
+            c[i] = coefficients[i];
+            absC[i] = std::abs(c[i]);
+        }
         for (int i = 0; i < N; ++i) d1[i] = c[i] * (N - i);
         for (int i = 0; i < N - 1; ++i) d2[i] = c[i] * ((N - i) * (N - i - 1) / 2);
         for (int i = 0; i < N - 2; ++i) d3[i] = c[i] * ((N - i) * (N - i - 1) * (N - i - 2) / 6);
@@ -98,14 +112,40 @@ struct Expansion {
 
     double value(double x) const { return estrin<N>(c, x, x * x); }
 
+    // sum |c_i| |x|^i: the rounding error of value(x) is at most a few eps times this.
+    double magnitude(double x) const { return estrin<N>(absC, std::abs(x), x * x); }
+
     // Whether a computed value f = p(x) is indistinguishable from zero: within the rounding error of
     // its evaluation, bounded by kZeroTolerance sum |c_i| |x|^i.
-    bool negligible(double f, double x) const
+    bool negligible(double f, double x) const { return std::abs(f) <= kZeroTolerance * magnitude(x); }
+
+    // p(x) as accurately as if computed in twice the working precision and then rounded: the
+    // compensated Horner scheme of Graillat, Langlois & Louvet ("Compensated Horner Scheme", 2005),
+    // which carries the exact rounding errors of every product and sum (Dekker's TwoProduct with
+    // Veltkamp's splitting, Knuth's TwoSum) through a second Horner recurrence. Its error is about
+    // eps |p(x)| + eps^2 sum |c_i| |x|^i, so it resolves the sign of p next to close roots, where
+    // value() returns rounding noise. Six times the work of value(); used only there.
+    double valueCompensated(double x) const
     {
-        const double ax = std::abs(x);
-        double bound = std::abs(c[0]);
-        for (int i = 1; i <= N; ++i) bound = bound * ax + std::abs(c[i]);
-        return std::abs(f) <= kZeroTolerance * bound;
+        constexpr double kSplitter = 134217729.0;  // 2^27 + 1
+        const double xSplit = kSplitter * x;
+        const double xHigh = xSplit - (xSplit - x);
+        const double xLow = x - xHigh;
+        double s = c[0];
+        double correction = 0.0;
+        for (int i = 1; i <= N; ++i) {
+            const double product = s * x;
+            const double sSplit = kSplitter * s;
+            const double sHigh = sSplit - (sSplit - s);
+            const double sLow = s - sHigh;
+            const double productError = sLow * xLow - (((product - sHigh * xHigh) - sLow * xHigh) - sHigh * xLow);
+            const double sum = product + c[i];
+            const double z = sum - product;
+            const double sumError = (product - (sum - z)) + (c[i] - z);
+            s = sum;
+            correction = correction * x + (productError + sumError);
+        }
+        return s + correction;
     }
 };
 
@@ -136,19 +176,24 @@ double startingPoint(const Expansion<N>& p, double a, double fa, bool aCritical,
 // safeguard of Press et al., Numerical Recipes, 3rd ed., 9.4). It stops when the error left after the
 // step just taken, estimated by Halley's error recursion e' = (A^2 - B) e^3 with A = p'' / (2 p') and
 // B = p''' / (6 p') (Traub, Iterative Methods for the Solution of Equations, 1964, 8.3), is below the
-// tolerance; that saves a last, merely confirming, evaluation.
-template <int N>
+// tolerance; that saves a last, merely confirming, evaluation. Compensated: p itself is evaluated by
+// valueCompensated(), for roots whose accuracy value()'s rounding would limit.
+template <int N, bool Compensated = false>
 double rootInBracket(const Expansion<N>& p, double a, double fa, double b, double x, double tolerance,
-                     double& error)
+                     double& error, bool& illConditioned)
 {
     const bool rising = fa < 0.0;
     double stepBefore = b - a;
     error = stepBefore;
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         const double x2 = x * x;
-        const double f = estrin<N>(p.c, x, x2);
+        const double f = Compensated ? p.valueCompensated(x) : estrin<N>(p.c, x, x2);
         const double d1 = estrin<N - 1>(p.d1, x, x2);
         const double d2 = estrin<N - 2>(p.d2, x, x2);
+        // Off the critical path of the iteration: whether rounding in value() limits the root to
+        // worse than kConditionLimit relative accuracy. That error is about eps sum |c_i| |x|^i /
+        // |p'(x)| (the root's condition number), large next to a close pair of roots.
+        illConditioned = kEpsilon * estrin<N>(p.absC, std::abs(x), x2) > kConditionLimit * std::abs(x * d1);
         if (f == 0.0) {
             error = 0.0;
             return x;
@@ -217,6 +262,10 @@ public:
                 b = hi_;
                 bError = 0.0;
                 fb = p_.value(b);
+            } else if (p_.negligible(fb, b)) {
+                // The sign of p at a critical point tells a close pair of roots from none; only the
+                // compensated value resolves it when the plain one is rounding noise.
+                fb = p_.valueCompensated(b);
             }
             const double a = a_;
             const double fa = fa_;
@@ -226,19 +275,26 @@ public:
             fa_ = fb;
             aCritical_ = bCritical;
             aIsLo_ = false;
-            // A crossing from a value at lo that is zero within rounding is a root at lo, excluded.
-            if (((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) && !(aIsLo && p_.negligible(fa, a))) {
+            // A value at lo that is zero within rounding is a root at lo, excluded.
+            const auto aIsRoot = [&] { return fa == 0.0 || (aIsLo && p_.negligible(fa, a)); };
+            if (((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) && !aIsRoot()) {
                 bracketA_ = a;
                 bracketFa_ = fa;
                 bracketB_ = b;
                 const double start = startingPoint<N>(p_, a, fa, aCritical, b, fb, bCritical);
-                root = rootInBracket<N>(p_, a, fa, b, start, tolerance_, error);
+                bool illConditioned = false;
+                root = rootInBracket<N>(p_, a, fa, b, start, tolerance_, error, illConditioned);
+                if (tolerance_ == kRootTolerance && illConditioned)
+                    root = rootInBracket<N, true>(p_, a, fa, b, root, kRootTolerance, error, illConditioned);
                 return true;
             }
             // No sign change: p at b is either clear of zero or a (tangential) root within rounding.
             // Only here is a tiny value snapped to zero; a tiny value of the crossing sign was taken
-            // at its word above, so that a resolvable pair of close roots yields both.
-            if (fb == 0.0 || p_.negligible(fb, b)) {
+            // at its word above, so that a resolvable pair of close roots yields both. A root at a
+            // already stands for p on the monotone piece up to b, which stays within rounding of
+            // zero: b is no further root (a double root is reported once, also when a search starts
+            // from it, and the search from the first of a close pair goes on to the second).
+            if ((fb == 0.0 || p_.negligible(fb, b)) && !aIsRoot()) {
                 fa_ = 0.0;
                 bracketA_ = bracketB_ = b;  // a root at a critical point is as accurate as that
                 root = b;
@@ -252,8 +308,9 @@ public:
     // Refines the root last returned by next() to full accuracy.
     void refine(double& root, double& error)
     {
+        bool illConditioned = false;
         if (bracketA_ < bracketB_)
-            root = rootInBracket<N>(p_, bracketA_, bracketFa_, bracketB_, root, kRootTolerance, error);
+            root = rootInBracket<N>(p_, bracketA_, bracketFa_, bracketB_, root, kRootTolerance, error, illConditioned);
     }
 
 private:
