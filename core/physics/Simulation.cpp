@@ -5,9 +5,11 @@
 #include "Simulation.h"
 
 #include "BallBallCollision.h"
+#include "BroadPhase.h"
 #include "CueImpact.h"
 #include "CushionCollision.h"
 #include "Detection.h"
+#include "EventQueue.h"
 #include "Motion.h"
 
 #include <algorithm>
@@ -19,88 +21,14 @@ namespace cuelab {
 
 namespace {
 
-// What an event acts on besides its ball; the order of the enumerators is the tie order of
-// simultaneous events of one ball (Simulation.h). Refresh is internal: the end of a ball's
-// prediction window, where it is re-predicted without any change to its motion (never logged).
-enum class Agent : std::uint8_t { Transition, Pocket, Refresh, Ball, Cushion, Jaw };
-
 // m: how far ahead a moving ball's pair predictions look. Predicting pairs only over the next
-// kLookahead of travel keeps the box of each ball small, so the boxes cull almost every pair even
-// on a large table with many balls; the price is one internal refresh per kLookahead travelled.
+// kLookahead of travel keeps the box of each ball small, so the grid and the boxes cull almost
+// every pair even on a large table with many balls; the price is one internal refresh per
+// kLookahead travelled.
 constexpr double kLookahead = 1.0;
 
-// An event waiting to happen, ordered by (time, category, ball, agent kind, agent index):
-// category 0 = transitions and pockets, 1 = collisions.
-struct Candidate {
-    double time = kNever;  // s, absolute
-    int category = 0;
-    int ball = -1;
-    Agent agent = Agent::Transition;
-    int index = -1;  // the other ball, the cushion, the jaw or the pocket
-};
-
-bool earlier(const Candidate& x, const Candidate& y)
-{
-    if (x.time != y.time) return x.time < y.time;
-    if (x.category != y.category) return x.category < y.category;
-    if (x.ball != y.ball) return x.ball < y.ball;
-    if (x.agent != y.agent) return x.agent < y.agent;
-    return x.index < y.index;
-}
-
-// Axis-aligned box that holds a ball's centre over its whole motion segment (for culling).
-struct Box {
-    Vec2 lo = Vec2::Zero();
-    Vec2 hi = Vec2::Zero();
-};
-
-Box boxOf(const Path& path, double duration)
-{
-    Box b;
-    b.lo = b.hi = path.c0;
-    if (path.c1.isZero(0.0) && path.c2.isZero(0.0)) return b;
-    if (duration == kNever) {
-        constexpr double inf = std::numeric_limits<double>::infinity();
-        b.lo = Vec2(-inf, -inf);
-        b.hi = Vec2(inf, inf);
-        return b;
-    }
-    const Vec2 end = path.at(duration);
-    b.lo = b.lo.cwiseMin(end);
-    b.hi = b.hi.cwiseMax(end);
-    for (int k = 0; k < 2; ++k) {
-        // Extreme of c0 + c1 t + c2 t^2 at t = -c1 / (2 c2).
-        if (path.c2[k] == 0.0) continue;
-        const double t = -path.c1[k] / (2.0 * path.c2[k]);
-        if (t > 0.0 && t < duration) {
-            const double v = path.c0[k] + t * (path.c1[k] + t * path.c2[k]);
-            b.lo[k] = std::min(b.lo[k], v);
-            b.hi[k] = std::max(b.hi[k], v);
-        }
-    }
-    return b;
-}
-
-bool boxesMeet(const Box& a, double ra, const Box& b, double rb)
-{
-    const double reach = ra + rb + 1e-9;
-    return a.lo.x() - reach <= b.hi.x() && b.lo.x() - reach <= a.hi.x() && a.lo.y() - reach <= b.hi.y()
-           && b.lo.y() - reach <= a.hi.y();
-}
-
-bool boxNearCircle(const Box& a, double reach, const Vec2& c)
-{
-    const double dx = std::max({a.lo.x() - c.x(), 0.0, c.x() - a.hi.x()});
-    const double dy = std::max({a.lo.y() - c.y(), 0.0, c.y() - a.hi.y()});
-    return dx * dx + dy * dy <= (reach + 1e-9) * (reach + 1e-9);
-}
-
-bool boxNearSegment(const Box& a, double reach, const CushionSegment& s)
-{
-    const Vec2 lo = s.a.cwiseMin(s.b), hi = s.a.cwiseMax(s.b);
-    const double r = reach + 1e-9;
-    return a.lo.x() - r <= hi.x() && lo.x() - r <= a.hi.x() && a.lo.y() - r <= hi.y() && lo.y() - r <= a.hi.y();
-}
+// m: side of the broad-phase grid's cells, about half the longest window of a moving ball.
+constexpr double kCellSize = 0.5;
 
 // Keeps the separation speed of a ball-ball collision at least kMinSeparationSpeed (Detection.h) by
 // an extra normal impulse shared as the masses dictate (momentum is kept).
@@ -140,8 +68,14 @@ public:
         horizon_.assign(n, kNever);
         window_.resize(n);
         pair_.assign(n * n, kNever);
+        partners_.assign(n, {});
         rowMin_.assign(n, kNever);
         rowPartner_.assign(n, -1);
+        queue_.reset(n_);
+        double margin = 0.0;  // pockets and jaws lie beyond the cushion noses
+        for (const Pocket& k : table_.pockets) margin = std::max(margin, k.radius);
+        margin += 0.1;
+        grid_.reset(Vec2(-margin, -margin), Vec2(table_.length + margin, table_.width + margin), kCellSize, n_);
         r_.timelines.assign(n, {});
     }
 
@@ -151,14 +85,16 @@ private:
     double radius(int i) const { return r_.balls[static_cast<std::size_t>(i)].radius; }
     double mass(int i) const { return r_.balls[static_cast<std::size_t>(i)].mass; }
     std::size_t at(int i) const { return static_cast<std::size_t>(i); }
+    double& pair(int i, int j) { return pair_[at(i) * at(n_) + at(j)]; }
 
     BallState stateNow(int i, double t) const { return evolve(state_[at(i)], radius(i), p_, t - start_[at(i)]); }
     Path pathNow(int i, double t) const;
     void beginSegment(int i, double t, const BallState& s);
     void predictOwn(int i, double now);
     void predictPairs(int i, double now);
+    void rescanRow(int j);
+    void updateQueue(int i);
     double pairTime(int i, int j, double now) const;
-    Candidate next() const;
     void process(const Candidate& c);
     bool atRest(int i) const;
 
@@ -178,9 +114,12 @@ private:
     std::vector<Candidate> own_;     // next transition, pocket, cushion or jaw event, or refresh
     std::vector<double> horizon_;    // s, absolute end of the ball's prediction window
     std::vector<Box> window_;        // where the centre can be from the last prediction to horizon_
-    std::vector<double> pair_;       // n x n, next contact time of each pair (symmetric)
+    std::vector<double> pair_;       // n x n, next contact time of each pair (symmetric), kNever if none
+    std::vector<std::vector<int>> partners_;  // per ball, the balls it may have a finite pair_ with
     std::vector<double> rowMin_;     // per ball, the earliest of its row of pair_
     std::vector<int> rowPartner_;    // and the partner (the smallest index among ties)
+    BoxGrid grid_;
+    EventQueue queue_;
 };
 
 Path Simulator::pathNow(int i, double t) const
@@ -219,16 +158,17 @@ void Simulator::predictOwn(int i, double now)
     Candidate best;
     best.ball = i;
     const BallState& s = state_[at(i)];
-    window_[at(i)] = boxOf(pathNow(i, now), 0.0);
+    const Path p = pathNow(i, now);
+    window_[at(i)] = boxOf(p, 0.0);
     horizon_[at(i)] = end_[at(i)];
     if (s.motion == MotionState::Pocketed) {
         own_[at(i)] = best;
+        grid_.remove(i);
         return;
     }
     if (end_[at(i)] != kNever) best = Candidate{end_[at(i)], 0, i, Agent::Transition, 0};
     const bool moving = s.motion == MotionState::Sliding || s.motion == MotionState::Rolling;
     if (moving) {
-        const Path p = pathNow(i, now);
         const double horizon = end_[at(i)] - now;
         const double R = radius(i);
         const Box& box = box_[at(i)];
@@ -255,6 +195,10 @@ void Simulator::predictOwn(int i, double now)
         window_[at(i)] = boxOf(p, best.time - now);
     }
     own_[at(i)] = best;
+    Box grown = window_[at(i)];
+    grown.lo.array() -= radius(i);
+    grown.hi.array() += radius(i);
+    grid_.place(i, grown);
 }
 
 double Simulator::pairTime(int i, int j, double now) const
@@ -272,53 +216,80 @@ double Simulator::pairTime(int i, int j, double now) const
     return s == kNever ? kNever : now + s;
 }
 
+void Simulator::updateQueue(int i)
+{
+    Candidate best = own_[at(i)];
+    const int j = rowPartner_[at(i)];
+    if (j >= 0 && rowMin_[at(i)] != kNever) {
+        const Candidate c{rowMin_[at(i)], 1, std::min(i, j), Agent::Ball, std::max(i, j)};
+        if (earlier(c, best)) best = c;
+    }
+    queue_.set(i, best);
+}
+
+void Simulator::rescanRow(int j)
+{
+    // Recomputes j's earliest partner from its partner list, dropping the entries that are stale.
+    std::vector<int>& list = partners_[at(j)];
+    double m = kNever;
+    int q = -1;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const int other = list[k];
+        const double t = pair(j, other);
+        if (t == kNever) continue;
+        bool duplicate = false;
+        for (std::size_t d = 0; d < kept && !duplicate; ++d) duplicate = list[d] == other;
+        if (duplicate) continue;
+        list[kept++] = other;
+        if (t < m || (t == m && other < q)) {
+            m = t;
+            q = other;
+        }
+    }
+    list.resize(kept);
+    rowMin_[at(j)] = m;
+    rowPartner_[at(j)] = q;
+    updateQueue(j);
+}
+
 void Simulator::predictPairs(int i, double now)
 {
+    // Forget i's old pair predictions; the partners whose earliest pair was with i look again.
+    std::vector<int>& mine = partners_[at(i)];
+    for (int j : mine) {
+        if (pair(i, j) == kNever) continue;
+        pair(i, j) = pair(j, i) = kNever;
+        if (rowPartner_[at(j)] == i) rescanRow(j);
+    }
+    mine.clear();
+
     double best = kNever;
     int partner = -1;
-    for (int j = 0; j < n_; ++j) {
-        if (j == i) continue;
-        const double t = pairTime(i, j, now);
-        const std::size_t ij = at(i) * at(n_) + at(j), ji = at(j) * at(n_) + at(i);
-        pair_[ij] = pair_[ji] = t;
-        if (t < best) {
-            best = t;
-            partner = j;
-        }
-        // Keep j's row minimum: i may now be its earliest partner, or may have been and no longer be.
-        if (t < rowMin_[at(j)] || (t == rowMin_[at(j)] && t != kNever && i < rowPartner_[at(j)])) {
-            rowMin_[at(j)] = t;
-            rowPartner_[at(j)] = i;
-        } else if (rowPartner_[at(j)] == i && t != rowMin_[at(j)]) {
-            double m = kNever;
-            int q = -1;
-            for (int k = 0; k < n_; ++k) {
-                const double tk = pair_[at(j) * at(n_) + at(k)];
-                if (k != j && tk < m) {
-                    m = tk;
-                    q = k;
-                }
+    if (state_[at(i)].motion != MotionState::Pocketed) {
+        Box grown = window_[at(i)];
+        grown.lo.array() -= radius(i);
+        grown.hi.array() += radius(i);
+        grid_.forEachNear(i, grown, [&](int j) {
+            const double t = pairTime(i, j, now);
+            if (t == kNever) return;
+            pair(i, j) = pair(j, i) = t;
+            mine.push_back(j);
+            partners_[at(j)].push_back(i);
+            if (t < best || (t == best && j < partner)) {
+                best = t;
+                partner = j;
             }
-            rowMin_[at(j)] = m;
-            rowPartner_[at(j)] = q;
-        }
+            if (t < rowMin_[at(j)] || (t == rowMin_[at(j)] && i < rowPartner_[at(j)])) {
+                rowMin_[at(j)] = t;
+                rowPartner_[at(j)] = i;
+                updateQueue(j);
+            }
+        });
     }
     rowMin_[at(i)] = best;
     rowPartner_[at(i)] = partner;
-}
-
-Candidate Simulator::next() const
-{
-    Candidate best;
-    for (int i = 0; i < n_; ++i) {
-        if (earlier(own_[at(i)], best)) best = own_[at(i)];
-        const int j = rowPartner_[at(i)];
-        if (j >= 0 && rowMin_[at(i)] != kNever) {
-            const Candidate c{rowMin_[at(i)], 1, std::min(i, j), Agent::Ball, std::max(i, j)};
-            if (earlier(c, best)) best = c;
-        }
-    }
-    return best;
+    updateQueue(i);
 }
 
 void Simulator::process(const Candidate& c)
@@ -398,12 +369,10 @@ void Simulator::process(const Candidate& c)
     for (int k = 0; k < 2; ++k)
         if (e.balls[static_cast<std::size_t>(k)] >= 0)
             beginSegment(e.balls[static_cast<std::size_t>(k)], t, e.after[static_cast<std::size_t>(k)]);
-    for (int k = 0; k < 2; ++k) {
-        const int b = e.balls[static_cast<std::size_t>(k)];
-        if (b < 0) continue;
-        predictOwn(b, t);
-        predictPairs(b, t);
-    }
+    for (int k = 0; k < 2; ++k)
+        if (e.balls[static_cast<std::size_t>(k)] >= 0) predictOwn(e.balls[static_cast<std::size_t>(k)], t);
+    for (int k = 0; k < 2; ++k)
+        if (e.balls[static_cast<std::size_t>(k)] >= 0) predictPairs(e.balls[static_cast<std::size_t>(k)], t);
 }
 
 void Simulator::run(const std::optional<CueStrike>& shot)
@@ -433,7 +402,7 @@ void Simulator::run(const std::optional<CueStrike>& shot)
 
     double lastEvent = 0.0;
     for (;;) {
-        const Candidate c = next();
+        const Candidate c = queue_.top();
         if (c.time == kNever || c.time > limit_) break;
         if (static_cast<long long>(r_.events.size()) >= maxEvents_) {
             r_.status = SimulationStatus::EventLimit;
