@@ -404,8 +404,9 @@ struct Normalised {
 Normalised normalise(const Quartic& input)
 {
     Normalised n;
-    const double total = std::abs(input[0]) + std::abs(input[1]) + std::abs(input[2]) +
-                         std::abs(input[3]) + std::abs(input[4]);
+    // An eighth of sum |c_i|: cannot overflow for finite coefficients, is infinite or NaN otherwise.
+    double total = 0.0;
+    for (double v : input) total += 0.125 * std::abs(v);
     if (!(total > 0.0 && total <= std::numeric_limits<double>::max())) return n;  // 0, inf or NaN
 
     int first = 0;

@@ -305,6 +305,10 @@ void TestQuartic::degenerateLeadingCoefficient_data()
     QTest::newRow("constant") << Quartic{0, 0, 0, 0, 5} << QList<double>{} << false;
     QTest::newRow("zero-polynomial") << Quartic{0, 0, 0, 0, 0} << QList<double>{} << false;
     QTest::newRow("negligible-leading-2^-210") << Quartic{std::ldexp(1.0, -210), 0, 1, -3, 2} << QList<double>{1, 2} << false;
+    const double big = std::numeric_limits<double>::max();
+    QTest::newRow("near-overflow-coefficients") << Quartic{big, -big, -big, big, -0.5 * big} << QList<double>{-1.1, 1.4} << true;
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    QTest::newRow("subnormal-coefficients") << Quartic{tiny, -10 * tiny, 0, 0, 0} << QList<double>{0, 10} << false;
 }
 
 void TestQuartic::degenerateLeadingCoefficient()
