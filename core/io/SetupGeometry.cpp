@@ -94,9 +94,8 @@ QString describeLength(double metres)
     return QString::number(metres * 1e9, 'f', 1) + QStringLiteral(" nm");
 }
 
-std::optional<SetupProblem> checkGeometry(const Setup& setup)
+std::optional<SetupProblem> checkGeometry(const Setup& setup, const Table& table)
 {
-    const Table table = makeTable(setup.table);
     if (auto problem = checkRails(table)) return problem;
     for (std::size_t i = 0; i < setup.balls.size(); ++i) {
         const Ball& ball = setup.balls[i];

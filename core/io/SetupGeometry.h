@@ -14,7 +14,8 @@ namespace cuelab::io {
 inline constexpr double kOverlapTolerance = 1e-9;  // m (CONTRACT.md)
 
 // The first problem found, in the order of the balls; nullopt when the setup can be simulated.
-std::optional<SetupProblem> checkGeometry(const Setup& setup);
+// `table` is makeTable(setup.table), which the caller has at hand already.
+std::optional<SetupProblem> checkGeometry(const Setup& setup, const Table& table);
 
 // A length for a message, in the unit that keeps it readable: "2.1 mm", "35 µm", "4.2 nm".
 QString describeLength(double metres);

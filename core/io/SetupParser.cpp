@@ -323,7 +323,7 @@ Setup parseDocument(const QJsonValue& document)
     setup.balls = parseBalls(in.required("balls"), table);
     if (in.has("shot")) setup.shot = parseShot(in.value("shot"), setup.balls);
     if (in.has("simulation")) setup.simulation = parseSimulation(in.value("simulation"));
-    if (auto problem = checkGeometry(setup)) throw Refusal{*problem};
+    if (auto problem = checkGeometry(setup, table)) throw Refusal{*problem};
     return setup;
 }
 
