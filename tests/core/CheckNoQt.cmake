@@ -1,11 +1,12 @@
-# Fails when any file under DIR includes a Qt header (<Q...>, <Qt...>) or names a Qt module.
+# Fails when any file under DIR includes a Qt header: <QString>, <QtCore/qglobal.h>, "QObject", ...
+# (Q followed by a capital letter, or a Qt module folder). "Quartic.h" is not a Qt header.
 file(GLOB_RECURSE files ${DIR}/*.h ${DIR}/*.hpp ${DIR}/*.cpp)
 if(NOT files)
   message(FATAL_ERROR "no sources found under ${DIR}")
 endif()
 set(offenders "")
 foreach(f ${files})
-  file(STRINGS ${f} lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](Q[A-Za-z]+|Qt[A-Za-z]+/)")
+  file(STRINGS ${f} lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](Q[A-Z][A-Za-z]*|Qt[A-Za-z]*/[^>\"]*|Qt[A-Za-z]*)[>\"]")
   if(lines)
     list(APPEND offenders "${f}: ${lines}")
   endif()
