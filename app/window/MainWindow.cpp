@@ -21,6 +21,8 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
+#include <QScreen>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -119,8 +121,13 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(balls_, &BallsPanel::ballSelected, this, &MainWindow::selectBall);
     connect(events_, &EventsPanel::eventSelected, this, &MainWindow::selectEvent);
+    // Stepping from event to event selects the event it lands on (the list and the inspector follow).
+    for (QAction* step : {transport_->previousEventAction(), transport_->nextEventAction()})
+        connect(step, &QAction::triggered, this, &MainWindow::selectEventAtCurrentTime);
 
-    resize(1440, 900);
+    // The first run fills most of the screen; later runs restore what the user left (readSettings).
+    const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
+    resize(std::min(1600, screen.width() * 9 / 10), std::min(1000, screen.height() * 9 / 10));
     readSettings();
     updateTitle();
     busy_->setVisible(document_->isSimulating());
@@ -161,8 +168,9 @@ void MainWindow::createDocks()
     tabifyDockWidget(shotDock, physicsDock);
     shotDock->raise();
     splitDockWidget(eventsDock, inspectorDock, Qt::Vertical);
-    resizeDocks({ballsDock, eventsDock}, {340, 420}, Qt::Horizontal);
-    resizeDocks({ballsDock, shotDock}, {300, 480}, Qt::Vertical);
+    resizeDocks({ballsDock, eventsDock}, {400, 470}, Qt::Horizontal);
+    resizeDocks({ballsDock, shotDock}, {260, 520}, Qt::Vertical);
+    resizeDocks({eventsDock, inspectorDock}, {340, 460}, Qt::Vertical);
 }
 
 void MainWindow::createMenus()
@@ -529,6 +537,17 @@ void MainWindow::selectEvent(int index)
         inspectorSubject_ = InspectorSubject::None;
     }
     refreshInspector();
+}
+
+void MainWindow::selectEventAtCurrentTime()
+{
+    const auto result = document_->result();
+    if (!result) return;
+    const double t = playback_->time();
+    for (std::size_t i = 0; i < result->events.size(); ++i) {
+        if (result->events[i].time == t) return selectEvent(static_cast<int>(i));  // the first of a tie
+    }
+    selectEvent(-1);  // stepped to the start or the end
 }
 
 void MainWindow::refreshInspector()

@@ -79,6 +79,7 @@ private:
     void onTimeChanged(double seconds);
     void selectBall(int index);
     void selectEvent(int index);
+    void selectEventAtCurrentTime();
     void refreshInspector();
 
     Document* document_;

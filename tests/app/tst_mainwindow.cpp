@@ -238,6 +238,10 @@ void TestMainWindow::keyboardStepping()
     if (expected == QLatin1String("end")) want = result->endTime;
     QVERIFY2(std::abs(w.playback()->time() - want) < kTimeTolerance, qPrintable(QString::number(w.playback()->time(), 'g', 17)));
     QVERIFY(w.transportBar()->timeLabel()->text().contains(QString::number(want, 'f', 6)));
+    if (expected == QLatin1String("event2")) {  // landing on an event selects it
+        QCOMPARE(w.eventsPanel()->selectedEvent(), 1);
+        QCOMPARE(w.tableView()->highlightedEvent(), 1);
+    }
 
     // Then back where we started with Home, and Space plays.
     QTest::keyClick(w.tableView(), Qt::Key_Home);

@@ -111,7 +111,12 @@ BallsPanel::BallsPanel(Document* document, QWidget* parent) : QWidget(parent), d
         setSelectedBall(index);
         emit ballSelected(index);
     });
-    connect(table_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) { commitItem(item->row(), item->column()); });
+    // The edit runs after the item delegate has closed its editor: the rebuild it causes must not
+    // pull the table out from under an editor that is still committing.
+    connect(table_, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
+        const int row = item->row(), column = item->column();
+        QMetaObject::invokeMethod(this, [this, row, column] { commitItem(row, column); }, Qt::QueuedConnection);
+    });
     connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
         updateActions();
         if (!refreshing_) emit ballSelected(selectedBall());

@@ -11,6 +11,7 @@ namespace cuelab {
 TipOffsetWidget::TipOffsetWidget(QWidget* parent) : QWidget(parent)
 {
     setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+    setMaximumSize(180, 180);
     setCursor(Qt::CrossCursor);
     setToolTip(tr("Cue tip offset on the ball's face, as the player sees it. Click or drag to place "
                   "the tip; the dashed circle is the miscue limit (half the radius)."));

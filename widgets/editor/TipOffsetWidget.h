@@ -22,7 +22,7 @@ public:
     static constexpr double kMiscueLimit = 0.5;
     static constexpr double kMaxOffset = 0.7;
 
-    QSize sizeHint() const override { return {140, 140}; }
+    QSize sizeHint() const override { return {130, 130}; }
     QSize minimumSizeHint() const override { return {90, 90}; }
     bool hasHeightForWidth() const override { return true; }
     int heightForWidth(int w) const override { return w; }

@@ -21,6 +21,8 @@ public:
 
     QList<QAction*> transportActions() const;  // in menu order
     QAction* playAction() const { return play_; }
+    QAction* previousEventAction() const { return previousEvent_; }
+    QAction* nextEventAction() const { return nextEvent_; }
     TimelineSlider* slider() const { return slider_; }
     QComboBox* speedBox() const { return speed_; }
     QLabel* timeLabel() const { return timeLabel_; }

@@ -1,0 +1,224 @@
+// The editor's panels on their own, driven with the mouse and the keyboard: every edit they make is
+// one undo step on the document, and they show the document as it is after undo.
+
+#include "editor/BallsPanel.h"
+#include "editor/Document.h"
+#include "editor/EventTableModel.h"
+#include "editor/PhysicsPanel.h"
+#include "editor/ShotPanel.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QSlider>
+#include <QStyle>
+#include <QStyleOptionSlider>
+#include <QTableWidget>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace cuelab;
+
+namespace {
+
+template <typename T>
+T* childWithToolTip(QWidget* parent, const QString& start)
+{
+    for (T* w : parent->findChildren<T*>())
+        if (w->toolTip().startsWith(start)) return w;
+    return nullptr;
+}
+
+// Replaces a spin box's text as a user would and presses Return.
+void typeInto(QDoubleSpinBox* box, const QString& value)
+{
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, value);
+    QTest::keyClick(box, Qt::Key_Return);
+}
+
+}  // namespace
+
+class TestPanels : public QObject {
+    Q_OBJECT
+private slots:
+    void physicsSpinBoxEdit_data();
+    void physicsSpinBoxEdit();
+    void physicsResetButton();
+    void shotSliderDragIsOneStep();
+    void shotCheckboxRemovesTheStrike();
+    void ballsToolbarAddsAndRemoves();
+    void eventTableShowsTheResult();
+};
+
+void TestPanels::physicsSpinBoxEdit_data()
+{
+    QTest::addColumn<QString>("toolTip");
+    QTest::addColumn<QString>("typed");
+    QTest::addColumn<double>("expected");
+    QTest::newRow("mu slide") << "Sliding friction" << "0.3" << 0.3;
+    QTest::newRow("mu roll") << "Rolling resistance" << "0.012" << 0.012;
+    QTest::newRow("cushion restitution") << "Ball-cushion coefficient" << "0.7" << 0.7;
+    QTest::newRow("gravity") << "Gravitational" << "1.62" << 1.62;
+    QTest::newRow("frame step in ms") << "Frame timestep" << "10" << 0.01;
+}
+
+void TestPanels::physicsSpinBoxEdit()
+{
+    QFETCH(QString, toolTip);
+    QFETCH(QString, typed);
+    QFETCH(double, expected);
+    Document d;
+    PhysicsPanel panel(&d);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto* box = childWithToolTip<QDoubleSpinBox>(&panel, toolTip);
+    QVERIFY(box);
+    const QString before = box->text();
+    const auto value = [&] {
+        const Setup& s = d.setup();
+        if (toolTip.startsWith(QLatin1String("Sliding"))) return s.physics.muSlide;
+        if (toolTip.startsWith(QLatin1String("Rolling"))) return s.physics.muRoll;
+        if (toolTip.startsWith(QLatin1String("Ball-cushion"))) return s.physics.cushionRestitution;
+        if (toolTip.startsWith(QLatin1String("Gravitational"))) return s.physics.gravity;
+        return s.simulation.frameDt;
+    };
+    const double original = value();
+    typeInto(box, typed);
+    QCOMPARE(value(), expected);
+    QCOMPARE(d.undoStack()->count(), 1);
+    d.undoStack()->undo();
+    QCOMPARE(value(), original);
+    QCOMPARE(box->text(), before);  // the panel shows the undone value
+}
+
+void TestPanels::physicsResetButton()
+{
+    Document d;
+    PhysicsParams p = d.setup().physics;
+    p.muRoll = 0.015;
+    p.ballBallModel = BallBallModel::Frictional;
+    QVERIFY(d.setPhysics(p, QStringLiteral("edit"), 0));
+    PhysicsPanel panel(&d);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QPushButton* reset = nullptr;
+    for (QPushButton* b : panel.findChildren<QPushButton*>())
+        if (b->text().contains(QLatin1String("Defaults"))) reset = b;
+    QVERIFY(reset);
+    QTest::mouseClick(reset, Qt::LeftButton);
+    QCOMPARE(d.setup().physics.muRoll, PhysicsParams{}.muRoll);
+    QVERIFY(d.setup().physics.ballBallModel == BallBallModel::Frictionless);
+    d.undoStack()->undo();
+    QCOMPARE(d.setup().physics.muRoll, 0.015);
+    QCOMPARE(childWithToolTip<QDoubleSpinBox>(&panel, QStringLiteral("Rolling resistance"))->value(), 0.015);
+}
+
+void TestPanels::shotSliderDragIsOneStep()
+{
+    Document d;
+    ShotPanel panel(&d);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto* slider = childWithToolTip<QSlider>(&panel, QStringLiteral("Cue speed"));
+    QVERIFY(slider);
+    const double speed0 = d.setup().shot->speed;
+    // Drag the handle: press on it, move in steps, release.
+    QStyleOptionSlider option;
+    option.initFrom(slider);
+    option.orientation = slider->orientation();
+    option.minimum = slider->minimum();
+    option.maximum = slider->maximum();
+    option.sliderPosition = option.sliderValue = slider->value();
+    const QPoint handle = slider->style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider).center();
+    QTest::mousePress(slider, Qt::LeftButton, {}, handle);
+    for (int dx = 5; dx <= 40; dx += 5) {
+        QMouseEvent move(QEvent::MouseMove, QPointF(handle + QPoint(dx, 0)), slider->mapToGlobal(QPointF(handle + QPoint(dx, 0))),
+                         Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(slider, &move);
+    }
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, handle + QPoint(40, 0));
+    QVERIFY2(d.setup().shot->speed > speed0, qPrintable(QString::number(d.setup().shot->speed)));
+    QCOMPARE(d.undoStack()->count(), 1);
+    // A second drag is a second step.
+    QTest::mousePress(slider, Qt::LeftButton, {}, handle + QPoint(40, 0));
+    QMouseEvent move(QEvent::MouseMove, QPointF(handle + QPoint(60, 0)), slider->mapToGlobal(QPointF(handle + QPoint(60, 0))),
+                     Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(slider, &move);
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, handle + QPoint(60, 0));
+    QCOMPARE(d.undoStack()->count(), 2);
+    d.undoStack()->undo();
+    d.undoStack()->undo();
+    QCOMPARE(d.setup().shot->speed, speed0);
+}
+
+void TestPanels::shotCheckboxRemovesTheStrike()
+{
+    Document d;
+    ShotPanel panel(&d);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QCheckBox* strike = panel.findChild<QCheckBox*>();
+    QVERIFY(strike && strike->isChecked());
+    QTest::mouseClick(strike, Qt::LeftButton, {}, QPoint(8, strike->height() / 2));
+    QVERIFY(!d.setup().shot.has_value());
+    QVERIFY(!childWithToolTip<QDoubleSpinBox>(&panel, QStringLiteral("Cue speed"))->isEnabled());
+    d.undoStack()->undo();
+    QVERIFY(d.setup().shot.has_value());
+    QVERIFY(strike->isChecked());
+}
+
+void TestPanels::ballsToolbarAddsAndRemoves()
+{
+    Document d;
+    BallsPanel panel(&d);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    const auto button = [&](const QString& text) -> QToolButton* {
+        for (QToolButton* b : panel.findChildren<QToolButton*>())
+            if (b->text().remove(QLatin1Char('&')) == text) return b;
+        return nullptr;
+    };
+    QVERIFY(button(QStringLiteral("Add Ball")));
+    QVERIFY(!button(QStringLiteral("Remove Ball"))->isEnabled());  // nothing selected yet
+    QTest::mouseClick(button(QStringLiteral("Add Ball")), Qt::LeftButton);
+    QCOMPARE(panel.table()->rowCount(), 3);
+    QCOMPARE(panel.selectedBall(), 2);  // the new ball is selected
+    QTest::mouseClick(button(QStringLiteral("Duplicate Ball")), Qt::LeftButton);
+    QCOMPARE(panel.table()->rowCount(), 4);
+    QTest::mouseClick(button(QStringLiteral("Remove Ball")), Qt::LeftButton);
+    QCOMPARE(panel.table()->rowCount(), 3);
+    QCOMPARE(d.undoStack()->count(), 3);
+    d.undoStack()->undo();
+    d.undoStack()->undo();
+    d.undoStack()->undo();
+    QCOMPARE(panel.table()->rowCount(), 2);
+}
+
+void TestPanels::eventTableShowsTheResult()
+{
+    Document d;
+    QString error;
+    QVERIFY2(d.load(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/half-ball-cut.json"), &error), qPrintable(error));
+    d.waitForResult();
+    EventTableModel model;
+    model.setResult(d.result());
+    const auto& events = d.result()->events;
+    QCOMPARE(model.rowCount(), static_cast<int>(events.size()));
+    QCOMPARE(model.index(0, EventTableModel::KindColumn).data().toString(), QStringLiteral("cue-strike"));
+    int collision = -1;
+    for (std::size_t i = 0; i < events.size() && collision < 0; ++i)
+        if (events[i].kind == EventKind::BallBall) collision = static_cast<int>(i);
+    QVERIFY(collision > 0);
+    QCOMPARE(model.index(collision, EventTableModel::AgentsColumn).data().toString(), QStringLiteral("cue – 1"));
+    QCOMPARE(model.index(collision, EventTableModel::TimeColumn).data().toString(),
+             QString::number(events[static_cast<std::size_t>(collision)].time, 'f', 6));
+    const double gap = events[static_cast<std::size_t>(collision)].time - events[static_cast<std::size_t>(collision - 1)].time;
+    QCOMPARE(model.index(collision, EventTableModel::GapColumn).data().toString(), QString::number(gap, 'f', 6));
+    QVERIFY(model.index(collision, EventTableModel::DetailsColumn).data().toString().contains(QLatin1String("m/s")));
+}
+
+QTEST_MAIN(TestPanels)
+#include "tst_panels.moc"
