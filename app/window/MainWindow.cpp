@@ -555,7 +555,7 @@ void MainWindow::refreshInspector()
     const auto result = document_->result();
     if (!result || inspectorSubject_ == InspectorSubject::None) return inspector_->showNothing();
     if (inspectorSubject_ == InspectorSubject::Ball) inspector_->showBall(*result, selectedBall_, playback_->time());
-    else inspector_->showEvent(*result, selectedEvent_);
+    else inspector_->showEventDetails(*result, selectedEvent_);
 }
 
 }  // namespace cuelab

@@ -6,6 +6,7 @@
 #include "Motion.h"
 
 #include <QHeaderView>
+#include <QScrollBar>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -69,8 +70,31 @@ void InspectorPanel::addState(QTreeWidgetItem* parent, const BallState& s, doubl
         tr("Velocity of the contact point with the cloth, v + R (z × ω); zero when rolling"));
 }
 
+namespace {
+// Rebuilding the tree on every frame of playback must neither flicker nor jump back to the top.
+class KeepScrollPosition {
+public:
+    explicit KeepScrollPosition(QTreeWidget* tree) : tree_(tree), value_(tree->verticalScrollBar()->value())
+    {
+        tree_->setUpdatesEnabled(false);
+    }
+    ~KeepScrollPosition()
+    {
+        tree_->verticalScrollBar()->setValue(value_);
+        tree_->setUpdatesEnabled(true);
+    }
+    KeepScrollPosition(const KeepScrollPosition&) = delete;
+    KeepScrollPosition& operator=(const KeepScrollPosition&) = delete;
+
+private:
+    QTreeWidget* tree_;
+    int value_;
+};
+}  // namespace
+
 void InspectorPanel::showBall(const SimulationResult& result, int index, double time)
 {
+    const KeepScrollPosition keep(tree_);
     tree_->clear();
     if (index < 0 || index >= static_cast<int>(result.balls.size())) return showNothing();
     const Ball& ball = result.balls[static_cast<std::size_t>(index)];
@@ -87,8 +111,9 @@ void InspectorPanel::showBall(const SimulationResult& result, int index, double 
     tree_->expandAll();
 }
 
-void InspectorPanel::showEvent(const SimulationResult& result, int index)
+void InspectorPanel::showEventDetails(const SimulationResult& result, int index)
 {
+    const KeepScrollPosition keep(tree_);
     tree_->clear();
     if (index < 0 || index >= static_cast<int>(result.events.size())) return showNothing();
     const std::size_t i = static_cast<std::size_t>(index);

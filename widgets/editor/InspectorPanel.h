@@ -19,7 +19,7 @@ public:
 
     void showNothing();
     void showBall(const SimulationResult& result, int index, double time);
-    void showEvent(const SimulationResult& result, int index);
+    void showEventDetails(const SimulationResult& result, int index);  // not QWidget::showEvent
 
     QTreeWidget* tree() const { return tree_; }
     // The value shown for a quantity (first match by name, searching the whole tree); for tests.
