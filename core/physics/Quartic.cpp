@@ -52,15 +52,8 @@ constexpr double kNegligibleLeading = 0x1p-200;
 // would be lost in the rounding of the evaluation.
 constexpr double kRootTolerance = kEpsilon;
 
-// Critical points serve first as ends of the monotone pieces, and for that a rough one does: p(x) at
-// an x off the true critical point by e differs from the critical value by about p'' e^2 / 2, which
-// only matters when that value is itself that small. So they are computed to this relative accuracy
-// and refined to kRootTolerance only in that case (see Walker::next), which saves an iteration each.
-constexpr double kCriticalPointTolerance = 1e-7;
-
-// A critical point with estimated error e is refined when |p| there is below |p''| / 2 (kErrorMargin
-// e)^2: a margin on the error estimate, which is asymptotic, not a bound.
-constexpr double kErrorMargin = 16.0;
+// The Halley error estimate is trusted only once the step is below this fraction of the iterate.
+constexpr double kTrustedStep = 1e-4;
 
 // Roots whose attainable accuracy with plain evaluation is worse than this (relative) are refined
 // with compensated evaluation.
@@ -169,22 +162,20 @@ double startingPoint(const Expansion<N>& p, double a, double fa, bool aCritical,
     return (x > a && x < b) ? x : a + 0.5 * (b - a);
 }
 
-// The root of p in (a, b) from x, given p(a) and p(b) of opposite signs and p monotone on [a, b],
-// to the relative accuracy tolerance; error receives an estimate of the remaining absolute error.
+// The root of p in (a, b) from x, given p(a) and p(b) of opposite signs and p monotone on [a, b].
 // Halley's method, step s = p p' / (p'^2 - p p'' / 2), which converges cubically, safeguarded by
 // bisection when a step would leave the bracket or is not below half the step before (the rtsafe
 // safeguard of Press et al., Numerical Recipes, 3rd ed., 9.4). It stops when the error left after the
 // step just taken, estimated by Halley's error recursion e' = (A^2 - B) e^3 with A = p'' / (2 p') and
 // B = p''' / (6 p') (Traub, Iterative Methods for the Solution of Equations, 1964, 8.3), is below the
-// tolerance; that saves a last, merely confirming, evaluation. Compensated: p itself is evaluated by
-// valueCompensated(), for roots whose accuracy value()'s rounding would limit.
+// rounding of x; that saves a last, merely confirming, evaluation. Compensated: p itself is evaluated
+// by valueCompensated(), for roots whose accuracy value()'s rounding would limit; illConditioned
+// tells whether that is so at the last iterate.
 template <int N, bool Compensated = false>
-double rootInBracket(const Expansion<N>& p, double a, double fa, double b, double x, double tolerance,
-                     double& error, bool& illConditioned)
+double rootInBracket(const Expansion<N>& p, double a, double fa, double b, double x, bool& illConditioned)
 {
     const bool rising = fa < 0.0;
     double stepBefore = b - a;
-    error = stepBefore;
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         const double x2 = x * x;
         const double f = Compensated ? p.valueCompensated(x) : estrin<N>(p.c, x, x2);
@@ -194,10 +185,7 @@ double rootInBracket(const Expansion<N>& p, double a, double fa, double b, doubl
         // worse than kConditionLimit relative accuracy. That error is about eps sum |c_i| |x|^i /
         // |p'(x)| (the root's condition number), large next to a close pair of roots.
         illConditioned = kEpsilon * estrin<N>(p.absC, std::abs(x), x2) > kConditionLimit * std::abs(x * d1);
-        if (f == 0.0) {
-            error = 0.0;
-            return x;
-        }
+        if (f == 0.0) return x;
         if ((f < 0.0) == rising)
             a = x;
         else
@@ -207,17 +195,16 @@ double rootInBracket(const Expansion<N>& p, double a, double fa, double b, doubl
         if (next > a && next < b && std::abs(2.0 * step) <= std::abs(stepBefore)) {
             const double d3 = estrin<N - 3>(p.d3, x, x2);
             const double errorTimesSlope2 = std::abs(d2 * d2 - d1 * d3) * std::abs(step * step * step);
-            const double slope2 = d1 * d1;
             x = next;
             stepBefore = step;
-            if (errorTimesSlope2 <= tolerance * std::abs(x) * slope2) {  // no division on this path
-                error = errorTimesSlope2 / slope2;
-                return x;
-            }
+            // The estimate is asymptotic: far from the root, or where A^2 - B happens to cancel, it
+            // can be much too small. Trusting it only after a small step bounds that damage to about
+            // kTrustedStep^3 relative for a well-conditioned root.
+            const bool smallStep = std::abs(step) <= kTrustedStep * std::abs(x);
+            if (smallStep && errorTimesSlope2 <= kRootTolerance * std::abs(x) * (d1 * d1)) return x;
         } else {
             stepBefore = 0.5 * (b - a);
             x = a + stepBefore;
-            error = stepBefore;
             if (x == a || x == b) return x;  // the bracket is two adjacent doubles
         }
     }
@@ -232,37 +219,22 @@ double rootInBracket(const Expansion<N>& p, double a, double fa, double b, doubl
 template <int N>
 class Walker {
 public:
-    // tolerance: the relative accuracy of the roots, kRootTolerance or kCriticalPointTolerance.
-    Walker(const double* c, double lo, double hi, double tolerance)
-        : p_(c), derivative_(p_.d1, lo, hi, kCriticalPointTolerance), tolerance_(tolerance), hi_(hi),
-          a_(lo), fa_(p_.value(lo))
+    Walker(const double* c, double lo, double hi)
+        : p_(c), derivative_(p_.d1, lo, hi), hi_(hi), a_(lo), fa_(p_.value(lo))
     {
     }
 
-    // The next root, and an estimate of its absolute error.
-    bool next(double& root, double& error)
+    bool next(double& root)
     {
         while (!done_) {
             double b = hi_;
-            double bError = 0.0;
-            bool bCritical = derivative_.next(b, bError) && b < hi_;
-            double fb = p_.value(b);
-            if (bCritical && bError > 0.0) {
-                // Is p(b) close enough to zero that the critical point's error could change its sign?
-                const double halfCurvature = estrin<N - 2>(p_.d2, b, b * b);
-                const double offset = kErrorMargin * bError;
-                if (std::abs(fb) <= std::abs(halfCurvature) * offset * offset || p_.negligible(fb, b)) {
-                    derivative_.refine(b, bError);
-                    bCritical = b < hi_;
-                    fb = p_.value(b);
-                }
-            }
+            const bool bCritical = derivative_.next(b) && b < hi_;
             if (!bCritical) {
                 done_ = true;
                 b = hi_;
-                bError = 0.0;
-                fb = p_.value(b);
-            } else if (p_.negligible(fb, b)) {
+            }
+            double fb = p_.value(b);
+            if (bCritical && p_.negligible(fb, b)) {
                 // The sign of p at a critical point tells a close pair of roots from none; only the
                 // compensated value resolves it when the plain one is rounding noise.
                 fb = p_.valueCompensated(b);
@@ -278,14 +250,10 @@ public:
             // A value at lo that is zero within rounding is a root at lo, excluded.
             const auto aIsRoot = [&] { return fa == 0.0 || (aIsLo && p_.negligible(fa, a)); };
             if (((fa < 0.0 && fb > 0.0) || (fa > 0.0 && fb < 0.0)) && !aIsRoot()) {
-                bracketA_ = a;
-                bracketFa_ = fa;
-                bracketB_ = b;
                 const double start = startingPoint<N>(p_, a, fa, aCritical, b, fb, bCritical);
                 bool illConditioned = false;
-                root = rootInBracket<N>(p_, a, fa, b, start, tolerance_, error, illConditioned);
-                if (tolerance_ == kRootTolerance && illConditioned)
-                    root = rootInBracket<N, true>(p_, a, fa, b, root, kRootTolerance, error, illConditioned);
+                root = rootInBracket<N>(p_, a, fa, b, start, illConditioned);
+                if (illConditioned) root = rootInBracket<N, true>(p_, a, fa, b, root, illConditioned);
                 return true;
             }
             // No sign change: p at b is either clear of zero or a (tangential) root within rounding.
@@ -296,36 +264,22 @@ public:
             // from it, and the search from the first of a close pair goes on to the second).
             if ((fb == 0.0 || p_.negligible(fb, b)) && !aIsRoot()) {
                 fa_ = 0.0;
-                bracketA_ = bracketB_ = b;  // a root at a critical point is as accurate as that
                 root = b;
-                error = bError;
                 return true;
             }
         }
         return false;
     }
 
-    // Refines the root last returned by next() to full accuracy.
-    void refine(double& root, double& error)
-    {
-        bool illConditioned = false;
-        if (bracketA_ < bracketB_)
-            root = rootInBracket<N>(p_, bracketA_, bracketFa_, bracketB_, root, kRootTolerance, error, illConditioned);
-    }
-
 private:
     Expansion<N> p_;            // declared before derivative_, which is built from p_.d1
     Walker<N - 1> derivative_;
-    double tolerance_;
     double hi_;
     double a_;                  // the walk has covered (lo, a_]
     double fa_;                 // p(a_), or 0 where a_ was taken as a root
     bool aCritical_ = false;    // a_ is a critical point
     bool aIsLo_ = true;         // a_ is lo
     bool done_ = false;
-    double bracketA_ = 0.0;     // the bracket of the root last returned, for refine()
-    double bracketFa_ = 0.0;
-    double bracketB_ = 0.0;
 };
 
 // Degree two in closed form: the stable quadratic formula (no cancellation between -B and the
@@ -333,7 +287,7 @@ private:
 template <>
 class Walker<2> {
 public:
-    Walker(const double* c, double lo, double hi, double /*tolerance: always full*/)
+    Walker(const double* c, double lo, double hi)
     {
         const double A = c[0];
         const double B = c[1];
@@ -355,15 +309,12 @@ public:
             if (roots[i] > lo && roots[i] <= hi) roots_[count_++] = roots[i];
     }
 
-    bool next(double& root, double& error)
+    bool next(double& root)
     {
         if (taken_ == count_) return false;
         root = roots_[taken_++];
-        error = 0.0;
         return true;
     }
-
-    void refine(double& /*root*/, double& /*error*/) {}
 
 private:
     double roots_[2] = {0.0, 0.0};
@@ -374,17 +325,16 @@ private:
 template <>
 class Walker<1> {
 public:
-    Walker(const double* c, double lo, double hi, double /*tolerance: always full*/)
+    Walker(const double* c, double lo, double hi)
         : root_(-c[1] / c[0]), pending_(root_ > lo && root_ <= hi)
     {
     }
 
-    bool next(double& root, double& error)
+    bool next(double& root)
     {
         if (!pending_) return false;
         pending_ = false;
         root = root_;
-        error = 0.0;
         return true;
     }
 
@@ -433,10 +383,9 @@ Normalised normalise(const Quartic& input)
 template <int N, typename Visit>
 void visitRoots(const double* c, double lo, double hi, Visit visit)
 {
-    Walker<N> walker(c, lo, hi, kRootTolerance);
+    Walker<N> walker(c, lo, hi);
     double root = 0.0;
-    double error = 0.0;
-    while (walker.next(root, error))
+    while (walker.next(root))
         if (!visit(root)) return;
 }
 

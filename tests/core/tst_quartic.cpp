@@ -179,6 +179,8 @@ private slots:
     void knownRoots();
     void degenerateLeadingCoefficient_data();
     void degenerateLeadingCoefficient();
+    void regressions_data();
+    void regressions();
     void intervalEnds_data();
     void intervalEnds();
     void ballBallContact_data();
@@ -187,6 +189,9 @@ private slots:
     void randomQuartics_data();
     void randomQuartics();
     void nonFiniteInput();
+
+private:
+    void checkGivenCoefficients();
 };
 
 // Quartics with exactly known roots. Rows flagged exact have dyadic roots whose products fit in 53
@@ -311,7 +316,27 @@ void TestQuartic::degenerateLeadingCoefficient_data()
     QTest::newRow("subnormal-coefficients") << Quartic{tiny, -10 * tiny, 0, 0, 0} << QList<double>{0, 10} << false;
 }
 
-void TestQuartic::degenerateLeadingCoefficient()
+void TestQuartic::degenerateLeadingCoefficient() { checkGivenCoefficients(); }
+
+// Quartics that once defeated the solver in randomised searches.
+void TestQuartic::regressions_data()
+{
+    QTest::addColumn<Quartic>("c");
+    QTest::addColumn<QList<double>>("expected");
+    QTest::addColumn<bool>("polishExpected");
+    // A close pair (2.7e-6 apart) whose critical point came from a Halley step trusted too early:
+    // its error estimate was 100 times too small, p there had the wrong sign, and both roots were
+    // missed.
+    QTest::newRow("close-pair-early-stop") << Quartic{2.9367977100187428, -1.141899882645705, 0.21557466659376132,
+                                                      -0.023903349077570007, 0.0011342121677588698}
+                                           << QList<double>{0.12955479242254947, 0.12955514780556224} << true;
+}
+
+void TestQuartic::regressions() { checkGivenCoefficients(); }
+
+// Rows with columns c, expected, polishExpected: solveQuartic must give exactly the expected roots
+// (polished in binary128 on c when flagged) to 1e-14, and smallestRootInInterval the right one.
+void TestQuartic::checkGivenCoefficients()
 {
     QFETCH(Quartic, c);
     QFETCH(QList<double>, expected);
