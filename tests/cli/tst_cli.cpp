@@ -2,6 +2,7 @@
 // outputs that parse with the right shape, exit statuses, byte-identical repeated runs.
 
 #include "Cli.h"
+#include "Table.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -109,6 +110,7 @@ private slots:
     void validateExamples();
     void simulateOutput_data();
     void simulateOutput();
+    void jawIsACushion();
     void simulateUntil();
     void unfinished_data();
     void unfinished();
@@ -233,7 +235,7 @@ void TestCli::simulateOutput_data()
     QTest::addColumn<int>("balls");
     QTest::newRow("half-ball cut (pocket, cushion)") << example("half-ball-cut.json") << 2;
     QTest::newRow("8-ball break (simultaneous events)") << example("8-ball-break.json") << 16;
-    QTest::newRow("one-cushion bank (jaw)") << example("one-cushion-bank.json") << 2;
+    QTest::newRow("one-cushion bank") << example("one-cushion-bank.json") << 2;
 }
 
 void TestCli::simulateOutput()
@@ -292,6 +294,33 @@ void TestCli::simulateOutput()
         const QString state = b.toObject().value("state").toString();
         QVERIFY(state == QLatin1String("stationary") || state == QLatin1String("pocketed"));
     }
+}
+
+void TestCli::jawIsACushion()
+{
+    // A ball sent straight down onto the rounded tip of the bottom side pocket's left jaw, 4 mm on
+    // the pocket's side of where the rail ends: a ball-jaw contact, written as a ball-cushion event
+    // that names the jaw.
+    const cuelab::Table table = cuelab::makeTable(cuelab::TableKind::Pool9ft);
+    const cuelab::JawTip* jaw = nullptr;
+    for (const cuelab::JawTip& j : table.jaws)
+        if (j.id == "jaw-b-left") jaw = &j;
+    QVERIFY(jaw);
+    const QByteArray json = QStringLiteral(R"({"format": "cuelab-setup", "version": 1, "balls": [
+        {"id": "1", "position": [%1, 0.4], "velocity": [0, -1]}]})")
+                                .arg(jaw->centre.x() + 0.004, 0, 'g', 17)
+                                .toUtf8();
+    const Run r = cli({"simulate", writeFile(dir_, "jaw.json", json)});
+    QCOMPARE(r.status, 0);
+    const QJsonArray events = parseObject(r.out).value("events").toArray();
+    bool hit = false;
+    for (const QJsonValue& e : events) {
+        if (e.toObject().value("type").toString() != QLatin1String("ball-cushion")) continue;
+        QCOMPARE(e.toObject().value("cushion").toString(), QStringLiteral("jaw-b-left"));
+        hit = true;
+        break;
+    }
+    QVERIFY(hit);
 }
 
 void TestCli::simulateUntil()
