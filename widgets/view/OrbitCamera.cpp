@@ -32,6 +32,27 @@ QQuaternion rotationLookingAlong(float headingDeg, float elevationDeg)
     return rotationFrom(QVector3D(std::sin(h), -std::cos(h), 0.0f), elevationDeg);
 }
 
+// Backs the camera off until every corner of `extent` (on the cloth and at rail height) lies inside
+// the image with a small margin: perspective makes the near side of an oblique view the widest.
+float fittingDistance(CameraPose pose, const QRectF& extent, float aspect)
+{
+    OrbitCamera probe;
+    for (int i = 0; i < 200; ++i) {
+        probe.setPose(pose);
+        bool inside = true;
+        for (const QPointF& c : {extent.topLeft(), extent.topRight(), extent.bottomLeft(), extent.bottomRight()}) {
+            for (float z : {0.0f, 0.05f}) {
+                const std::optional<QPointF> p =
+                    probe.project(QVector3D(static_cast<float>(c.x()), static_cast<float>(c.y()), z), aspect);
+                inside = inside && p && std::abs(p->x()) <= 0.97 && std::abs(p->y()) <= 0.97;
+            }
+        }
+        if (inside) break;
+        pose.distance *= 1.02f;
+    }
+    return pose.distance;
+}
+
 float smoothstep(float x)
 {
     const float c = std::clamp(x, 0.0f, 1.0f);
@@ -55,8 +76,9 @@ CameraPose OrbitCamera::constrained(CameraPose pose)
         if (right.lengthSquared() < 1e-8f) right = QVector3D(1.0f, 0.0f, 0.0f);
     }
     right.normalize();
-    const float elevation =
-        std::clamp(std::asin(std::clamp(back.z(), -1.0f, 1.0f)) * kDegPerRad, kMinElevationDeg, kMaxElevationDeg);
+    // atan2 rather than asin: asin loses half the digits near the vertical.
+    const float horizontal = std::sqrt(back.x() * back.x() + back.y() * back.y());
+    const float elevation = std::clamp(std::atan2(back.z(), horizontal) * kDegPerRad, kMinElevationDeg, kMaxElevationDeg);
     pose.rotation = rotationFrom(right, elevation);
     pose.distance = std::clamp(pose.distance, kMinDistance, kMaxDistance);
     return pose;
@@ -79,7 +101,8 @@ QVector3D OrbitCamera::forward() const { return pose_.rotation.rotatedVector(QVe
 
 float OrbitCamera::elevationDeg() const
 {
-    return std::asin(std::clamp(-forward().z(), -1.0f, 1.0f)) * kDegPerRad;
+    const QVector3D f = forward();
+    return std::atan2(-f.z(), std::sqrt(f.x() * f.x() + f.y() * f.y())) * kDegPerRad;
 }
 
 void OrbitCamera::orbit(float yawDeg, float pitchDeg)
@@ -194,8 +217,9 @@ CameraPose OrbitCamera::presetPose(CameraPreset preset, const PresetFrame& frame
     }
     case CameraPreset::Side:
         pose.target = centre;
-        pose.rotation = rotationLookingAlong(90.0f, 24.0f);
-        pose.distance = 1.08f * halfLength / (t * aspect) + halfWidth;
+        pose.rotation = rotationLookingAlong(90.0f, 26.0f);
+        pose.distance = 0.9f * halfLength / (t * aspect);
+        pose.distance = fittingDistance(pose, frame.extent, aspect);
         break;
     }
     return constrained(pose);

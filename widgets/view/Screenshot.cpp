@@ -1,12 +1,90 @@
-// FIRST CUT: the offscreen renderer lands with the table renderer.
 #include "Screenshot.h"
+
+#include "OpenGLProbe.h"
+#include "OverlayLabels.h"
+#include "SceneFraming.h"
+#include "TableRenderer.h"
+
+#include <QGuiApplication>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QPainter>
+#include <QSurfaceFormat>
 
 namespace cuelab {
 
-bool renderSceneToImage(const ViewScene&, double, CameraPreset, QSize, QImage*, QString* error)
+bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset, QSize size, QImage* out,
+                        QString* error)
 {
-    if (error) *error = QStringLiteral("Screenshots are not available in this build yet.");
-    return false;
+    auto fail = [error](const QString& message) {
+        if (error) *error = message;
+        return false;
+    };
+    if (!qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
+        return fail(QStringLiteral("Rendering a screenshot needs a QGuiApplication."));
+    if (size.width() < 16 || size.height() < 16 || size.width() > 8192 || size.height() > 8192)
+        return fail(QStringLiteral("The screenshot size %1x%2 is outside 16x16 to 8192x8192 pixels.")
+                        .arg(size.width())
+                        .arg(size.height()));
+    if (!scene.result) return fail(QStringLiteral("There is no simulation to draw."));
+
+    QSurfaceFormat format;
+    format.setVersion(kGlMajor, kGlMinor);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    QOpenGLContext context;
+    context.setFormat(format);
+    if (!context.create())
+        return fail(QStringLiteral("Could not create an OpenGL %1.%2 context for the screenshot; check the graphics "
+                                   "driver (for example Mesa's libgl1-mesa-dri).")
+                        .arg(kGlMajor)
+                        .arg(kGlMinor));
+    QOffscreenSurface surface;
+    surface.setFormat(context.format());
+    surface.create();
+    if (!surface.isValid() || !context.makeCurrent(&surface))
+        return fail(QStringLiteral("Could not make the screenshot's OpenGL context current."));
+
+    QOpenGLFramebufferObjectFormat fboFormat;
+    fboFormat.setAttachment(QOpenGLFramebufferObject::Depth);
+    fboFormat.setSamples(4);
+    bool ok = false;
+    {
+        QOpenGLFramebufferObject fbo(size, fboFormat);
+        if (fbo.isValid() && fbo.bind()) {
+            TableRenderer renderer;
+            QString problem;
+            if (renderer.initialize(&problem)) {
+                const float aspect = static_cast<float>(size.width()) / static_cast<float>(size.height());
+                OrbitCamera camera;
+                camera.setPose(OrbitCamera::presetPose(preset, presetFrameFor(scene, aspect)));
+                renderer.setScene(scene);
+                RenderFrame frame;
+                frame.viewProjection = camera.projection(aspect) * camera.viewMatrix();
+                frame.eye = camera.eye();
+                frame.viewportPixels = size;
+                frame.time = std::clamp(time, 0.0, std::max(scene.result->endTime, 0.0));
+                frame.overlays = defaultOverlays();
+                renderer.render(frame);
+                *out = fbo.toImage().convertToFormat(QImage::Format_ARGB32_Premultiplied);
+                QPainter painter(out);
+                paintOverlayLabels(painter, scene,
+                                   LabelFrame{frame.viewProjection, size, frame.time, frame.overlays, -1});
+                painter.end();
+                ok = true;
+            } else if (error) {
+                *error = problem;
+            }
+            renderer.release();
+            fbo.release();
+        } else if (error) {
+            *error = QStringLiteral("Could not create a %1x%2 framebuffer for the screenshot.")
+                         .arg(size.width())
+                         .arg(size.height());
+        }
+    }
+    context.doneCurrent();
+    return ok;
 }
 
 }  // namespace cuelab

@@ -14,6 +14,7 @@
 
 #include <bitset>
 #include <memory>
+#include <optional>
 
 namespace cuelab {
 
@@ -65,7 +66,7 @@ protected:
 private:
     float aspect() const;
     QPointF toNdc(const QPointF& widgetPos) const;
-    PresetFrame presetFrame() const;
+    std::optional<QVector3D> clothPointUnder(const QPointF& widgetPos, float height) const;
     void releaseGl();
     void stepCameraAnimation();
     void countFrame();
@@ -76,7 +77,7 @@ private:
     int highlightedEvent_ = -1;
     std::bitset<kOverlayCount> overlays_;
     OrbitCamera camera_;
-    bool cameraPlaced_ = false;  // the first scene places the camera on the top preset
+    bool cameraAutomatic_ = true;  // untouched by the user: refit the top view on resize and new tables
 
     std::unique_ptr<TableRenderer> renderer_;
     unsigned int lastGlError_ = 0;
@@ -88,6 +89,7 @@ private:
     QPointF lastPos_;
     int dragBall_ = -1;
     bool dragMoved_ = false;
+    std::optional<QVector3D> dragGrabOffset_;  // m, from the ball's centre to the grabbed cloth point
 
     QTimer cameraTimer_;         // steps preset transitions
     QElapsedTimer cameraClock_;

@@ -6,6 +6,7 @@
 #include "CueStrike.h"
 #include "Simulation.h"
 
+#include <bitset>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -27,6 +28,9 @@ enum class Overlay : std::uint8_t {
     CueAndAim,     // the cue stick and the aim line before the shot (t = 0)
 };
 inline constexpr int kOverlayCount = 7;
+
+// The overlays shown until the user switches some off: all of them.
+inline std::bitset<kOverlayCount> defaultOverlays() { return std::bitset<kOverlayCount>().set(); }
 
 enum class CameraPreset : std::uint8_t {
     Top,     // straight down on the whole table, the long side horizontal

@@ -1,0 +1,272 @@
+#include "OverlayLines.h"
+
+#include "BallAppearance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace cuelab {
+
+namespace {
+
+constexpr double kPathSampleStep = 1.0 / 120.0;  // s between path samples on curved segments
+constexpr float kClothLift = 0.0015f;            // m: paths lie just above the cloth
+
+QVector3D at(const Vec2& p, double z)
+{
+    return QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(z));
+}
+
+QVector3D at(const Vec3& p)
+{
+    return QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
+}
+
+void segment(std::vector<LineVertex>& out, const QVector3D& a, const QVector3D& b, const QVector4D& colour,
+             float time = -1.0f)
+{
+    out.push_back({a, colour, time, 0.0f});
+    out.push_back({b, colour, time, 0.0f});
+}
+
+// A circle of `radius` about `centre` in the plane spanned by the unit vectors u, v, from angle a0
+// to a1 (radians).
+void arc(std::vector<LineVertex>& out, const QVector3D& centre, const QVector3D& u, const QVector3D& v, float radius,
+         double a0, double a1, int steps, const QVector4D& colour, float time = -1.0f)
+{
+    for (int k = 0; k < steps; ++k) {
+        const double s0 = a0 + (a1 - a0) * k / steps, s1 = a0 + (a1 - a0) * (k + 1) / steps;
+        segment(out, centre + radius * (static_cast<float>(std::cos(s0)) * u + static_cast<float>(std::sin(s0)) * v),
+                centre + radius * (static_cast<float>(std::cos(s1)) * u + static_cast<float>(std::sin(s1)) * v), colour,
+                time);
+    }
+}
+
+void ring(std::vector<LineVertex>& out, const QVector3D& centre, float radius, const QVector4D& colour,
+          float time = -1.0f)
+{
+    arc(out, centre, QVector3D(1, 0, 0), QVector3D(0, 1, 0), radius, 0.0, 2.0 * std::numbers::pi, 32, colour, time);
+}
+
+// An arrow from a to b; the barbs of its head lie in the plane of the shaft and `side`.
+void arrow(std::vector<LineVertex>& out, const QVector3D& a, const QVector3D& b, const QVector3D& side,
+           const QVector4D& colour, float time = -1.0f)
+{
+    const QVector3D shaft = b - a;
+    const float length = shaft.length();
+    if (length < 1e-5f) return;
+    segment(out, a, b, colour, time);
+    const QVector3D dir = shaft / length;
+    const float head = std::min(0.35f * length, 0.03f);
+    const QVector3D back = b - head * dir;
+    segment(out, b, back + 0.45f * head * side, colour, time);
+    segment(out, b, back - 0.45f * head * side, colour, time);
+}
+
+double ballRadius(const SimulationResult& result, int i) { return result.balls[static_cast<std::size_t>(i)].radius; }
+
+QVector4D eventColour(EventKind kind)
+{
+    switch (kind) {
+    case EventKind::BallBall: return {1.0f, 0.62f, 0.12f, 1.0f};
+    case EventKind::BallCushion:
+    case EventKind::BallJaw: return {0.35f, 0.85f, 1.0f, 1.0f};
+    case EventKind::BallPocket: return {1.0f, 0.35f, 0.85f, 1.0f};
+    default: return {1.0f, 1.0f, 1.0f, 1.0f};
+    }
+}
+
+}  // namespace
+
+void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out)
+{
+    out.clear();
+    for (std::size_t i = 0; i < result.balls.size() && i < result.timelines.size(); ++i) {
+        const int index = static_cast<int>(i);
+        const std::vector<MotionSegment>& timeline = result.timelines[i];
+        const BallLook look = ballLook(result.table.kind, result.balls[i].id);
+        const QVector3D c = pathColour(look);
+        const QVector4D colour(c, 0.95f);
+        double travelled = 0.0;
+        for (std::size_t k = 0; k < timeline.size(); ++k) {
+            const MotionSegment& seg = timeline[k];
+            if (seg.state.motion == MotionState::Pocketed) break;
+            const double end = k + 1 < timeline.size() ? timeline[k + 1].start : result.endTime;
+            if (end <= seg.start) continue;
+            if (seg.state.velocity.squaredNorm() < 1e-20) continue;  // no travel (resting or spinning)
+            // Rolling and uniform motion go straight; sliding curves (a parabola), so sample it.
+            const bool straight = seg.state.motion == MotionState::Rolling;
+            const int steps = straight ? 1 : std::clamp(static_cast<int>(std::ceil((end - seg.start) / kPathSampleStep)), 1, 2000);
+            Vec2 previous = seg.state.position;
+            double previousTime = seg.start;
+            for (int s = 1; s <= steps; ++s) {
+                const double t = seg.start + (end - seg.start) * s / steps;
+                // The state at the end of a segment is the start of the next one (just after its
+                // event); the end point of this one is its limit, evaluated a hair before.
+                const double sampleTime = s == steps ? std::nextafter(t, seg.start) : t;
+                const BallState state = result.stateAt(index, sampleTime);
+                if (state.motion == MotionState::Pocketed) break;
+                const double step = (state.position - previous).norm();
+                out.push_back({at(previous, kClothLift), colour, static_cast<float>(previousTime),
+                               static_cast<float>(travelled)});
+                travelled += step;
+                out.push_back({at(state.position, kClothLift), colour, static_cast<float>(t), static_cast<float>(travelled)});
+                previous = state.position;
+                previousTime = t;
+            }
+        }
+    }
+}
+
+void buildEventMarkers(const SimulationResult& result, int highlightedEvent, std::vector<LineVertex>& out)
+{
+    out.clear();
+    for (std::size_t e = 0; e < result.events.size(); ++e) {
+        const Event& ev = result.events[e];
+        if (!isCollision(ev.kind) && ev.kind != EventKind::BallPocket) continue;
+        const double r = ev.balls[0] >= 0 ? ballRadius(result, ev.balls[0]) : result.table.ballRadius;
+        const Vec2 point = ev.kind == EventKind::BallPocket ? ev.before[0].position : ev.contactPoint;
+        const QVector3D centre = at(point, r);
+        const auto time = static_cast<float>(ev.time);
+        if (static_cast<int>(e) == highlightedEvent) {
+            const QVector4D yellow(1.0f, 0.95f, 0.2f, 1.0f);
+            ring(out, centre, 0.022f, yellow, -1.0f);
+            ring(out, centre, 0.030f, yellow, -1.0f);
+        } else {
+            ring(out, centre, 0.013f, eventColour(ev.kind), time);
+        }
+    }
+}
+
+void buildGhostLines(const SimulationResult& result, std::vector<LineVertex>& out)
+{
+    out.clear();
+    for (const Event& ev : result.events) {
+        if (ev.kind != EventKind::BallBall) continue;
+        const double r = ballRadius(result, ev.balls[0]);
+        const Vec2 a = ev.before[0].position, b = ev.before[1].position;
+        const Vec2 dir = (b - a).normalized();
+        const auto time = static_cast<float>(ev.time);
+        // The line of centres, through the object ball and on, where a frictionless hit sends it.
+        segment(out, at(a, r), at(b + 0.18 * dir, r), QVector4D(0.95f, 0.95f, 0.95f, 0.85f), time);
+        // The contact normal at the contact point.
+        const QVector3D contact = at(ev.contactPoint, r);
+        const QVector3D n = at(ev.normal, 0.0);
+        arrow(out, contact, contact + 0.07f * n, QVector3D(-n.y(), n.x(), 0.0f), QVector4D(1.0f, 0.35f, 0.3f, 1.0f), time);
+    }
+}
+
+std::vector<GhostBall> ghostBalls(const SimulationResult& result)
+{
+    std::vector<GhostBall> ghosts;
+    for (std::size_t e = 0; e < result.events.size(); ++e) {
+        const Event& ev = result.events[e];
+        if (ev.kind != EventKind::BallBall) continue;
+        const auto r = static_cast<float>(ballRadius(result, ev.balls[0]));
+        ghosts.push_back({at(ev.before[0].position, r), r, static_cast<int>(e)});
+    }
+    return ghosts;
+}
+
+void appendVelocityArrows(const SimulationResult& result, const std::vector<BallState>& states,
+                          std::vector<LineVertex>& out)
+{
+    const QVector4D colour(1.0f, 0.93f, 0.3f, 1.0f);
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        const BallState& s = states[i];
+        if (s.motion == MotionState::Pocketed || s.velocity.norm() < 1e-3) continue;
+        const double r = result.balls[i].radius;
+        const QVector3D a = at(s.position, r + 0.002);
+        const QVector3D b = at(s.position + kVelocityArrowScale * s.velocity, r + 0.002);
+        const Vec2 d = s.velocity.normalized();
+        arrow(out, a, b, QVector3D(static_cast<float>(-d.y()), static_cast<float>(d.x()), 0.0f), colour);
+    }
+}
+
+void appendSpinIndicators(const SimulationResult& result, const std::vector<BallState>& states,
+                          std::vector<LineVertex>& out)
+{
+    const QVector4D colour(0.35f, 0.95f, 1.0f, 1.0f);
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        const BallState& s = states[i];
+        const double w = s.spin.norm();
+        if (s.motion == MotionState::Pocketed || w < 0.3) continue;
+        const auto r = static_cast<float>(result.balls[i].radius);
+        const QVector3D centre = at(s.position, r);
+        const QVector3D axis = at(Vec3(s.spin / w));
+        // The axis pokes out of the ball further the faster it spins (up to 60 rad/s).
+        const float reach = r * (1.2f + 0.9f * static_cast<float>(std::min(w / 60.0, 1.0)));
+        segment(out, centre - reach * axis, centre + reach * axis, colour);
+        // An arc of three quarters of a turn about the axis, in the sense of the rotation
+        // (right-handed about the axis), with an arrowhead at its end.
+        QVector3D u = QVector3D::crossProduct(axis, QVector3D(0, 0, 1));
+        if (u.lengthSquared() < 1e-6f) u = QVector3D(1, 0, 0);
+        u.normalize();
+        const QVector3D v = QVector3D::crossProduct(axis, u);
+        const float radius = 1.35f * r;
+        const QVector3D arcCentre = centre + 0.55f * reach * axis;
+        const double end = 1.5 * std::numbers::pi;
+        arc(out, arcCentre, u, v, radius, 0.0, end, 18, colour);
+        const QVector3D tip = arcCentre + radius * (static_cast<float>(std::cos(end)) * u + static_cast<float>(std::sin(end)) * v);
+        const QVector3D tangent = -static_cast<float>(std::sin(end)) * u + static_cast<float>(std::cos(end)) * v;
+        const QVector3D radial = (tip - arcCentre).normalized();
+        const float head = 0.5f * r;
+        segment(out, tip, tip - head * tangent + 0.5f * head * radial, colour);
+        segment(out, tip, tip - head * tangent - 0.5f * head * radial, colour);
+    }
+}
+
+void appendAimLine(const SimulationResult& result, const CueStrike& shot, std::vector<LineVertex>& out)
+{
+    const int cue = result.ballIndex(shot.ball);
+    if (cue < 0) return;
+    const BallState& s = result.balls[static_cast<std::size_t>(cue)].state;
+    const double r = ballRadius(result, cue);
+    const double heading = shot.headingDeg * std::numbers::pi / 180.0;
+    const Vec2 d(std::cos(heading), std::sin(heading));
+    // How far the ball travels straight before it meets a cushion (the rectangle its centre can
+    // reach) or another ball (centre distance 2R: ray against a circle).
+    double reach = std::numeric_limits<double>::infinity();
+    const Table& t = result.table;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double lo = r, hi = (axis == 0 ? t.length : t.width) - r;
+        if (std::abs(d[axis]) > 1e-12) reach = std::min(reach, ((d[axis] > 0 ? hi : lo) - s.position[axis]) / d[axis]);
+    }
+    int hit = -1;
+    for (std::size_t j = 0; j < result.balls.size(); ++j) {
+        if (static_cast<int>(j) == cue) continue;
+        const Vec2 m = result.balls[j].state.position - s.position;
+        const double contact = r + result.balls[j].radius;
+        const double along = m.dot(d);
+        const double offset2 = m.squaredNorm() - along * along;
+        if (along <= 0 || offset2 > contact * contact) continue;
+        const double at1 = along - std::sqrt(contact * contact - offset2);
+        if (at1 < reach) {
+            reach = std::max(at1, 0.0);
+            hit = static_cast<int>(j);
+        }
+    }
+    if (!std::isfinite(reach)) return;
+    const QVector4D white(1.0f, 1.0f, 1.0f, 0.9f);
+    const double dash = 0.025, gap = 0.015;
+    for (double a = r; a < reach; a += dash + gap)
+        segment(out, at(s.position + a * d, r), at(s.position + std::min(a + dash, reach) * d, r), white);
+    if (hit >= 0) {
+        const QVector3D ghost = at(s.position + reach * d, r);
+        arc(out, ghost, QVector3D(1, 0, 0), QVector3D(0, 1, 0), static_cast<float>(r), 0.0, 2.0 * std::numbers::pi, 32, white);
+    }
+}
+
+void appendSelectionRing(const SimulationResult& result, const std::vector<BallState>& states, int ball,
+                         std::vector<LineVertex>& out)
+{
+    if (ball < 0 || static_cast<std::size_t>(ball) >= states.size()) return;
+    const BallState& s = states[static_cast<std::size_t>(ball)];
+    if (s.motion == MotionState::Pocketed) return;
+    const auto r = static_cast<float>(result.balls[static_cast<std::size_t>(ball)].radius);
+    ring(out, at(s.position, kClothLift), 1.45f * r, QVector4D(1.0f, 0.85f, 0.15f, 1.0f));
+}
+
+}  // namespace cuelab

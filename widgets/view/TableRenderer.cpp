@@ -1,0 +1,477 @@
+#include "TableRenderer.h"
+
+#include "CueStickMesh.h"
+#include "SphereMesh.h"
+#include "TableMesh.h"
+
+#include <QImage>
+#include <QOpenGLShaderProgram>
+#include <QPainter>
+#include <QVector2D>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+
+namespace cuelab {
+
+namespace {
+
+constexpr int kFloatsPerBall = 16;  // centre + radius, orientation, colour + number, flags
+constexpr int kDigitCell = 128;     // pixels per digit cell of the 4 x 4 atlas
+
+const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
+
+std::unique_ptr<QOpenGLShaderProgram> makeProgram(const QString& name, bool geometry, QString* error)
+{
+    auto program = std::make_unique<QOpenGLShaderProgram>();
+    const QString base = QStringLiteral(":/shaders/") + name;
+    bool ok = program->addShaderFromSourceFile(QOpenGLShader::Vertex, base + QStringLiteral(".vert")) &&
+              (!geometry || program->addShaderFromSourceFile(QOpenGLShader::Geometry, base + QStringLiteral(".geom"))) &&
+              program->addShaderFromSourceFile(QOpenGLShader::Fragment, base + QStringLiteral(".frag")) &&
+              program->link();
+    if (!ok) {
+        if (error) *error = QStringLiteral("The %1 shader did not build: %2").arg(name, program->log());
+        return nullptr;
+    }
+    return program;
+}
+
+void putQuaternion(float* out, const Eigen::Quaterniond& q)
+{
+    out[0] = static_cast<float>(q.x());
+    out[1] = static_cast<float>(q.y());
+    out[2] = static_cast<float>(q.z());
+    out[3] = static_cast<float>(q.w());
+}
+
+// Places the cue stick (built along +x from its tip) behind the struck ball: the tip 2 cm from the
+// contact point given by the shot's side and height offsets, the butt raised by the elevation.
+std::optional<QMatrix4x4> cuePlacement(const SimulationResult& result, const CueStrike& shot)
+{
+    const int index = result.ballIndex(shot.ball);
+    if (index < 0) return std::nullopt;
+    const Ball& ball = result.balls[static_cast<std::size_t>(index)];
+    const double r = ball.radius;
+    const double h = shot.headingDeg * std::numbers::pi / 180.0, e = shot.elevationDeg * std::numbers::pi / 180.0;
+    const QVector3D d(static_cast<float>(std::cos(h)), static_cast<float>(std::sin(h)), 0.0f);
+    const QVector3D right(d.y(), -d.x(), 0.0f);  // the player's right, looking along d
+    const QVector3D up(0.0f, 0.0f, 1.0f);
+    const double a = std::clamp(shot.side, -0.9, 0.9) * r, b = std::clamp(shot.height, -0.9, 0.9) * r;
+    const double depth = std::sqrt(std::max(0.0, r * r - a * a - b * b));
+    const QVector3D centre(static_cast<float>(ball.state.position.x()), static_cast<float>(ball.state.position.y()),
+                           static_cast<float>(r));
+    const QVector3D contact = centre - static_cast<float>(depth) * d + static_cast<float>(a) * right + static_cast<float>(b) * up;
+    const QVector3D along = -static_cast<float>(std::cos(e)) * d + static_cast<float>(std::sin(e)) * up;  // tip -> butt
+    const QVector3D side = QVector3D::crossProduct(up, along).normalized();
+    const QVector3D third = QVector3D::crossProduct(along, side);
+    const QVector3D tip = contact + 0.02f * along;
+    QMatrix4x4 m;
+    m.setColumn(0, QVector4D(along, 0.0f));
+    m.setColumn(1, QVector4D(side, 0.0f));
+    m.setColumn(2, QVector4D(third, 0.0f));
+    m.setColumn(3, QVector4D(tip, 1.0f));
+    return m;
+}
+
+}  // namespace
+
+TableRenderer::TableRenderer() = default;
+TableRenderer::~TableRenderer() = default;
+
+bool TableRenderer::initialize(QString* error)
+{
+    initializeOpenGLFunctions();
+    tableProgram_ = makeProgram(QStringLiteral("table"), false, error);
+    if (!tableProgram_) return false;
+    ballProgram_ = makeProgram(QStringLiteral("ball"), false, error);
+    if (!ballProgram_) return false;
+    shadowProgram_ = makeProgram(QStringLiteral("shadow"), false, error);
+    if (!shadowProgram_) return false;
+    lineProgram_ = makeProgram(QStringLiteral("line"), true, error);
+    if (!lineProgram_) return false;
+
+    // Table and cue: MeshVertex layout.
+    auto meshVao = [this](unsigned int& vao, unsigned int& vbo) {
+        glGenVertexArrays(1, &vao);
+        glGenBuffers(1, &vbo);
+        glBindVertexArray(vao);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+        const auto stride = static_cast<GLsizei>(sizeof(MeshVertex));
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, offset(offsetof(MeshVertex, position)));
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, offset(offsetof(MeshVertex, normal)));
+        glEnableVertexAttribArray(2);
+        glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, offset(offsetof(MeshVertex, colour)));
+        glEnableVertexAttribArray(3);
+        glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, offset(offsetof(MeshVertex, material)));
+    };
+    meshVao(tableVao_, tableVbo_);
+    meshVao(cueVao_, cueVbo_);
+    const std::vector<MeshVertex> cue = buildCueStickMesh();
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cue.size() * sizeof(MeshVertex)), cue.data(), GL_STATIC_DRAW);
+    cueCount_ = static_cast<int>(cue.size());
+
+    // Sphere shared by the balls and the ghost balls; instance buffers per use.
+    const SphereMesh sphere = buildSphereMesh(40, 24);
+    glGenBuffers(1, &sphereVbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, sphereVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(sphere.positions.size() * sizeof(QVector3D)),
+                 sphere.positions.data(), GL_STATIC_DRAW);
+    glGenBuffers(1, &sphereEbo_);
+    sphereIndexCount_ = static_cast<int>(sphere.indices.size());
+    auto ballVao = [this, &sphere](unsigned int& vao, unsigned int& instances) {
+        glGenVertexArrays(1, &vao);
+        glBindVertexArray(vao);
+        glBindBuffer(GL_ARRAY_BUFFER, sphereVbo_);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(QVector3D), offset(0));
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphereEbo_);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(sphere.indices.size() * sizeof(unsigned int)),
+                     sphere.indices.data(), GL_STATIC_DRAW);
+        glGenBuffers(1, &instances);
+        glBindBuffer(GL_ARRAY_BUFFER, instances);
+        for (unsigned int k = 0; k < 4; ++k) {
+            glEnableVertexAttribArray(1 + k);
+            glVertexAttribPointer(1 + k, 4, GL_FLOAT, GL_FALSE, kFloatsPerBall * sizeof(float), offset(4 * k * sizeof(float)));
+            glVertexAttribDivisor(1 + k, 1);
+        }
+    };
+    ballVao(ballVao_, ballInstanceVbo_);
+    ballVao(ghostVao_, ghostInstanceVbo_);
+
+    // Shadows: a quad per ball, reading the centre and radius from the ball instances.
+    const std::array<float, 8> corners{-1, -1, 1, -1, -1, 1, 1, 1};
+    glGenVertexArrays(1, &shadowVao_);
+    glBindVertexArray(shadowVao_);
+    glGenBuffers(1, &quadVbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, quadVbo_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), offset(0));
+    glBindBuffer(GL_ARRAY_BUFFER, ballInstanceVbo_);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, kFloatsPerBall * sizeof(float), offset(0));
+    glVertexAttribDivisor(1, 1);
+
+    for (LineBuffer* b : {&pathLines_, &markerLines_, &ghostLines_, &dynamicLines_}) createLineBuffer(*b);
+    glBindVertexArray(0);
+    createDigitTexture();
+    initialized_ = true;
+    tableDirty_ = overlaysDirty_ = true;
+    return true;
+}
+
+void TableRenderer::release()
+{
+    if (!initialized_) return;
+    for (unsigned int* vao : {&tableVao_, &cueVao_, &ballVao_, &ghostVao_, &shadowVao_, &pathLines_.vao, &markerLines_.vao,
+                              &ghostLines_.vao, &dynamicLines_.vao}) {
+        glDeleteVertexArrays(1, vao);
+        *vao = 0;
+    }
+    for (unsigned int* vbo : {&tableVbo_, &cueVbo_, &sphereVbo_, &sphereEbo_, &ballInstanceVbo_, &ghostInstanceVbo_,
+                              &quadVbo_, &pathLines_.vbo, &markerLines_.vbo, &ghostLines_.vbo, &dynamicLines_.vbo}) {
+        glDeleteBuffers(1, vbo);
+        *vbo = 0;
+    }
+    glDeleteTextures(1, &digitTexture_);
+    digitTexture_ = 0;
+    tableProgram_.reset();
+    ballProgram_.reset();
+    shadowProgram_.reset();
+    lineProgram_.reset();
+    initialized_ = false;
+}
+
+void TableRenderer::createLineBuffer(LineBuffer& buffer)
+{
+    glGenVertexArrays(1, &buffer.vao);
+    glGenBuffers(1, &buffer.vbo);
+    glBindVertexArray(buffer.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
+    const auto stride = static_cast<GLsizei>(sizeof(LineVertex));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, offset(offsetof(LineVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, offset(offsetof(LineVertex, colour)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, offset(offsetof(LineVertex, time)));
+    buffer.capacity = 0;
+    buffer.count = 0;
+}
+
+void TableRenderer::uploadLines(LineBuffer& buffer, const std::vector<LineVertex>& vertices)
+{
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.vbo);
+    if (vertices.size() > buffer.capacity) {
+        // Grow geometrically so that a growing frame-to-frame load settles quickly.
+        buffer.capacity = std::max<std::size_t>(vertices.size(), 2 * buffer.capacity);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(buffer.capacity * sizeof(LineVertex)), nullptr,
+                     GL_DYNAMIC_DRAW);
+    }
+    if (!vertices.empty())
+        glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vertices.size() * sizeof(LineVertex)), vertices.data());
+    buffer.count = static_cast<int>(vertices.size());
+}
+
+void TableRenderer::createDigitTexture()
+{
+    QImage atlas(4 * kDigitCell, 4 * kDigitCell, QImage::Format_ARGB32_Premultiplied);
+    atlas.fill(Qt::black);
+    QPainter painter(&atlas);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    QFont font(QStringLiteral("DejaVu Sans"));
+    font.setBold(true);
+    font.setPixelSize(static_cast<int>(kDigitCell * 0.62));
+    painter.setFont(font);
+    painter.setPen(Qt::white);
+    for (int n = 1; n < 16; ++n) {
+        const QRect cell((n % 4) * kDigitCell, (n / 4) * kDigitCell, kDigitCell, kDigitCell);
+        if (n >= 10) {
+            QFont narrow = font;
+            narrow.setPixelSize(static_cast<int>(kDigitCell * 0.52));
+            narrow.setStretch(85);
+            painter.setFont(narrow);
+        } else {
+            painter.setFont(font);
+        }
+        painter.drawText(cell, Qt::AlignCenter, QString::number(n));
+        // 6 and 9 are underlined so that they can be told apart upside down.
+        if (n == 6 || n == 9) painter.fillRect(QRect(cell.center().x() - 16, cell.bottom() - 22, 32, 7), Qt::white);
+    }
+    painter.end();
+    const QImage grey = atlas.convertToFormat(QImage::Format_Grayscale8);
+    glGenTextures(1, &digitTexture_);
+    glBindTexture(GL_TEXTURE_2D, digitTexture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    // Row 0 of the image becomes texture row v = 0 (ball.frag flips v to suit); the copy packs the
+    // rows tightly whatever the image's line padding.
+    std::vector<unsigned char> pixels(static_cast<std::size_t>(grey.width() * grey.height()));
+    for (int y = 0; y < grey.height(); ++y)
+        std::copy_n(grey.constScanLine(y), grey.width(), pixels.begin() + static_cast<std::ptrdiff_t>(y) * grey.width());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, grey.width(), grey.height(), 0, GL_RED, GL_UNSIGNED_BYTE, pixels.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void TableRenderer::setScene(const ViewScene& scene)
+{
+    const SimulationResult* before = scene_.result.get();
+    const SimulationResult* after = scene.result.get();
+    const bool sameTable = before && after && before->table.kind == after->table.kind &&
+                           before->table.length == after->table.length && before->table.width == after->table.width &&
+                           before->table.cushionHeight == after->table.cushionHeight &&
+                           before->table.pockets.size() == after->table.pockets.size();
+    if (!sameTable) tableDirty_ = true;
+    scene_ = scene;
+    overlaysDirty_ = true;
+    orientations_.reset(scene_.result);
+    looks_.clear();
+    if (after)
+        for (const Ball& b : after->balls) looks_.push_back(ballLook(after->table.kind, b.id));
+}
+
+void TableRenderer::uploadTable()
+{
+    std::vector<MeshVertex> mesh;
+    if (scene_.result) mesh = buildTableMesh(scene_.result->table);
+    glBindBuffer(GL_ARRAY_BUFFER, tableVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(MeshVertex)), mesh.data(), GL_STATIC_DRAW);
+    tableCount_ = static_cast<int>(mesh.size());
+    tableDirty_ = false;
+}
+
+void TableRenderer::uploadSceneOverlays(int highlightedEvent)
+{
+    std::vector<LineVertex> lines;
+    std::vector<float> ghosts;
+    if (scene_.result) {
+        const SimulationResult& r = *scene_.result;
+        buildPathLines(r, lines);
+        uploadLines(pathLines_, lines);
+        buildEventMarkers(r, highlightedEvent, lines);
+        uploadLines(markerLines_, lines);
+        buildGhostLines(r, lines);
+        uploadLines(ghostLines_, lines);
+        for (const GhostBall& g : ghostBalls(r)) {
+            ghosts.insert(ghosts.end(), {g.centre.x(), g.centre.y(), g.centre.z(), g.radius, 0, 0, 0, 1, 0.92f, 0.92f, 0.95f,
+                                         0, 0, 0, 0, 0.28f});
+        }
+    } else {
+        for (LineBuffer* b : {&pathLines_, &markerLines_, &ghostLines_}) b->count = 0;
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, ghostInstanceVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(ghosts.size() * sizeof(float)), ghosts.data(), GL_STATIC_DRAW);
+    ghostCount_ = static_cast<int>(ghosts.size() / kFloatsPerBall);
+    overlaysHighlight_ = highlightedEvent;
+    overlaysDirty_ = false;
+}
+
+void TableRenderer::updateBallInstances(const RenderFrame& frame)
+{
+    states_.clear();
+    scratchInstances_.clear();
+    if (!scene_.result) {
+        ballCount_ = 0;
+        return;
+    }
+    const SimulationResult& r = *scene_.result;
+    for (std::size_t i = 0; i < r.balls.size(); ++i) {
+        const int index = static_cast<int>(i);
+        states_.push_back(r.timelines.empty() ? r.balls[i].state : r.stateAt(index, frame.time));
+        const BallState& s = states_.back();
+        if (s.motion == MotionState::Pocketed) continue;
+        const BallLook& look = looks_[i];
+        const auto radius = static_cast<float>(r.balls[i].radius);
+        float instance[kFloatsPerBall] = {static_cast<float>(s.position.x()), static_cast<float>(s.position.y()), radius, radius};
+        putQuaternion(instance + 4, orientations_.at(index, frame.time));
+        instance[8] = look.colour.x();
+        instance[9] = look.colour.y();
+        instance[10] = look.colour.z();
+        instance[11] = static_cast<float>(look.number);
+        instance[12] = look.striped ? 1.0f : 0.0f;
+        instance[13] = look.dotted ? 1.0f : 0.0f;
+        instance[14] = index == frame.selectedBall ? 1.0f : 0.0f;
+        instance[15] = 1.0f;
+        scratchInstances_.insert(scratchInstances_.end(), instance, instance + kFloatsPerBall);
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, ballInstanceVbo_);
+    const std::size_t needed = scratchInstances_.size() / kFloatsPerBall;
+    if (needed > ballCapacity_) {
+        ballCapacity_ = std::max<std::size_t>(needed, 2 * ballCapacity_);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(ballCapacity_ * kFloatsPerBall * sizeof(float)), nullptr,
+                     GL_DYNAMIC_DRAW);
+    }
+    if (needed > 0)
+        glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(scratchInstances_.size() * sizeof(float)),
+                        scratchInstances_.data());
+    ballCount_ = static_cast<int>(needed);
+}
+
+void TableRenderer::drawLines(const LineBuffer& buffer, float widthPx, float pastAlpha,
+                              float futureAlpha, float dashPeriod)
+{
+    if (buffer.count == 0 || (pastAlpha <= 0.0f && futureAlpha <= 0.0f)) return;
+    lineProgram_->setUniformValue("uWidth", widthPx);
+    lineProgram_->setUniformValue("uPastAlpha", pastAlpha);
+    lineProgram_->setUniformValue("uFutureAlpha", futureAlpha);
+    lineProgram_->setUniformValue("uDashPeriod", dashPeriod);
+    glBindVertexArray(buffer.vao);
+    glDrawArrays(GL_LINES, 0, buffer.count);
+}
+
+void TableRenderer::render(const RenderFrame& frame)
+{
+    glViewport(0, 0, frame.viewportPixels.width(), frame.viewportPixels.height());
+    glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!initialized_ || !scene_.result) return;
+    const SimulationResult& r = *scene_.result;
+    if (tableDirty_) uploadTable();
+    if (overlaysDirty_ || overlaysHighlight_ != frame.highlightedEvent) uploadSceneOverlays(frame.highlightedEvent);
+    updateBallInstances(frame);
+
+    const auto L = static_cast<float>(r.table.length), W = static_cast<float>(r.table.width);
+    const std::array<QVector3D, 2> lamps{QVector3D(0.25f * L, 0.5f * W, 1.1f), QVector3D(0.75f * L, 0.5f * W, 1.1f)};
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+
+    // Table and cue stick.
+    tableProgram_->bind();
+    tableProgram_->setUniformValue("uViewProjection", frame.viewProjection);
+    tableProgram_->setUniformValue("uModel", QMatrix4x4());
+    tableProgram_->setUniformValue("uEye", frame.eye);
+    tableProgram_->setUniformValueArray("uLights", lamps.data(), 2);
+    std::array<QVector3D, 6> pockets{};
+    const int pocketCount = static_cast<int>(std::min<std::size_t>(r.table.pockets.size(), pockets.size()));
+    for (int i = 0; i < pocketCount; ++i) {
+        const Pocket& p = r.table.pockets[static_cast<std::size_t>(i)];
+        pockets[static_cast<std::size_t>(i)] =
+            QVector3D(static_cast<float>(p.centre.x()), static_cast<float>(p.centre.y()), static_cast<float>(p.radius));
+    }
+    tableProgram_->setUniformValueArray("uPockets", pockets.data(), 6);
+    tableProgram_->setUniformValue("uPocketCount", pocketCount);
+    tableProgram_->setUniformValue("uTableSize", QVector2D(L, W));
+    glBindVertexArray(tableVao_);
+    glDrawArrays(GL_TRIANGLES, 0, tableCount_);
+    const bool beforeShot = frame.time <= 0.0;
+    const bool showCue = beforeShot && scene_.shot && frame.overlays.test(static_cast<std::size_t>(Overlay::CueAndAim));
+    if (showCue) {
+        if (const std::optional<QMatrix4x4> model = cuePlacement(r, *scene_.shot)) {
+            tableProgram_->setUniformValue("uModel", *model);
+            glBindVertexArray(cueVao_);
+            glDrawArrays(GL_TRIANGLES, 0, cueCount_);
+        }
+    }
+
+    // Contact shadows, then the balls.
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    if (ballCount_ > 0) {
+        shadowProgram_->bind();
+        shadowProgram_->setUniformValue("uViewProjection", frame.viewProjection);
+        glBindVertexArray(shadowVao_);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, ballCount_);
+    }
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    ballProgram_->bind();
+    ballProgram_->setUniformValue("uViewProjection", frame.viewProjection);
+    ballProgram_->setUniformValue("uEye", frame.eye);
+    ballProgram_->setUniformValueArray("uLights", lamps.data(), 2);
+    ballProgram_->setUniformValue("uDigits", 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, digitTexture_);
+    if (ballCount_ > 0) {
+        glBindVertexArray(ballVao_);
+        glDrawElementsInstanced(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr, ballCount_);
+    }
+
+    // Overlays: translucent, depth-tested against the table and the balls, not writing depth.
+    glEnable(GL_BLEND);
+    glDepthMask(GL_FALSE);
+    auto on = [&frame](Overlay o) { return frame.overlays.test(static_cast<std::size_t>(o)); };
+    if (on(Overlay::GhostBalls) && ghostCount_ > 0) {
+        glBindVertexArray(ghostVao_);
+        glDrawElementsInstanced(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr, ghostCount_);
+    }
+    glDisable(GL_CULL_FACE);
+
+    scratchLines_.clear();
+    if (on(Overlay::Velocities)) appendVelocityArrows(r, states_, scratchLines_);
+    if (on(Overlay::Spin)) appendSpinIndicators(r, states_, scratchLines_);
+    if (showCue) appendAimLine(r, *scene_.shot, scratchLines_);
+    appendSelectionRing(r, states_, frame.selectedBall, scratchLines_);
+    uploadLines(dynamicLines_, scratchLines_);
+
+    lineProgram_->bind();
+    lineProgram_->setUniformValue("uViewProjection", frame.viewProjection);
+    lineProgram_->setUniformValue("uViewport", QVector2D(static_cast<float>(frame.viewportPixels.width()),
+                                                         static_cast<float>(frame.viewportPixels.height())));
+    lineProgram_->setUniformValue("uTime", static_cast<float>(frame.time));
+    drawLines(pathLines_, 2.5f, on(Overlay::Trails) ? 1.0f : 0.0f, on(Overlay::FuturePaths) ? 0.75f : 0.0f, 0.035f);
+    if (on(Overlay::GhostBalls)) drawLines(ghostLines_, 2.0f, 1.0f, 0.5f, 0.0f);
+    if (on(Overlay::EventMarkers)) drawLines(markerLines_, 2.5f, 1.0f, 0.45f, 0.0f);
+    drawLines(dynamicLines_, 3.0f, 1.0f, 1.0f, 0.0f);
+
+    glBindVertexArray(0);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
+}  // namespace cuelab
