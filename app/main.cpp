@@ -127,6 +127,7 @@ int main(int argc, char* argv[])
 
     cuelab::MainWindow window;
     window.show();
+    window.activateWindow();  // keyboard shortcuts work at once, even without a window manager
     const QStringList args = parser.positionalArguments();
     if (!args.isEmpty()) {
         // After the window is up, so that a refused file's message has a window to sit on.

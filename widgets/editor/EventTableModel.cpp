@@ -88,6 +88,7 @@ QVariant EventTableModel::data(const QModelIndex& index, int role) const
         default: return {};
         }
     }
+    if (role == Qt::ToolTipRole && index.column() == DetailsColumn) return details(*result_, e);
     if (role == Qt::TextAlignmentRole && (index.column() == IndexColumn || index.column() == TimeColumn || index.column() == GapColumn))
         return QVariant(Qt::AlignRight | Qt::AlignVCenter);
     if (role == Qt::ForegroundRole && e.time > time_ + 1e-12)  // not happened yet at the current time
