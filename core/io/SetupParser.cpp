@@ -1,6 +1,7 @@
 // parseSetup: JSON text -> Setup, refusing (never half-loading) anything CONTRACT.md version 1 does
 // not allow or the simulator cannot take. Every refusal names the JSON path of the culprit.
 
+#include "JsonDuplicateKeys.h"
 #include "SetupFile.h"
 #include "SetupGeometry.h"
 #include "SetupProblem.h"
@@ -360,6 +361,7 @@ std::optional<Setup> parseSetup(const QByteArray& json, const QString& fileName,
         return std::nullopt;
     }
     try {
+        if (auto duplicate = findDuplicateKey(json)) throw Refusal{*duplicate};
         const QJsonValue root = document.isObject() ? QJsonValue(document.object()) : QJsonValue(document.array());
         return parseDocument(root);
     } catch (const Refusal& refusal) {

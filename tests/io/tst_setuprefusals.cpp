@@ -65,6 +65,13 @@ void TestSetupRefusals::refused_data()
                                      << "version" << "expected a number";
     QTest::newRow("balls missing") << QByteArray(R"({"format": "cuelab-setup", "version": 1})") << "balls"
                                    << "missing";
+    QTest::newRow("duplicate top-level key") << QByteArray("{\"format\": \"cuelab-setup\", \"version\": 1,\n\"name\": \"a\",\n\"name\": \"b\", \"balls\": []}")
+                                             << "name" << "duplicate key (the first one is on line 2)";
+    QTest::newRow("duplicate key in a ball") << withBalls(R"([{"id": "cue", "position": [0.6, 0.6]},
+                                                             {"id": "1", "position": [1.8, 0.6], "radius": 0.03, "radius": 0.02}])")
+                                             << "balls[1].radius" << "duplicate key";
+    QTest::newRow("duplicate key, one escaped") << withMembers(R"("physics": {"ball_ball": {"model": "frictional", "mod\u0065l": "frictionless"}})")
+                                                << "physics.ball_ball.model" << "duplicate key";
     QTest::newRow("unknown top-level key") << withMembers(R"("colour": "green")") << "colour" << "unknown key";
     QTest::newRow("name not a string") << withMembers(R"("name": 3)") << "name" << "expected a string";
     QTest::newRow("notes null") << withMembers(R"("notes": null)") << "notes" << "found null";
@@ -288,8 +295,13 @@ void TestSetupRefusals::overlapAmountIsReadable()
 
 void TestSetupRefusals::validBaseLoads()
 {
-    // The documents the rows above break are valid before they are broken.
+    // Equal keys in different objects, and keys inside strings, are no duplicates.
+    const char* const sameKeysApart = "\"name\": \"{\\\"name\\\": 1, \\\"name\\\": 2}\", "
+                                      "\"physics\": {\"ball_ball\": {\"model\": \"frictional\"}, "
+                                      "\"ball_cushion\": {\"model\": \"mirror\"}}";
     QString error;
+    QVERIFY2(io::parseSetup(withMembers(sameKeysApart), QStringLiteral("rack.json"), &error), qPrintable(error));
+    // The documents the rows above break are valid before they are broken.
     QVERIFY2(io::parseSetup(withMembers(""), QStringLiteral("rack.json"), &error), qPrintable(error));
     QVERIFY2(io::parseSetup(withShot((QByteArray(kShot) + "}").constData()), QStringLiteral("rack.json"), &error),
              qPrintable(error));
