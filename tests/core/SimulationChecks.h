@@ -25,32 +25,40 @@ inline Ball ballAt(const Table& table, const std::string& id, const Vec2& positi
     return b;
 }
 
-// The largest overlap (m) between two balls or a ball and a cushion nose or jaw at time t; <= 0
-// when nothing overlaps.
-inline double maxOverlapAt(const SimulationResult& r, double t)
+// The largest overlap (m) between two balls or a ball and a cushion nose or jaw in the states s;
+// <= 0 when nothing overlaps.
+inline double maxOverlap(const SimulationResult& r, const std::vector<BallState>& s)
 {
-    const std::vector<BallState> s = r.statesAt(t);
+    // Plain doubles rather than Eigen expressions: this runs at every event of thousands of runs,
+    // also in unoptimised sanitizer builds.
     double worst = -1.0;
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (s[i].motion == MotionState::Pocketed) continue;
         const double R = r.balls[i].radius;
+        const double x = s[i].position.x(), y = s[i].position.y();
         for (std::size_t j = i + 1; j < s.size(); ++j) {
             if (s[j].motion == MotionState::Pocketed) continue;
-            worst = std::max(worst, R + r.balls[j].radius - (s[i].position - s[j].position).norm());
+            const double reach = R + r.balls[j].radius;
+            const double dx = s[j].position.x() - x, dy = s[j].position.y() - y;
+            if (dx * dx + dy * dy < reach * reach) worst = std::max(worst, reach - std::sqrt(dx * dx + dy * dy));
         }
         for (const CushionSegment& c : r.table.cushions) {
-            const Vec2 ab = c.b - c.a;
-            const double lambda = (s[i].position - c.a).dot(ab) / ab.squaredNorm();
+            const double ax = c.a.x(), ay = c.a.y(), bx = c.b.x() - ax, by = c.b.y() - ay;
+            const double lambda = ((x - ax) * bx + (y - ay) * by) / (bx * bx + by * by);
             if (lambda < 0.0 || lambda > 1.0) continue;
-            const double d = (s[i].position - c.a).dot(c.normal);
+            const double d = (x - ax) * c.normal.x() + (y - ay) * c.normal.y();
             if (d < -R) continue;  // far behind the nose line: a ball in a pocket's mouth region
             worst = std::max(worst, R - d);
         }
-        for (const JawTip& j : r.table.jaws)
-            worst = std::max(worst, R + j.radius - (s[i].position - j.centre).norm());
+        for (const JawTip& j : r.table.jaws) {
+            const double dx = x - j.centre.x(), dy = y - j.centre.y();
+            worst = std::max(worst, R + j.radius - std::sqrt(dx * dx + dy * dy));
+        }
     }
     return worst;
 }
+
+inline double maxOverlapAt(const SimulationResult& r, double t) { return maxOverlap(r, r.statesAt(t)); }
 
 // A ball that is not pocketed must have its centre on the playing surface, or (near a pocket) in
 // that pocket's mouth.
