@@ -44,8 +44,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // less than this (about 1e-14 of the squared contact distance) is reported as a touch.
 constexpr double kZeroTolerance = 16.0 * kEpsilon;
 
-// Leading coefficients at or below this fraction of the largest one are dropped: the roots they carry
-// lie beyond 2^200 (about 1e60) and evaluating near them would overflow.
+// Leading coefficients at or below this fraction of sum |c_i| / 8 (between 1/8 and 5/8 of the largest
+// coefficient) are dropped: the roots they carry lie beyond about 2^200 (1e60), and evaluating near
+// them would overflow.
 constexpr double kNegligibleLeading = 0x1p-200;
 
 // The iteration stops once its estimated error is this small relative to the root: a further step

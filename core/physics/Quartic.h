@@ -12,8 +12,8 @@ using Quartic = std::array<double, 5>;
 
 // All real roots of the quartic, sorted ascending, written to roots; returns their count (0..4).
 // A (near-)vanishing leading coefficient degrades gracefully to the cubic, quadratic or linear case
-// (a leading coefficient below 2^-200 of the largest one is dropped; the roots it carries would lie
-// beyond 1e60). Double roots are reported once or twice, never missed: where p touches zero within
+// (a leading coefficient below about 2^-200 of the largest one is dropped; the roots it carries
+// would lie beyond 1e60). Double roots are reported once or twice, never missed: where p touches zero within
 // the rounding error of its evaluation (a grazing contact), the touching point is a root. A constant
 // or zero polynomial, or one with a NaN or infinite coefficient, has no roots here.
 int solveQuartic(const Quartic& c, std::array<double, 4>& roots);
