@@ -29,7 +29,7 @@ const char* const kCommands =
     "3 the simulation could not finish (event cap, or max_time before every ball rested).\n"
     "Times in seconds. See docs/cli.md.";
 
-// The most frames `trajectory` prints (10 minutes at 60 frames per second is 36000).
+// The most frames `trajectory` prints (a 10-minute run at 60 frames per second has 36000).
 constexpr double kMaxFrames = 1e7;
 
 // What the command line asked for, once checked.

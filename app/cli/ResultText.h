@@ -15,8 +15,13 @@ std::string simulationJson(const SimulationResult& result);
 // `state --at T`: { "time": T, "balls": [...] } with the exact state of every ball at t.
 std::string stateJson(const SimulationResult& result, double t);
 
+// The time of frame k: k * frameDt rounded to 15 significant digits. The product carries the
+// binary error of frameDt (3 * 0.1 = 0.30000000000000004); 15 digits lie above that error, so the
+// frame falls on the decimal time a person expects (0.3), within 1e-15 relative of the product.
+double frameTime(long long k, double frameDt);
+
 // `trajectory`: the header time,ball,state,x,y,vx,vy,wx,wy,wz, then one row per ball at every
-// frame k * frameDt in [0, endTime] and at every event time (the state just after the event).
+// frame time in [0, endTime] and at every event time (the state just after the event).
 std::string trajectoryCsv(const SimulationResult& result, double frameDt);
 
 }  // namespace cuelab::cli

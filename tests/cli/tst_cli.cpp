@@ -455,9 +455,11 @@ void TestCli::trajectoryCsv()
     }
     for (const double t : times) QCOMPARE(rowsAt[t], int(ballCount));  // one row per ball at each time
 
-    // The times are exactly the frames k * frameDt up to the end, and every event time.
+    // The times are exactly the frames k * frameDt (to 15 significant digits, so 3 * 0.1 is 0.3)
+    // up to the end, and every event time.
+    auto frame = [&](long long k) { return QString::number(double(k) * frameDt, 'g', 15).toDouble(); };
     QSet<double> expected;
-    for (long long k = 0; double(k) * frameDt <= endTime; ++k) expected.insert(double(k) * frameDt);
+    for (long long k = 0; frame(k) <= endTime; ++k) expected.insert(frame(k));
     for (const QJsonValue& e : simulation.value("events").toArray()) expected.insert(e.toObject().value("time").toDouble());
     QCOMPARE(QSet<double>(times.begin(), times.end()), expected);
 }
