@@ -61,6 +61,8 @@ private slots:
     void loadsAndSimulatesToRest();
     void racksAreFrozen_data();
     void racksAreFrozen();
+    void cueBallAfterTheHit_data();
+    void cueBallAfterTheHit();
     void halfBallCutDeflection();
     void stunCutSeparation();
     void cradleHandsOnTheSpeed();
@@ -163,6 +165,33 @@ void TestExamples::racksAreFrozen()
     QCOMPARE(touching, frozen);
 }
 
+void TestExamples::cueBallAfterTheHit_data()
+{
+    // Where the cue ball comes to rest, measured from where it met the object ball, along its
+    // direction of travel at the hit (m): what the notes of stun, follow and draw promise.
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<double>("least");
+    QTest::addColumn<double>("most");
+    QTest::newRow("stun: stops dead") << "stun-shot.json" << -0.01 << 0.01;
+    QTest::newRow("follow: rolls on, stops before the pocket") << "follow-shot.json" << 0.25 << 0.45;
+    QTest::newRow("draw: comes back about 15 cm") << "draw-shot.json" << -0.20 << -0.10;
+    QTest::newRow("straight shot: follows") << "straight-shot.json" << 0.15 << 0.45;
+}
+
+void TestExamples::cueBallAfterTheHit()
+{
+    QFETCH(QString, file);
+    QFETCH(double, least);
+    QFETCH(double, most);
+    const SimulationResult r = simulate(load(file));
+    const Event& hit = firstEvent(r, EventKind::BallBall, "cue");
+    const Vec2 direction = hit.before[0].velocity.normalized();
+    const BallState end = r.stateAt(r.ballIndex("cue"), r.endTime);
+    QCOMPARE(int(end.motion), int(MotionState::Stationary));
+    const double travel = (end.position - hit.before[0].position).dot(direction);
+    QVERIFY2(travel >= least && travel <= most, qPrintable(QString::number(travel)));
+}
+
 void TestExamples::halfBallCutDeflection()
 {
     // PHYSICS.md: a rolling cue ball cut half-ball is deflected by 33.67° once it rolls again with
@@ -202,6 +231,9 @@ void TestExamples::cradleHandsOnTheSpeed()
     QCOMPARE(last.time, first.time);
     const double in = first.before[0].velocity.norm();
     QVERIFY(std::abs(last.after[1].velocity.norm() - in) < 1e-9 * in);
+    // The 5 comes back off the foot rail and the line knocks the cue ball back past where it started.
+    const Setup setup = load(QStringLiteral("newtons-cradle.json"));
+    QVERIFY(r.stateAt(r.ballIndex("cue"), r.endTime).position.x() < setup.balls[0].state.position.x());
 }
 
 void TestExamples::kickAndThreeCushionPaths()
