@@ -4,6 +4,7 @@
 #include "Quantities.h"
 
 #include <QAction>
+#include <QFontMetrics>
 #include <QDoubleSpinBox>
 #include <QHeaderView>
 #include <QMenu>
@@ -13,6 +14,8 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace cuelab {
 
@@ -52,7 +55,7 @@ public:
 BallsPanel::BallsPanel(Document* document, QWidget* parent) : QWidget(parent), document_(document)
 {
     table_ = new QTableWidget(0, ColumnCount, this);
-    table_->setHorizontalHeaderLabels({tr("Ball"), tr("x₀ (m)"), tr("y₀ (m)"), tr("State"), tr("Position (m)"), tr("Speed (m/s)")});
+    table_->setHorizontalHeaderLabels({tr("Ball"), tr("x₀ (m)"), tr("y₀ (m)"), tr("State"), tr("Position (m)"), tr("|v| (m/s)")});
     table_->horizontalHeaderItem(XColumn)->setToolTip(tr("Set-up position along the length, in metres (double-click to edit)"));
     table_->horizontalHeaderItem(YColumn)->setToolTip(tr("Set-up position across the width, in metres (double-click to edit)"));
     table_->horizontalHeaderItem(StateColumn)->setToolTip(tr("Motion state at the current time"));
@@ -62,7 +65,9 @@ BallsPanel::BallsPanel(Document* document, QWidget* parent) : QWidget(parent), d
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
     table_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     table_->verticalHeader()->hide();
-    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Columns are sized when the balls change, not on every frame of playback (ResizeToContents
+    // would measure every row each time a speed changes).
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     table_->horizontalHeader()->setStretchLastSection(true);
     table_->setAlternatingRowColors(true);
     auto* delegate = new CoordinateDelegate(table_);
@@ -183,7 +188,21 @@ void BallsPanel::rebuild()
     if (selected >= 0 && selected < table_->rowCount()) table_->selectRow(selected);
     refreshing_ = false;
     refreshMotion();
+    fitColumns();
     updateActions();
+}
+
+void BallsPanel::fitColumns()
+{
+    table_->resizeColumnsToContents();
+    // Room for the widest text the time-dependent columns can show.
+    const QFontMetrics fm = table_->fontMetrics();
+    const int padding = 2 * fm.averageCharWidth() + 4;
+    const auto atLeast = [&](int column, const QString& widest) {
+        table_->setColumnWidth(column, std::max(table_->columnWidth(column), fm.horizontalAdvance(widest) + padding));
+    };
+    atLeast(StateColumn, QStringLiteral("stationary"));
+    atLeast(PositionColumn, QStringLiteral("(0.000, 0.000)"));
 }
 
 void BallsPanel::refreshMotion()

@@ -36,6 +36,7 @@ signals:
 private:
     void rebuild();         // rows from the setup
     void refreshMotion();   // the columns that depend on the time
+    void fitColumns();
     void commitItem(int row, int column);
     void updateActions();
 

@@ -17,7 +17,7 @@ EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent), table_(new QTableVi
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->verticalHeader()->hide();
     table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
-    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);  // sized per result, not per frame
     table_->horizontalHeader()->setStretchLastSection(true);
     table_->setAlternatingRowColors(true);
     table_->setToolTip(tr("Select an event to jump to its time and see it in the Inspector"));
@@ -42,6 +42,7 @@ void EventsPanel::setResult(std::shared_ptr<const SimulationResult> result)
     selecting_ = true;
     model_->setResult(std::move(result));  // a reset clears the selection
     selecting_ = false;
+    table_->resizeColumnsToContents();
 }
 
 void EventsPanel::setTime(double seconds) { model_->setTime(seconds); }
