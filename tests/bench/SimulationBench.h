@@ -12,13 +12,13 @@ struct BreakFigures {
     int runs = 0;
 };
 
-// A frozen 8-ball rack broken at 8 m/s (cue speed) from the head spot on a 9-ft table, simulated
-// until every ball rests, `runs` times.
+// A frozen 8-ball rack broken from the head spot on a 9-ft table with the cue ball leaving at 8 m/s,
+// simulated until every ball rests, `runs` times.
 BreakFigures runBreakBench(int runs);
 
 struct ScalingPoint {
     int balls = 0;
-    double eventsPerSecond = 0.0;  // events processed per second of wall time, median of repeats
+    double eventsPerSecond = 0.0;  // logged events per second of processor time, over 8 layouts
 };
 
 // `balls` balls, all moving at t = 0 with random velocities and spins, on a closed table whose sides
