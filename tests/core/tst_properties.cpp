@@ -127,6 +127,10 @@ void TestProperties::randomSetups()
             QVERIFY2(e <= energy * (1 + 1e-12) + allowance + 1e-15, where.constData());
             energy = e;
         }
+        // Every collision begins with the bodies approaching (or pressed together at rest), never
+        // with them parting: no collision is found twice.
+        for (const Event& e : r.events)
+            if (isCollision(e.kind)) QVERIFY2(e.approachSpeed > -kRestingSpeed, where.constData());
         // Timelines: the state just after each event is what stateAt gives at its time.
         for (std::size_t k = 0; k < r.events.size(); ++k) {
             const Event& e = r.events[k];

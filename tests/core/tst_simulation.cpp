@@ -77,6 +77,8 @@ private slots:
     void cradle();
     void breakRuns_data();
     void breakRuns();
+    void analyticInTheLoop_data();
+    void analyticInTheLoop();
 };
 
 void TestSimulation::noShotNoEvents()
@@ -313,6 +315,56 @@ void TestSimulation::breakRuns()
         }
     }
     verifyTimelines(r);
+}
+
+void TestSimulation::analyticInTheLoop_data()
+{
+    QTest::addColumn<double>("cutDeg");  // angle between the cue ball's path and the line of centres
+    QTest::addColumn<double>("k");       // cue ball spin at impact as a multiple of rolling (1 = natural roll)
+    QTest::newRow("follow: re-rolls at 2/7") << 0.0 << 1.0;
+    QTest::newRow("half-ball 30 deg rule: 33.67 deg") << 30.0 << 1.0;
+    QTest::newRow("stun cut: 90 deg rule") << 45.0 << 0.0;
+}
+
+void TestSimulation::analyticInTheLoop()
+{
+    // The analytic results hold inside whole simulations, measured at the collision event and at the
+    // cue ball's next slide-to-roll event (e = 1, frictionless balls, a closed table).
+    QFETCH(double, cutDeg);
+    QFETCH(double, k);
+    Setup s;
+    s.table.pockets = false;
+    s.physics.ballBallRestitution = 1.0;
+    s.physics.muRoll = 0.0;  // keeps the cue ball's spin exactly k times rolling up to the impact
+    const Table t = makeTable(s.table);
+    const double v = 1.0, R = t.ballRadius, phi = cutDeg * M_PI / 180.0;
+    const Vec2 object(1.5, 0.6);
+    const Vec2 contactCentre = object - 2 * R * Vec2(std::cos(phi), std::sin(phi));
+    const Vec2 start = contactCentre - Vec2(0.4, 0.0);
+    s.balls.push_back(ballAt(t, "cue", start, Vec2(v, 0), Vec3(0, k * v / R, 0)));
+    s.balls.push_back(ballAt(t, "1", object));
+    if (k == 0.0) s.physics.muSlide = 0.0;  // a stun ball stays a stun ball up to the impact
+    const SimulationResult r = simulate(s);
+    const Event* hit = nullptr;
+    const Event* reroll = nullptr;
+    for (const Event& e : r.events) {
+        if (!hit && e.kind == EventKind::BallBall) hit = &e;
+        else if (hit && !reroll && e.kind == EventKind::SlideToRoll && e.balls[0] == 0) reroll = &e;
+    }
+    QVERIFY(hit);
+    QVERIFY((hit->before[0].position - contactCentre).norm() < 1e-9);
+    if (k == 0.0) {
+        const Vec2 a = hit->after[0].velocity, b = hit->after[1].velocity;
+        QVERIFY(std::abs(a.dot(b)) < 1e-12 * v * v);  // 90 degrees apart
+        return;
+    }
+    QVERIFY(reroll);
+    if (cutDeg == 0.0) {
+        QVERIFY((reroll->after[0].velocity - Vec2(2.0 / 7.0 * v, 0)).norm() < 1e-12);
+    } else {
+        const double out = std::atan2(std::abs(reroll->after[0].velocity.y()), reroll->after[0].velocity.x()) * 180.0 / M_PI;
+        QVERIFY2(std::abs(out - 33.67) < 0.01, qPrintable(QString::number(out)));
+    }
 }
 
 QTEST_APPLESS_MAIN(TestSimulation)
