@@ -77,6 +77,11 @@ public:
         margin += 0.1;
         grid_.reset(Vec2(-margin, -margin), Vec2(table_.length + margin, table_.width + margin), kCellSize, n_);
         r_.timelines.assign(n, {});
+        // Room for a typical run, so that the event loop rarely allocates.
+        for (std::size_t i = 0; i < n; ++i) {
+            r_.timelines[i].reserve(16);
+            partners_[i].reserve(8);
+        }
     }
 
     void run(const std::optional<CueStrike>& shot);

@@ -1,8 +1,9 @@
 // Determinism: a fixed 15-ball break hashed bit for bit (times, kinds, agents, states before and
 // after) against a checked-in value, and the same setup run twice gives identical logs.
 //
-// The checked-in hash changes only when the physics or the event order changes on purpose: then
-// update kBreakHash in the same commit and say why.
+// The checked-in hash changes only when the physics, the event order or the rounding of a root
+// (Quartic.cpp) changes on purpose: then update kBreakHash in the same commit and say why. It is the
+// same in optimised and unoptimised (sanitizer) builds.
 
 #include "Racks.h"
 #include "Simulation.h"
