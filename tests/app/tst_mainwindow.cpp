@@ -18,6 +18,7 @@
 #include <QAbstractButton>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QImage>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -104,6 +105,7 @@ private slots:
     void examplesOpen_data();
     void examplesOpen();
     void tipWidgetClickAndDrag();
+    void ballDragInTheViewIsOneStep();
     void ballPositionEditedInTheTable();
     void dockLayoutIsRemembered();
 
@@ -172,6 +174,7 @@ void TestMainWindow::screenshotCommandLine_data()
     QTest::newRow("bad size") << QStringList{QStringLiteral("--screenshot"), QStringLiteral("OUT"), setup, QStringLiteral("--size"), QStringLiteral("big")} << 2 << "--size";
     QTest::newRow("negative time") << QStringList{QStringLiteral("--screenshot"), QStringLiteral("OUT"), setup, QStringLiteral("--time"), QStringLiteral("-1")} << 2 << "--time";
     QTest::newRow("refused setup") << QStringList{QStringLiteral("--screenshot"), QStringLiteral("OUT"), QStringLiteral("/nonexistent/x.json")} << 1 << "x.json";
+    QTest::newRow("player view at 0.3 s") << QStringList{QStringLiteral("--screenshot"), QStringLiteral("OUT"), setup, QStringLiteral("--time"), QStringLiteral("0.3"), QStringLiteral("--camera"), QStringLiteral("player"), QStringLiteral("--size"), QStringLiteral("320x200")} << 0 << "";
 }
 
 void TestMainWindow::screenshotCommandLine()
@@ -188,7 +191,18 @@ void TestMainWindow::screenshotCommandLine()
     const QByteArray err = p.readAllStandardError();
     QVERIFY2(err.contains(message.toUtf8()), err.constData());
     QCOMPARE(p.exitCode(), exitCode);
-    QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("shot.png"))));
+    const QImage image(dir.filePath(QStringLiteral("shot.png")));
+    if (exitCode != 0) {
+        QVERIFY(image.isNull());  // a refusal writes nothing
+        return;
+    }
+    QCOMPARE(image.size(), QSize(320, 200));
+    // Something was drawn: the picture is not one flat colour.
+    const QColor corner = image.pixelColor(0, 0);
+    bool varied = false;
+    for (int y = 0; y < image.height() && !varied; y += 7)
+        for (int x = 0; x < image.width() && !varied; x += 7) varied = image.pixelColor(x, y) != corner;
+    QVERIFY(varied);
 }
 
 void TestMainWindow::modifiedMarkerFollowsUndo()
@@ -430,6 +444,35 @@ void TestMainWindow::tipWidgetClickAndDrag()
     w.document()->undoStack()->undo();
     QCOMPARE(w.document()->setup().shot->height, 0.0);
     QCOMPARE(tip->offset(), QPointF(0.0, 0.0));
+}
+
+void TestMainWindow::ballDragInTheViewIsOneStep()
+{
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.openFile(examplePath("half-ball-cut.json")));
+    w.document()->waitForResult();
+    QCoreApplication::processEvents();
+    TableView* view = w.tableView();
+    QPoint grab;
+    for (int y = 0; y < view->height() && grab.isNull(); y += 2)
+        for (int x = 0; x < view->width() && grab.isNull(); x += 2)
+            if (view->pickBall(QPointF(x, y)) == 1) grab = QPoint(x, y);
+    QVERIFY2(!grab.isNull(), "ball 1 is not under any point of the view");
+    const Vec2 start = w.document()->setup().balls[1].state.position;
+    const auto send = [view](QEvent::Type type, const QPoint& at, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent e(type, QPointF(at), view->mapToGlobal(QPointF(at)), button, buttons, Qt::NoModifier);
+        QCoreApplication::sendEvent(view, &e);
+    };
+    send(QEvent::MouseButtonPress, grab, Qt::LeftButton, Qt::LeftButton);
+    for (int step = 1; step <= 10; ++step) send(QEvent::MouseMove, grab - QPoint(4 * step, 0), Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, grab - QPoint(40, 0), Qt::LeftButton, Qt::NoButton);
+    const Vec2 end = w.document()->setup().balls[1].state.position;
+    QVERIFY2(end.x() < start.x() - 0.01, qPrintable(QStringLiteral("%1 -> %2").arg(start.x()).arg(end.x())));
+    QCOMPARE(w.document()->undoStack()->count(), 1);  // the whole drag is one step
+    w.document()->undoStack()->undo();
+    QCOMPARE(w.document()->setup().balls[1].state.position, start);
 }
 
 void TestMainWindow::ballPositionEditedInTheTable()
