@@ -62,7 +62,9 @@ bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset
                 RenderFrame frame;
                 frame.viewProjection = camera.projection(aspect) * camera.viewMatrix();
                 frame.eye = camera.eye();
+                frame.cameraUp = camera.up();
                 frame.viewportPixels = size;
+                frame.pixelAngle = pixelAngle(size.height());
                 frame.time = std::clamp(time, 0.0, std::max(scene.result->endTime, 0.0));
                 frame.overlays = defaultOverlays();
                 renderer.render(frame);

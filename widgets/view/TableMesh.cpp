@@ -65,6 +65,20 @@ public:
         triangle(va, vc, vd);
     }
 
+    // A flat quad split into nu x nv cells (bilinear between the corners), so that lighting
+    // evaluated per vertex follows the lamps' falloff.
+    void subdividedQuad(const QVector3D& a, const QVector3D& b, const QVector3D& c, const QVector3D& d,
+                        const QVector3D& normal, const QVector3D& colour, SurfaceMaterial material, int nu, int nv)
+    {
+        auto point = [&](int i, int j) {
+            const float u = static_cast<float>(i) / static_cast<float>(nu), v = static_cast<float>(j) / static_cast<float>(nv);
+            return (1 - v) * ((1 - u) * a + u * b) + v * ((1 - u) * d + u * c);
+        };
+        for (int i = 0; i < nu; ++i)
+            for (int j = 0; j < nv; ++j)
+                quad(point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1), normal, colour, material);
+    }
+
     // A flat disc on a horizontal plane.
     void disc(const Vec2& centre, double radius, double z, const QVector3D& colour, SurfaceMaterial material,
               int segments = 24)
@@ -178,7 +192,7 @@ std::vector<OutlinePoint> railOutline(const Table& table, const CushionSegment& 
 
     std::vector<OutlinePoint> first = pocketEnd(rail.a);
     std::vector<OutlinePoint> outline(first.rbegin(), first.rend());
-    const int noseSteps = 8;
+    const int noseSteps = 24;  // fine enough for per-vertex lighting
     for (int k = 0; k <= noseSteps; ++k)
         outline.push_back(outlinePoint(rail.a + (static_cast<double>(k) / noseSteps) * (rail.b - rail.a)));
     const std::vector<OutlinePoint> second = pocketEnd(rail.b);
@@ -258,8 +272,8 @@ std::vector<MeshVertex> buildTableMesh(const Table& table)
 
     // Cloth up to the rails (under the cushions); the pits close what a pocket cut opens.
     const double e = d + r;
-    mesh.quad(at(Vec2(-d, -d), 0), at(Vec2(L + d, -d), 0), at(Vec2(L + d, W + d), 0), at(Vec2(-d, W + d), 0), kUp,
-              cloth, SurfaceMaterial::Cloth);
+    mesh.subdividedQuad(at(Vec2(-d, -d), 0), at(Vec2(L + d, -d), 0), at(Vec2(L + d, W + d), 0), at(Vec2(-d, W + d), 0),
+                        kUp, cloth, SurfaceMaterial::Cloth, 48, 24);
 
     // Cushions.
     std::vector<std::vector<Vec2>> footprints;
@@ -275,8 +289,14 @@ std::vector<MeshVertex> buildTableMesh(const Table& table)
         for (const CushionSegment& c : table.cushions) {
             const Vec2 along = (c.b - c.a).normalized();
             const Vec2 back = -d * c.normal;
-            mesh.cushion({OutlinePoint{c.a, back - d * along}, OutlinePoint{c.b, back + d * along}}, table.cushionHeight,
-                         cushionCloth);
+            // Mitred ends, and points in between for per-vertex lighting.
+            std::vector<OutlinePoint> outline;
+            const int steps = 32;
+            for (int k = 0; k <= steps; ++k) {
+                const double s = static_cast<double>(k) / steps;
+                outline.push_back({c.a + s * (c.b - c.a), back + (2.0 * s - 1.0) * d * along});
+            }
+            mesh.cushion(outline, table.cushionHeight, cushionCloth);
         }
     }
 
@@ -286,11 +306,12 @@ std::vector<MeshVertex> buildTableMesh(const Table& table)
     const std::array<Vec2, 4> outer{Vec2(-e, -e), Vec2(L + e, -e), Vec2(L + e, W + e), Vec2(-e, W + e)};
     for (std::size_t i = 0; i < 4; ++i) {
         const std::size_t k = (i + 1) % 4;
-        mesh.quad(at(outer[i], z), at(outer[k], z), at(inner[k], z), at(inner[i], z), kUp, kWood, SurfaceMaterial::Wood);
+        mesh.subdividedQuad(at(outer[i], z), at(outer[k], z), at(inner[k], z), at(inner[i], z), kUp, kWood,
+                            SurfaceMaterial::Wood, 32, 2);
         const Vec2 edge = outer[k] - outer[i];
         const QVector3D outward = at(Vec2(edge.y(), -edge.x()).normalized(), 0.0);
-        mesh.quad(at(outer[i], low), at(outer[k], low), at(outer[k], z), at(outer[i], z), outward, 0.8f * kWood,
-                  SurfaceMaterial::Wood);
+        mesh.subdividedQuad(at(outer[i], low), at(outer[k], low), at(outer[k], z), at(outer[i], z), outward,
+                            0.8f * kWood, SurfaceMaterial::Wood, 32, 1);
     }
 
     // Sights: diamonds in the middle of the rail tops, at eighths of the length and quarters of the

@@ -1,7 +1,7 @@
 #include "TableRenderer.h"
 
 #include "CueStickMesh.h"
-#include "SphereMesh.h"
+#include "OrbitCamera.h"
 #include "TableMesh.h"
 
 #include <QImage>
@@ -77,6 +77,12 @@ std::optional<QMatrix4x4> cuePlacement(const SimulationResult& result, const Cue
 
 }  // namespace
 
+float pixelAngle(int heightPixels)
+{
+    const float halfFov = OrbitCamera::kFieldOfViewDeg / 2.0f * std::numbers::pi_v<float> / 180.0f;
+    return 2.0f * std::tan(halfFov) / static_cast<float>(std::max(1, heightPixels));
+}
+
 TableRenderer::TableRenderer() = default;
 TableRenderer::~TableRenderer() = default;
 
@@ -114,23 +120,17 @@ bool TableRenderer::initialize(QString* error)
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cue.size() * sizeof(MeshVertex)), cue.data(), GL_STATIC_DRAW);
     cueCount_ = static_cast<int>(cue.size());
 
-    // Sphere shared by the balls and the ghost balls; instance buffers per use.
-    const SphereMesh sphere = buildSphereMesh(40, 24);
-    glGenBuffers(1, &sphereVbo_);
-    glBindBuffer(GL_ARRAY_BUFFER, sphereVbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(sphere.positions.size() * sizeof(QVector3D)),
-                 sphere.positions.data(), GL_STATIC_DRAW);
-    glGenBuffers(1, &sphereEbo_);
-    sphereIndexCount_ = static_cast<int>(sphere.indices.size());
-    auto ballVao = [this, &sphere](unsigned int& vao, unsigned int& instances) {
+    // One quad, [-1, 1]^2 as a triangle strip: an impostor per ball and ghost ball, a shadow per ball.
+    const std::array<float, 8> corners{-1, -1, 1, -1, -1, 1, 1, 1};
+    glGenBuffers(1, &quadVbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, quadVbo_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners.data(), GL_STATIC_DRAW);
+    auto ballVao = [this](unsigned int& vao, unsigned int& instances) {
         glGenVertexArrays(1, &vao);
         glBindVertexArray(vao);
-        glBindBuffer(GL_ARRAY_BUFFER, sphereVbo_);
+        glBindBuffer(GL_ARRAY_BUFFER, quadVbo_);
         glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(QVector3D), offset(0));
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphereEbo_);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(sphere.indices.size() * sizeof(unsigned int)),
-                     sphere.indices.data(), GL_STATIC_DRAW);
+        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), offset(0));
         glGenBuffers(1, &instances);
         glBindBuffer(GL_ARRAY_BUFFER, instances);
         for (unsigned int k = 0; k < 4; ++k) {
@@ -142,13 +142,10 @@ bool TableRenderer::initialize(QString* error)
     ballVao(ballVao_, ballInstanceVbo_);
     ballVao(ghostVao_, ghostInstanceVbo_);
 
-    // Shadows: a quad per ball, reading the centre and radius from the ball instances.
-    const std::array<float, 8> corners{-1, -1, 1, -1, -1, 1, 1, 1};
+    // Shadows: the quad per ball, reading the centre and radius from the ball instances.
     glGenVertexArrays(1, &shadowVao_);
     glBindVertexArray(shadowVao_);
-    glGenBuffers(1, &quadVbo_);
     glBindBuffer(GL_ARRAY_BUFFER, quadVbo_);
-    glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners.data(), GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), offset(0));
     glBindBuffer(GL_ARRAY_BUFFER, ballInstanceVbo_);
@@ -172,7 +169,7 @@ void TableRenderer::release()
         glDeleteVertexArrays(1, vao);
         *vao = 0;
     }
-    for (unsigned int* vbo : {&tableVbo_, &cueVbo_, &sphereVbo_, &sphereEbo_, &ballInstanceVbo_, &ghostInstanceVbo_,
+    for (unsigned int* vbo : {&tableVbo_, &cueVbo_, &ballInstanceVbo_, &ghostInstanceVbo_,
                               &quadVbo_, &pathLines_.vbo, &markerLines_.vbo, &ghostLines_.vbo, &dynamicLines_.vbo}) {
         glDeleteBuffers(1, vbo);
         *vbo = 0;
@@ -426,31 +423,29 @@ void TableRenderer::render(const RenderFrame& frame)
         glBindVertexArray(shadowVao_);
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, ballCount_);
     }
+    // Balls blend only their antialiased rim; they still write depth.
     glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
     ballProgram_->bind();
     ballProgram_->setUniformValue("uViewProjection", frame.viewProjection);
     ballProgram_->setUniformValue("uEye", frame.eye);
+    ballProgram_->setUniformValue("uCameraUp", frame.cameraUp);
+    ballProgram_->setUniformValue("uPixelAngle", frame.pixelAngle);
     ballProgram_->setUniformValueArray("uLights", lamps.data(), 2);
     ballProgram_->setUniformValue("uDigits", 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, digitTexture_);
     if (ballCount_ > 0) {
         glBindVertexArray(ballVao_);
-        glDrawElementsInstanced(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr, ballCount_);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, ballCount_);
     }
 
     // Overlays: translucent, depth-tested against the table and the balls, not writing depth.
-    glEnable(GL_BLEND);
     glDepthMask(GL_FALSE);
     auto on = [&frame](Overlay o) { return frame.overlays.test(static_cast<std::size_t>(o)); };
     if (on(Overlay::GhostBalls) && ghostCount_ > 0) {
         glBindVertexArray(ghostVao_);
-        glDrawElementsInstanced(GL_TRIANGLES, sphereIndexCount_, GL_UNSIGNED_INT, nullptr, ghostCount_);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, ghostCount_);
     }
-    glDisable(GL_CULL_FACE);
 
     scratchLines_.clear();
     if (on(Overlay::Velocities)) appendVelocityArrows(r, states_, scratchLines_);

@@ -29,12 +29,17 @@ namespace cuelab {
 struct RenderFrame {
     QMatrix4x4 viewProjection;
     QVector3D eye;         // m
+    QVector3D cameraUp;    // unit, the screen's up in the world
+    float pixelAngle = 0;  // radians per pixel (vertical field of view / viewport height)
     QSize viewportPixels;  // framebuffer pixels
     double time = 0.0;     // s
     std::bitset<kOverlayCount> overlays;
     int selectedBall = -1;
     int highlightedEvent = -1;
 };
+
+// Radians per pixel of an image `heightPixels` high seen through the orbit camera.
+float pixelAngle(int heightPixels);
 
 class TableRenderer : protected QOpenGLExtraFunctions {
 public:
@@ -83,14 +88,12 @@ private:
     int tableCount_ = 0;
     unsigned int cueVao_ = 0, cueVbo_ = 0;
     int cueCount_ = 0;
-    unsigned int sphereVbo_ = 0, sphereEbo_ = 0;
-    int sphereIndexCount_ = 0;
     unsigned int ballVao_ = 0, ballInstanceVbo_ = 0;
     std::size_t ballCapacity_ = 0;
     int ballCount_ = 0;
     unsigned int ghostVao_ = 0, ghostInstanceVbo_ = 0;
     int ghostCount_ = 0;
-    unsigned int shadowVao_ = 0, quadVbo_ = 0;
+    unsigned int shadowVao_ = 0, quadVbo_ = 0;  // the unit quad, shared by balls, ghosts and shadows
     unsigned int digitTexture_ = 0;
 
     LineBuffer pathLines_, markerLines_, ghostLines_, dynamicLines_;

@@ -186,7 +186,9 @@ void TableView::paintGL()
     RenderFrame frame;
     frame.viewProjection = camera_.projection(aspect()) * camera_.viewMatrix();
     frame.eye = camera_.eye();
+    frame.cameraUp = camera_.up();
     frame.viewportPixels = size() * devicePixelRatio();
+    frame.pixelAngle = pixelAngle(frame.viewportPixels.height());
     frame.time = time_;
     frame.overlays = overlays_;
     frame.selectedBall = selectedBall_;
