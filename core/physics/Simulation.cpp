@@ -195,7 +195,8 @@ void Simulator::predictOwn(int i, double now)
         // kLookahead of travel, whichever comes first; |r(t) - r(now)| <= |v(now)| (t - now) while
         // the ball decelerates.
         const double lookahead = now + kLookahead / p.c1.norm();
-        if (lookahead < best.time) best = Candidate{lookahead, 0, i, Agent::Refresh, 0};
+        // (At an absurd speed the window would round to nothing: then it ends at the own event.)
+        if (lookahead > now && lookahead < best.time) best = Candidate{lookahead, 0, i, Agent::Refresh, 0};
         horizon_[at(i)] = best.time;
         window_[at(i)] = boxOf(p, best.time - now);
     }
