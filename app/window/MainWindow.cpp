@@ -168,7 +168,7 @@ void MainWindow::createDocks()
     tabifyDockWidget(shotDock, physicsDock);
     shotDock->raise();
     splitDockWidget(eventsDock, inspectorDock, Qt::Vertical);
-    resizeDocks({ballsDock, eventsDock}, {410, 470}, Qt::Horizontal);
+    resizeDocks({ballsDock, eventsDock}, {430, 470}, Qt::Horizontal);
     resizeDocks({ballsDock, shotDock}, {260, 520}, Qt::Vertical);
     resizeDocks({eventsDock, inspectorDock}, {340, 460}, Qt::Vertical);
 }

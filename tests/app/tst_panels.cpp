@@ -4,15 +4,18 @@
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
 #include "editor/EventTableModel.h"
+#include "editor/EventsPanel.h"
 #include "editor/PhysicsPanel.h"
 #include "editor/ShotPanel.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QSlider>
 #include <QStyle>
 #include <QStyleOptionSlider>
+#include <QTableView>
 #include <QTableWidget>
 #include <QToolButton>
 #include <QUndoStack>
@@ -51,6 +54,7 @@ private slots:
     void shotCheckboxRemovesTheStrike();
     void ballsToolbarAddsAndRemoves();
     void eventTableShowsTheResult();
+    void eventListWithoutChangesOfMotion();
 };
 
 void TestPanels::physicsSpinBoxEdit_data()
@@ -218,6 +222,39 @@ void TestPanels::eventTableShowsTheResult()
     const double gap = events[static_cast<std::size_t>(collision)].time - events[static_cast<std::size_t>(collision - 1)].time;
     QCOMPARE(model.index(collision, EventTableModel::GapColumn).data().toString(), QString::number(gap, 'f', 6));
     QVERIFY(model.index(collision, EventTableModel::DetailsColumn).data().toString().contains(QLatin1String("m/s")));
+}
+
+void TestPanels::eventListWithoutChangesOfMotion()
+{
+    Document d;
+    QString error;
+    QVERIFY2(d.load(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/half-ball-cut.json"), &error), qPrintable(error));
+    d.waitForResult();
+    EventsPanel panel;
+    panel.setResult(d.result());
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    const auto& events = d.result()->events;
+    std::vector<int> listed;  // indices of the events that are not changes of motion
+    for (std::size_t i = 0; i < events.size(); ++i)
+        if (!isTransition(events[i].kind)) listed.push_back(static_cast<int>(i));
+    QVERIFY(listed.size() < events.size());
+
+    QTest::mouseClick(panel.transitionsToggle(), Qt::LeftButton, {}, QPoint(8, panel.transitionsToggle()->height() / 2));
+    QVERIFY(!panel.transitionsToggle()->isChecked());
+    QTableView* table = panel.table();
+    QCOMPARE(table->model()->rowCount(), static_cast<int>(listed.size()));
+    // Clicking the last listed row selects that event by its index in the whole list.
+    QSignalSpy selected(&panel, &EventsPanel::eventSelected);
+    const QRect cell = table->visualRect(table->model()->index(static_cast<int>(listed.size()) - 1, 1));
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, cell.center());
+    QCOMPARE(selected.count(), 1);
+    QCOMPARE(selected.front().front().toInt(), listed.back());
+    QCOMPARE(panel.selectedEvent(), listed.back());
+    // Showing them again keeps the selection on the same event.
+    panel.transitionsToggle()->setChecked(true);
+    QCOMPARE(table->model()->rowCount(), static_cast<int>(events.size()));
+    QCOMPARE(panel.selectedEvent(), listed.back());
 }
 
 QTEST_MAIN(TestPanels)

@@ -197,7 +197,7 @@ void BallsPanel::fitColumns()
     table_->resizeColumnsToContents();
     // Room for the widest text the time-dependent columns can show.
     const QFontMetrics fm = table_->fontMetrics();
-    const int padding = 2 * fm.averageCharWidth() + 4;
+    const int padding = fm.averageCharWidth() + 4;
     const auto atLeast = [&](int column, const QString& widest) {
         table_->setColumnWidth(column, std::max(table_->columnWidth(column), fm.horizontalAdvance(widest) + padding));
     };

@@ -34,6 +34,11 @@ void EventTableModel::setTime(double seconds)
     if (rowCount() > 0) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::ForegroundRole});
 }
 
+const Event* EventTableModel::event(int row) const
+{
+    return row >= 0 && row < rowCount() ? &result_->events[static_cast<std::size_t>(row)] : nullptr;
+}
+
 int EventTableModel::rowCount(const QModelIndex& parent) const
 {
     return parent.isValid() || !result_ ? 0 : static_cast<int>(result_->events.size());

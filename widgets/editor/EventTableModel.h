@@ -20,6 +20,7 @@ public:
 
     void setResult(std::shared_ptr<const SimulationResult> result);
     void setTime(double seconds);  // events after it are shown dimmed
+    const Event* event(int row) const;  // null outside the rows
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;

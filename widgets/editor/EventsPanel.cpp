@@ -2,16 +2,54 @@
 
 #include "EventTableModel.h"
 
+#include <QCheckBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
+#include <QSortFilterProxyModel>
 #include <QItemSelectionModel>
 #include <QTableView>
 #include <QVBoxLayout>
 
 namespace cuelab {
 
-EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent), table_(new QTableView(this)), model_(new EventTableModel(this))
+namespace {
+
+// Hides the changes of motion (slide to roll, roll to stop, ...) when the user only wants the
+// collisions, strikes and pockets; a break has many more of them than collisions.
+class EventKindFilter : public QSortFilterProxyModel {
+public:
+    using QSortFilterProxyModel::QSortFilterProxyModel;
+
+    void setShowTransitions(bool show)
+    {
+        showTransitions_ = show;
+        invalidateFilter();
+    }
+
+protected:
+    bool filterAcceptsRow(int row, const QModelIndex&) const override
+    {
+        const Event* e = static_cast<const EventTableModel*>(sourceModel())->event(row);
+        return showTransitions_ || !e || !isTransition(e->kind);
+    }
+
+private:
+    bool showTransitions_ = true;
+};
+
+}  // namespace
+
+EventsPanel::EventsPanel(QWidget* parent)
+    : QWidget(parent),
+      table_(new QTableView(this)),
+      model_(new EventTableModel(this)),
+      filter_(new EventKindFilter(this)),
+      showTransitions_(new QCheckBox(tr("Show changes of motion"), this))
 {
-    table_->setModel(model_);
+    filter_->setSourceModel(model_);
+    table_->setModel(filter_);
+    showTransitions_->setChecked(true);
+    showTransitions_->setToolTip(tr("List the changes of motion too (slide to roll, roll to stop, ...), not only strikes, collisions and pockets"));
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -24,7 +62,22 @@ EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent), table_(new QTableVi
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    auto* options = new QHBoxLayout;
+    options->setContentsMargins(6, 2, 6, 0);
+    options->addWidget(showTransitions_);
+    options->addStretch(1);
+    layout->addLayout(options);
     layout->addWidget(table_);
+
+    connect(showTransitions_, &QCheckBox::toggled, this, [this](bool show) {
+        const int selected = selectedEvent();
+        selecting_ = true;
+        static_cast<EventKindFilter*>(filter_)->setShowTransitions(show);
+        selecting_ = false;
+        setSelectedEvent(-1);
+        setSelectedEvent(selected);  // stays selected when it is still listed
+    });
 
     connect(table_->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
         if (!selecting_) emit eventSelected(selectedEvent());
@@ -34,7 +87,7 @@ EventsPanel::EventsPanel(QWidget* parent) : QWidget(parent), table_(new QTableVi
 int EventsPanel::selectedEvent() const
 {
     const QModelIndexList rows = table_->selectionModel()->selectedRows();
-    return rows.isEmpty() ? -1 : rows.front().row();
+    return rows.isEmpty() ? -1 : filter_->mapToSource(rows.front()).row();
 }
 
 void EventsPanel::setResult(std::shared_ptr<const SimulationResult> result)
@@ -51,11 +104,12 @@ void EventsPanel::setSelectedEvent(int index)
 {
     if (index == selectedEvent()) return;
     selecting_ = true;
-    if (index < 0 || index >= model_->rowCount()) {
+    const QModelIndex row = filter_->mapFromSource(model_->index(index, 0));
+    if (!row.isValid()) {  // out of range, or a change of motion that is not listed
         table_->clearSelection();
     } else {
-        table_->selectRow(index);
-        table_->scrollTo(model_->index(index, 0));
+        table_->selectRow(row.row());
+        table_->scrollTo(row);
     }
     selecting_ = false;
 }

@@ -8,6 +8,8 @@
 
 #include <memory>
 
+class QCheckBox;
+class QSortFilterProxyModel;
 class QTableView;
 
 namespace cuelab {
@@ -21,6 +23,7 @@ public:
 
     QTableView* table() const { return table_; }
     EventTableModel* model() const { return model_; }
+    QCheckBox* transitionsToggle() const { return showTransitions_; }
     int selectedEvent() const;
 
 public slots:
@@ -34,6 +37,8 @@ signals:
 private:
     QTableView* table_;
     EventTableModel* model_;
+    QSortFilterProxyModel* filter_;
+    QCheckBox* showTransitions_;
     bool selecting_ = false;
 };
 
