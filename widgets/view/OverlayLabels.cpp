@@ -22,13 +22,24 @@ std::optional<QPointF> toScreen(const LabelFrame& frame, const QVector3D& world)
     return QPointF((x + 1.0) / 2.0 * frame.logicalSize.width(), (1.0 - y) / 2.0 * frame.logicalSize.height());
 }
 
-void tag(QPainter& painter, const QRectF& box, const QString& text, const QColor& ink, const QColor& fill)
+// Text as filled outlines, centred in `box`. Qt's glyph-cache text is unreliable on a core-profile
+// GL paint device (garbled glyphs on Mesa); outlines draw the same on every device.
+void text(QPainter& painter, const QRectF& box, const QString& string, const QColor& ink)
+{
+    const QFontMetricsF metrics(painter.font());
+    const double width = metrics.horizontalAdvance(string);
+    const QPointF baseline(box.center().x() - width / 2.0, box.center().y() + (metrics.ascent() - metrics.descent()) / 2.0);
+    QPainterPath path;
+    path.addText(baseline, painter.font(), string);
+    painter.fillPath(path, ink);
+}
+
+void tag(QPainter& painter, const QRectF& box, const QString& string, const QColor& ink, const QColor& fill)
 {
     QPainterPath path;
     path.addRoundedRect(box, 3.0, 3.0);
     painter.fillPath(path, fill);
-    painter.setPen(ink);
-    painter.drawText(box, Qt::AlignCenter, text);
+    text(painter, box, string, ink);
 }
 
 void paintEventTimes(QPainter& painter, const ViewScene& scene, const LabelFrame& frame)
@@ -50,8 +61,8 @@ void paintEventTimes(QPainter& painter, const ViewScene& scene, const LabelFrame
         const std::optional<QPointF> at = toScreen(frame, QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()),
                                                                     static_cast<float>(radius)));
         if (!at) continue;
-        const QString text = QStringLiteral("%1 s").arg(ev.time, 0, 'f', 3);
-        const QSizeF size = metrics.size(Qt::TextSingleLine, text) + QSizeF(8.0, 2.0);
+        const QString label = QStringLiteral("%1 s").arg(ev.time, 0, 'f', 3);
+        const QSizeF size = metrics.size(Qt::TextSingleLine, label) + QSizeF(8.0, 2.0);
         const QRectF box(*at + QPointF(9.0, -size.height() - 6.0), size);
         bool overlaps = false;
         for (const QRectF& t : taken) overlaps = overlaps || t.intersects(box);
@@ -61,7 +72,7 @@ void paintEventTimes(QPainter& painter, const ViewScene& scene, const LabelFrame
         const bool future = ev.time > frame.time;
         const QColor ink = highlighted ? QColor(20, 20, 0) : (future ? QColor(220, 220, 220, 150) : QColor(255, 255, 255));
         const QColor fill = highlighted ? QColor(255, 235, 60, 230) : QColor(0, 0, 0, future ? 90 : 160);
-        tag(painter, box, text, ink, fill);
+        tag(painter, box, label, ink, fill);
     }
 }
 
@@ -78,9 +89,9 @@ void paintVelocityLegend(QPainter& painter, const ViewScene& scene, const LabelF
     const double length = std::max(QLineF(*a, *b).length(), QLineF(*a, *c).length());
     if (length < 4.0) return;
     const QFontMetricsF metrics(painter.font());
-    const QString text = QStringLiteral("1 m/s");
+    const QString label = QStringLiteral("1 m/s");
     const double h = metrics.height();
-    const QRectF box(10.0, frame.logicalSize.height() - 2.0 * h - 14.0, length + metrics.horizontalAdvance(text) + 28.0,
+    const QRectF box(10.0, frame.logicalSize.height() - 2.0 * h - 14.0, length + metrics.horizontalAdvance(label) + 28.0,
                      h + 12.0);
     QPainterPath path;
     path.addRoundedRect(box, 4.0, 4.0);
@@ -91,9 +102,7 @@ void paintVelocityLegend(QPainter& painter, const ViewScene& scene, const LabelF
     painter.drawLine(QPointF(x0, y), QPointF(x1, y));
     painter.drawLine(QPointF(x1, y), QPointF(x1 - 7.0, y - 4.0));
     painter.drawLine(QPointF(x1, y), QPointF(x1 - 7.0, y + 4.0));
-    painter.setPen(Qt::white);
-    painter.drawText(QRectF(x1 + 8.0, box.top(), metrics.horizontalAdvance(text) + 4.0, box.height()), Qt::AlignVCenter,
-                     text);
+    text(painter, QRectF(x1 + 8.0, box.top(), metrics.horizontalAdvance(label) + 4.0, box.height()), label, Qt::white);
 }
 
 }  // namespace
