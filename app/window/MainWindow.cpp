@@ -117,7 +117,8 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(view_, &TableView::ballDragFinished, document_, &Document::endMerge);
     connect(view_, &TableView::framesPerSecond, this, [this](double fps) {
-        fpsLabel_->setText(tr("%1 fps").arg(std::lround(fps)));
+        // An idle view draws nothing: no rate to show then.
+        fpsLabel_->setText(fps >= 1.0 ? tr("%1 fps").arg(std::lround(fps)) : QString());
     });
     connect(balls_, &BallsPanel::ballSelected, this, &MainWindow::selectBall);
     connect(events_, &EventsPanel::eventSelected, this, &MainWindow::selectEvent);
