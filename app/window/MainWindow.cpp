@@ -1,5 +1,7 @@
 #include "MainWindow.h"
 
+#include "RecentFiles.h"
+
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
 #include "editor/EventsPanel.h"
@@ -38,7 +40,6 @@ namespace cuelab {
 
 namespace {
 
-constexpr int kMaxRecentFiles = 8;
 constexpr int kStatusMessageMs = 6000;
 const QString kFileFilter = QObject::tr("CueLab setups (*.json);;All files (*)");
 
@@ -182,7 +183,9 @@ void MainWindow::createMenus()
     newAction->setToolTip(tr("A new setup: a 9-ft table with a cue ball and one object ball"));
     QAction* openAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("&Open…"), this, &MainWindow::open);
     openAction->setShortcut(QKeySequence::Open);
-    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    recentMenu_ = new RecentFiles(tr("Open &Recent"), this);
+    file->addMenu(recentMenu_);
+    connect(recentMenu_, &RecentFiles::openRequested, this, &MainWindow::openFile);
     examplesMenu_ = file->addMenu(tr("&Examples"));
     for (const QString& path : bundledExamples()) {
         QString title = QFileInfo(path).completeBaseName();
@@ -203,7 +206,6 @@ void MainWindow::createMenus()
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
-    rebuildRecentMenu();
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
@@ -365,7 +367,7 @@ bool MainWindow::openFile(const QString& path)
         showError(tr("Cannot Open Setup"), error);
         return false;
     }
-    addRecentFile(document_->filePath());
+    recentMenu_->add(document_->filePath());
     QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(path).absolutePath());
     statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(document_->filePath())), kStatusMessageMs);
     return true;
@@ -416,41 +418,10 @@ bool MainWindow::saveFile(const QString& path)
         showError(tr("Cannot Save Setup"), error);
         return false;
     }
-    addRecentFile(document_->filePath());
+    recentMenu_->add(document_->filePath());
     QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(path).absolutePath());
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(document_->filePath())), kStatusMessageMs);
     return true;
-}
-
-void MainWindow::addRecentFile(const QString& path)
-{
-    QSettings settings;
-    QStringList files = settings.value(QStringLiteral("files/recent")).toStringList();
-    files.removeAll(path);
-    files.prepend(path);
-    while (files.size() > kMaxRecentFiles) files.removeLast();
-    settings.setValue(QStringLiteral("files/recent"), files);
-    rebuildRecentMenu();
-}
-
-void MainWindow::rebuildRecentMenu()
-{
-    recentMenu_->clear();
-    const QStringList files = QSettings().value(QStringLiteral("files/recent")).toStringList();
-    int n = 1;
-    for (const QString& path : files) {
-        QAction* a = recentMenu_->addAction(QStringLiteral("&%1 %2").arg(n++).arg(QFileInfo(path).fileName()),
-                                            this, [this, path] { openFile(path); });
-        a->setToolTip(QDir::toNativeSeparators(path));
-    }
-    if (!files.isEmpty()) {
-        recentMenu_->addSeparator();
-        recentMenu_->addAction(tr("&Clear List"), this, [this] {
-            QSettings().remove(QStringLiteral("files/recent"));
-            rebuildRecentMenu();
-        });
-    }
-    recentMenu_->setEnabled(!files.isEmpty());
 }
 
 void MainWindow::updateTitle()

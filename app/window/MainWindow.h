@@ -22,6 +22,7 @@ class EventsPanel;
 class InspectorPanel;
 class Playback;
 class PhysicsPanel;
+class RecentFiles;
 class ShotPanel;
 class TableView;
 class TransportBar;
@@ -47,7 +48,7 @@ public:
     InspectorPanel* inspector() const { return inspector_; }
     ShotPanel* shotPanel() const { return shot_; }
     PhysicsPanel* physicsPanel() const { return physics_; }
-    QMenu* recentMenu() const { return recentMenu_; }
+    RecentFiles* recentMenu() const { return recentMenu_; }
     QMenu* examplesMenu() const { return examplesMenu_; }
 
     static QStringList bundledExamples();  // resource paths, sorted
@@ -69,8 +70,6 @@ private:
     bool saveAs();
     void newDocument();
     void open();
-    void addRecentFile(const QString& path);
-    void rebuildRecentMenu();
     void updateTitle();
     void showError(const QString& title, const QString& message);
     void about();
@@ -92,7 +91,7 @@ private:
     EventsPanel* events_ = nullptr;
     InspectorPanel* inspector_ = nullptr;
     QList<QDockWidget*> docks_;
-    QMenu* recentMenu_ = nullptr;
+    RecentFiles* recentMenu_ = nullptr;
     QMenu* examplesMenu_ = nullptr;
     std::array<QAction*, kOverlayCount> overlayActions_{};
     QLabel* summaryLabel_ = nullptr;

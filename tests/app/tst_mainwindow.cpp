@@ -2,6 +2,7 @@
 // cuelab executable's command line.
 
 #include "MainWindow.h"
+#include "RecentFiles.h"
 
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
