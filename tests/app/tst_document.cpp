@@ -78,6 +78,16 @@ void TestDocument::editUndoRedo_data()
         return d.setShot(s, QStringLiteral("speed"), 2);
     }) << 2;
     QTest::newRow("shot removed") << Edit([](Document& d) { return d.setShot(std::nullopt, QStringLiteral("no shot"), 0); }) << 2;
+    QTest::newRow("table kind") << Edit([](Document& d) {
+        TableSpec t;
+        t.kind = TableKind::Pool8ft;
+        return d.setTable(t, QStringLiteral("8 ft"));
+    }) << 2;
+    QTest::newRow("closed pockets") << Edit([](Document& d) {
+        TableSpec t = d.setup().table;
+        t.pockets = false;
+        return d.setTable(t, QStringLiteral("closed"));
+    }) << 2;
     QTest::newRow("frame step") << Edit([](Document& d) {
         SimulationSettings s = d.setup().simulation;
         s.frameDt = 0.01;

@@ -9,6 +9,7 @@
 #include "editor/ShotPanel.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -50,6 +51,7 @@ private slots:
     void physicsSpinBoxEdit_data();
     void physicsSpinBoxEdit();
     void physicsResetButton();
+    void tableKindFromThePanel();
     void shotSliderDragIsOneStep();
     void shotCheckboxRemovesTheStrike();
     void ballsToolbarAddsAndRemoves();
@@ -96,6 +98,23 @@ void TestPanels::physicsSpinBoxEdit()
     d.undoStack()->undo();
     QCOMPARE(value(), original);
     QCOMPARE(box->text(), before);  // the panel shows the undone value
+}
+
+void TestPanels::tableKindFromThePanel()
+{
+    Document d;
+    PhysicsPanel panel(&d);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto* kind = childWithToolTip<QComboBox>(&panel, QStringLiteral("The table"));
+    QVERIFY(kind);
+    kind->setFocus();
+    QTest::keyClick(kind, Qt::Key_Down);  // pool-9ft -> pool-8ft
+    QVERIFY(d.setup().table.kind == TableKind::Pool8ft);
+    QCOMPARE(d.undoStack()->count(), 1);
+    d.undoStack()->undo();
+    QVERIFY(d.setup().table.kind == TableKind::Pool9ft);
+    QCOMPARE(kind->currentIndex(), 0);
 }
 
 void TestPanels::physicsResetButton()

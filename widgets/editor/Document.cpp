@@ -294,6 +294,13 @@ bool Document::setSimulationSettings(const SimulationSettings& settings, const Q
     return edit(text, after, {MergeKind::Simulation, field});
 }
 
+bool Document::setTable(const TableSpec& table, const QString& text)
+{
+    Setup after = setup_;
+    after.table = table;
+    return edit(text, after);
+}
+
 void Document::applySetup(const Setup& setup)
 {
     setup_ = setup;

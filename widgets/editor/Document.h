@@ -70,6 +70,7 @@ public:
     bool resetPhysics();
     bool setShot(const std::optional<CueStrike>& shot, const QString& text, int field);
     bool setSimulationSettings(const SimulationSettings& settings, const QString& text, int field);
+    bool setTable(const TableSpec& table, const QString& text);
 
     // Blocks (processing events) until the result belongs to the current setup. For tests and for
     // callers that need the result right now; the window itself never waits.

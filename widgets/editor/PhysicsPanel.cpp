@@ -3,6 +3,7 @@
 #include "Document.h"
 #include "Quantities.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -19,6 +20,15 @@ constexpr double kMsPerS = 1000.0;
 
 PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent), document_(document)
 {
+    tableKind_ = new QComboBox(this);
+    for (TableKind kind : {TableKind::Pool9ft, TableKind::Pool8ft, TableKind::Pool7ft, TableKind::Snooker, TableKind::Carom}) {
+        const Table t = makeTable(kind);
+        tableKind_->addItem(QStringLiteral("%1 (%2 × %3 m)").arg(toQString(toString(kind)), formatNumber(t.length, 3), formatNumber(t.width, 3)),
+                            static_cast<int>(kind));
+    }
+    tableKind_->setToolTip(tr("The table: playing surface between the cushion noses in metres, pockets and cushions of the preset. The balls keep their size and place; a ball that would lie off the cloth refuses the change."));
+    pockets_ = new QCheckBox(tr("Pockets"), this);
+    pockets_->setToolTip(tr("Without pockets the rails are closed all round (a carom table never has pockets)"));
     gravity_ = makeSpinBox({0.1, 30.0, 3, 0.01, tr("m/s²"), tr("Gravitational acceleration g in m/s² (9.81 on Earth)")}, this);
     muSlide_ = makeSpinBox({0.0, 1.0, 3, 0.01, QString(), tr("Sliding friction between ball and cloth (dimensionless; 0.2, range 0.15-0.4, Alciatore)")}, this);
     muRoll_ = makeSpinBox({0.0, 0.1, 4, 0.001, QString(), tr("Rolling resistance of the cloth (dimensionless; 0.01, range 0.005-0.015)")}, this);
@@ -44,6 +54,10 @@ PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent
     reset_ = new QPushButton(tr("Reset to Defaults"), this);
     reset_->setToolTip(tr("Set friction, restitution, models and gravity back to the defaults of the physics reference"));
 
+    auto* table = new QGroupBox(tr("Table"), this);
+    auto* tableForm = new QFormLayout(table);
+    tableForm->addRow(tr("Kind"), tableKind_);
+    tableForm->addRow(QString(), pockets_);
     auto* cloth = new QGroupBox(tr("Cloth"), this);
     auto* clothForm = new QFormLayout(cloth);
     clothForm->addRow(tr("μ slide"), muSlide_);
@@ -67,7 +81,7 @@ PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent
     timeForm->addRow(tr("Stop at"), maxTime_);
 
     auto* layout = new QVBoxLayout(this);
-    for (QWidget* w : std::initializer_list<QWidget*>{cloth, balls, cushion, time}) layout->addWidget(w);
+    for (QWidget* w : std::initializer_list<QWidget*>{table, cloth, balls, cushion, time}) layout->addWidget(w);
     layout->addWidget(reset_, 0, Qt::AlignRight);
     layout->addStretch(1);
 
@@ -89,6 +103,8 @@ PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent
     connect(frameDt_, &QDoubleSpinBox::valueChanged, this, [this] { commitSimulation(FrameDt, tr("Change the frame step")); });
     connect(maxTime_, &QDoubleSpinBox::valueChanged, this, [this] { commitSimulation(MaxTime, tr("Change the time limit")); });
     for (QDoubleSpinBox* box : {frameDt_, maxTime_}) connect(box, &QDoubleSpinBox::editingFinished, document_, &Document::endMerge);
+    connect(tableKind_, &QComboBox::activated, this, [this] { commitTable(tr("Change the table")); });
+    connect(pockets_, &QCheckBox::toggled, this, [this](bool on) { commitTable(on ? tr("Open the pockets") : tr("Close the pockets")); });
     connect(reset_, &QPushButton::clicked, document_, &Document::resetPhysics);
 
     connect(document_, &Document::setupChanged, this, &PhysicsPanel::refresh);
@@ -100,6 +116,9 @@ void PhysicsPanel::refresh()
     refreshing_ = true;
     const Setup& s = document_->setup();
     const PhysicsParams& p = s.physics;
+    tableKind_->setCurrentIndex(tableKind_->findData(static_cast<int>(s.table.kind)));
+    pockets_->setChecked(s.table.pockets && s.table.kind != TableKind::Carom);
+    pockets_->setEnabled(s.table.kind != TableKind::Carom);
     gravity_->setValue(p.gravity);
     muSlide_->setValue(p.muSlide);
     muRoll_->setValue(p.muRoll);
@@ -144,6 +163,20 @@ void PhysicsPanel::commitPhysics(Field field, const QString& text)
     case MaxTime: return;
     }
     if (!document_->setPhysics(p, text, field)) refresh();
+}
+
+void PhysicsPanel::commitTable(const QString& text)
+{
+    if (refreshing_) return;
+    TableSpec table = document_->setup().table;
+    const auto kind = static_cast<TableKind>(tableKind_->currentData().toInt());
+    if (kind != table.kind) {
+        // Another table: its own size and cushions, not the overrides of the old one.
+        table = TableSpec{};
+        table.kind = kind;
+    }
+    table.pockets = pockets_->isChecked() || kind == TableKind::Carom;
+    if (!document_->setTable(table, text)) refresh();
 }
 
 void PhysicsPanel::commitSimulation(Field field, const QString& text)

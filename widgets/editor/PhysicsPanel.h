@@ -4,6 +4,7 @@
 
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QPushButton;
@@ -25,8 +26,11 @@ private:
     void refresh();
     void commitPhysics(Field field, const QString& text);
     void commitSimulation(Field field, const QString& text);
+    void commitTable(const QString& text);
 
     Document* document_;
+    QComboBox* tableKind_;
+    QCheckBox* pockets_;
     QDoubleSpinBox* gravity_;
     QDoubleSpinBox* muSlide_;
     QDoubleSpinBox* muRoll_;
