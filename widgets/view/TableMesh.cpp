@@ -362,3 +362,35 @@ std::vector<MeshVertex> buildTableMesh(const Table& table)
 }
 
 }  // namespace cuelab
+
+namespace cuelab {
+
+std::size_t partitionByPocketCut(const Table& table, std::vector<MeshVertex>& mesh)
+{
+    auto mayBeCut = [&table](const MeshVertex* t) {
+        if (t[0].material > static_cast<float>(SurfaceMaterial::Wood)) return false;
+        const float minX = std::min({t[0].position.x(), t[1].position.x(), t[2].position.x()});
+        const float maxX = std::max({t[0].position.x(), t[1].position.x(), t[2].position.x()});
+        const float minY = std::min({t[0].position.y(), t[1].position.y(), t[2].position.y()});
+        const float maxY = std::max({t[0].position.y(), t[1].position.y(), t[2].position.y()});
+        for (const Pocket& p : table.pockets) {
+            // Distance from the pocket centre to the triangle's bounding box.
+            const double dx = std::max({static_cast<double>(minX) - p.centre.x(), 0.0, p.centre.x() - maxX});
+            const double dy = std::max({static_cast<double>(minY) - p.centre.y(), 0.0, p.centre.y() - maxY});
+            if (dx * dx + dy * dy < p.radius * p.radius) return true;
+        }
+        return false;
+    };
+    std::vector<MeshVertex> kept, cut;
+    kept.reserve(mesh.size());
+    for (std::size_t i = 0; i + 2 < mesh.size(); i += 3) {
+        std::vector<MeshVertex>& to = mayBeCut(&mesh[i]) ? cut : kept;
+        to.insert(to.end(), mesh.begin() + static_cast<std::ptrdiff_t>(i), mesh.begin() + static_cast<std::ptrdiff_t>(i + 3));
+    }
+    const std::size_t uncut = kept.size();
+    kept.insert(kept.end(), cut.begin(), cut.end());
+    mesh = std::move(kept);
+    return uncut;
+}
+
+}  // namespace cuelab

@@ -50,4 +50,9 @@ QVector3D clothColour(TableKind kind);
 
 std::vector<MeshVertex> buildTableMesh(const Table& table);
 
+// Reorders the triangles so that those a pocket circle may cut (cloth, cushion or wood within reach of
+// a pocket) come last, and returns how many vertices come before them. The renderer draws the first
+// part with a shader that never discards, which lets a software rasteriser keep its fast paths.
+std::size_t partitionByPocketCut(const Table& table, std::vector<MeshVertex>& mesh);
+
 }  // namespace cuelab

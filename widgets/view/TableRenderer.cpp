@@ -4,6 +4,7 @@
 #include "OrbitCamera.h"
 #include "TableMesh.h"
 
+#include <QFile>
 #include <QImage>
 #include <QOpenGLShaderProgram>
 #include <QPainter>
@@ -23,13 +24,28 @@ constexpr int kDigitCell = 128;     // pixels per digit cell of the 4 x 4 atlas
 
 const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
 
-std::unique_ptr<QOpenGLShaderProgram> makeProgram(const QString& name, bool geometry, QString* error)
+// The source of a shader file with `define` (if any) defined right after its #version line.
+QByteArray shaderSource(const QString& path, const QByteArray& define)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    QByteArray source = file.readAll();
+    if (!define.isEmpty()) {
+        const qsizetype endOfVersion = source.indexOf('\n') + 1;
+        source.insert(endOfVersion, "#define " + define + "\n");
+    }
+    return source;
+}
+
+std::unique_ptr<QOpenGLShaderProgram> makeProgram(const QString& name, bool geometry, QString* error,
+                                                  const QByteArray& define = {})
 {
     auto program = std::make_unique<QOpenGLShaderProgram>();
     const QString base = QStringLiteral(":/shaders/") + name;
-    bool ok = program->addShaderFromSourceFile(QOpenGLShader::Vertex, base + QStringLiteral(".vert")) &&
-              (!geometry || program->addShaderFromSourceFile(QOpenGLShader::Geometry, base + QStringLiteral(".geom"))) &&
-              program->addShaderFromSourceFile(QOpenGLShader::Fragment, base + QStringLiteral(".frag")) &&
+    bool ok = program->addShaderFromSourceCode(QOpenGLShader::Vertex, shaderSource(base + QStringLiteral(".vert"), {})) &&
+              (!geometry ||
+               program->addShaderFromSourceCode(QOpenGLShader::Geometry, shaderSource(base + QStringLiteral(".geom"), {}))) &&
+              program->addShaderFromSourceCode(QOpenGLShader::Fragment, shaderSource(base + QStringLiteral(".frag"), define)) &&
               program->link();
     if (!ok) {
         if (error) *error = QStringLiteral("The %1 shader did not build: %2").arg(name, program->log());
@@ -91,6 +107,8 @@ bool TableRenderer::initialize(QString* error)
     initializeOpenGLFunctions();
     tableProgram_ = makeProgram(QStringLiteral("table"), false, error);
     if (!tableProgram_) return false;
+    tableCutProgram_ = makeProgram(QStringLiteral("table"), false, error, "CUT_POCKETS");
+    if (!tableCutProgram_) return false;
     ballProgram_ = makeProgram(QStringLiteral("ball"), false, error);
     if (!ballProgram_) return false;
     shadowProgram_ = makeProgram(QStringLiteral("shadow"), false, error);
@@ -177,6 +195,7 @@ void TableRenderer::release()
     glDeleteTextures(1, &digitTexture_);
     digitTexture_ = 0;
     tableProgram_.reset();
+    tableCutProgram_.reset();
     ballProgram_.reset();
     shadowProgram_.reset();
     lineProgram_.reset();
@@ -279,7 +298,10 @@ void TableRenderer::setScene(const ViewScene& scene)
 void TableRenderer::uploadTable()
 {
     std::vector<MeshVertex> mesh;
-    if (scene_.result) mesh = buildTableMesh(scene_.result->table);
+    if (scene_.result) {
+        mesh = buildTableMesh(scene_.result->table);
+        tableUncutCount_ = static_cast<int>(partitionByPocketCut(scene_.result->table, mesh));
+    }
     glBindBuffer(GL_ARRAY_BUFFER, tableVbo_);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(MeshVertex)), mesh.data(), GL_STATIC_DRAW);
     tableCount_ = static_cast<int>(mesh.size());
@@ -385,24 +407,33 @@ void TableRenderer::render(const RenderFrame& frame)
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
 
-    // Table and cue stick.
-    tableProgram_->bind();
-    tableProgram_->setUniformValue("uViewProjection", frame.viewProjection);
-    tableProgram_->setUniformValue("uModel", QMatrix4x4());
-    tableProgram_->setUniformValue("uEye", frame.eye);
-    tableProgram_->setUniformValueArray("uLights", lamps.data(), 2);
+    // Table: the part no pocket reaches without the pocket cut, the rest with it; then the cue stick.
     std::array<QVector3D, 6> pockets{};
-    const int pocketCount = static_cast<int>(std::min<std::size_t>(r.table.pockets.size(), pockets.size()));
-    for (int i = 0; i < pocketCount; ++i) {
-        const Pocket& p = r.table.pockets[static_cast<std::size_t>(i)];
-        pockets[static_cast<std::size_t>(i)] =
-            QVector3D(static_cast<float>(p.centre.x()), static_cast<float>(p.centre.y()), static_cast<float>(p.radius));
+    const int pocketCount = r.table.pockets.size() == 6 ? 6 : 0;
+    // The pockets by place (table.frag looks up one by the fragment's sixth of the table): bottom
+    // left, middle, right, then the top row; each slot takes the pocket nearest to its place.
+    for (int slot = 0; slot < pocketCount; ++slot) {
+        const Vec2 place(r.table.length * (slot % 3) / 2.0, r.table.width * (slot / 3));
+        const Pocket* nearest = &r.table.pockets.front();
+        for (const Pocket& p : r.table.pockets)
+            if ((p.centre - place).norm() < (nearest->centre - place).norm()) nearest = &p;
+        pockets[static_cast<std::size_t>(slot)] = QVector3D(static_cast<float>(nearest->centre.x()),
+                                                            static_cast<float>(nearest->centre.y()),
+                                                            static_cast<float>(nearest->radius));
     }
-    tableProgram_->setUniformValueArray("uPockets", pockets.data(), 6);
-    tableProgram_->setUniformValue("uPocketCount", pocketCount);
-    tableProgram_->setUniformValue("uTableSize", QVector2D(L, W));
     glBindVertexArray(tableVao_);
-    glDrawArrays(GL_TRIANGLES, 0, tableCount_);
+    for (QOpenGLShaderProgram* program : {tableCutProgram_.get(), tableProgram_.get()}) {
+        program->bind();
+        program->setUniformValue("uViewProjection", frame.viewProjection);
+        program->setUniformValue("uModel", QMatrix4x4());
+        program->setUniformValue("uEye", frame.eye);
+        program->setUniformValueArray("uLights", lamps.data(), 2);
+        program->setUniformValueArray("uPockets", pockets.data(), 6);
+        program->setUniformValue("uPocketCount", pocketCount);
+        program->setUniformValue("uTableSize", QVector2D(L, W));
+        if (program == tableCutProgram_.get()) glDrawArrays(GL_TRIANGLES, tableUncutCount_, tableCount_ - tableUncutCount_);
+        else glDrawArrays(GL_TRIANGLES, 0, tableUncutCount_);
+    }
     const bool beforeShot = frame.time <= 0.0;
     const bool showCue = beforeShot && scene_.shot && frame.overlays.test(static_cast<std::size_t>(Overlay::CueAndAim));
     if (showCue) {

@@ -82,10 +82,11 @@ private:
     int overlaysHighlight_ = -1;  // the highlighted event the marker buffer was built for
     bool initialized_ = false;
 
-    std::unique_ptr<QOpenGLShaderProgram> tableProgram_, ballProgram_, shadowProgram_, lineProgram_;
+    std::unique_ptr<QOpenGLShaderProgram> tableProgram_, tableCutProgram_, ballProgram_, shadowProgram_, lineProgram_;
 
     unsigned int tableVao_ = 0, tableVbo_ = 0;
     int tableCount_ = 0;
+    int tableUncutCount_ = 0;  // vertices drawn without the pocket cut; the rest with it
     unsigned int cueVao_ = 0, cueVbo_ = 0;
     int cueCount_ = 0;
     unsigned int ballVao_ = 0, ballInstanceVbo_ = 0;
