@@ -47,7 +47,7 @@ void arc(std::vector<LineVertex>& out, const QVector3D& centre, const QVector3D&
 void ring(std::vector<LineVertex>& out, const QVector3D& centre, float radius, const QVector4D& colour,
           float time = -1.0f)
 {
-    arc(out, centre, QVector3D(1, 0, 0), QVector3D(0, 1, 0), radius, 0.0, 2.0 * std::numbers::pi, 32, colour, time);
+    arc(out, centre, QVector3D(1, 0, 0), QVector3D(0, 1, 0), radius, 0.0, 2.0 * std::numbers::pi, 20, colour, time);
 }
 
 // An arrow from a to b; the barbs of its head lie in the plane of the shaft and `side`.

@@ -46,7 +46,7 @@ bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset
         return fail(QStringLiteral("Could not make the screenshot's OpenGL context current."));
 
     QOpenGLFramebufferObjectFormat fboFormat;
-    fboFormat.setAttachment(QOpenGLFramebufferObject::Depth);
+    fboFormat.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
     fboFormat.setSamples(4);
     bool ok = false;
     {

@@ -6,6 +6,7 @@
 
 #include <QFile>
 #include <QImage>
+#include <QOpenGLFramebufferObject>
 #include <QOpenGLShaderProgram>
 #include <QPainter>
 #include <QVector2D>
@@ -89,6 +90,13 @@ std::optional<QMatrix4x4> cuePlacement(const SimulationResult& result, const Cue
     m.setColumn(2, QVector4D(third, 0.0f));
     m.setColumn(3, QVector4D(tip, 1.0f));
     return m;
+}
+
+// Two lamps 1.1 m above the cloth, over the quarter points of the long axis.
+std::array<QVector3D, 2> lampPositions(const Table& table)
+{
+    const auto L = static_cast<float>(table.length), W = static_cast<float>(table.width);
+    return {QVector3D(0.25f * L, 0.5f * W, 1.1f), QVector3D(0.75f * L, 0.5f * W, 1.1f)};
 }
 
 }  // namespace
@@ -194,6 +202,8 @@ void TableRenderer::release()
     }
     glDeleteTextures(1, &digitTexture_);
     digitTexture_ = 0;
+    tableCache_.reset();
+    cacheGeneration_ = -1;
     tableProgram_.reset();
     tableCutProgram_.reset();
     ballProgram_.reset();
@@ -306,6 +316,7 @@ void TableRenderer::uploadTable()
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.size() * sizeof(MeshVertex)), mesh.data(), GL_STATIC_DRAW);
     tableCount_ = static_cast<int>(mesh.size());
     tableDirty_ = false;
+    ++tableGeneration_;
 }
 
 void TableRenderer::uploadSceneOverlays(int highlightedEvent)
@@ -387,27 +398,18 @@ void TableRenderer::drawLines(const LineBuffer& buffer, float widthPx, float pas
     glDrawArrays(GL_LINES, 0, buffer.count);
 }
 
-void TableRenderer::render(const RenderFrame& frame)
+bool TableRenderer::tableCacheValid(const RenderFrame& frame, int samples) const
 {
-    glViewport(0, 0, frame.viewportPixels.width(), frame.viewportPixels.height());
-    glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (!initialized_ || !scene_.result) return;
+    return tableCache_ && tableCache_->isValid() && cacheGeneration_ == tableGeneration_ && cacheSamples_ == samples &&
+           tableCache_->size() == frame.viewportPixels && cacheViewProjection_ == frame.viewProjection;
+}
+
+// The table: the part no pocket reaches without the pocket cut, the rest with it.
+void TableRenderer::drawTable(const RenderFrame& frame)
+{
     const SimulationResult& r = *scene_.result;
-    if (tableDirty_) uploadTable();
-    if (overlaysDirty_ || overlaysHighlight_ != frame.highlightedEvent) uploadSceneOverlays(frame.highlightedEvent);
-    updateBallInstances(frame);
-
     const auto L = static_cast<float>(r.table.length), W = static_cast<float>(r.table.width);
-    const std::array<QVector3D, 2> lamps{QVector3D(0.25f * L, 0.5f * W, 1.1f), QVector3D(0.75f * L, 0.5f * W, 1.1f)};
-
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-
-    // Table: the part no pocket reaches without the pocket cut, the rest with it; then the cue stick.
+    const std::array<QVector3D, 2> lamps = lampPositions(r.table);
     std::array<QVector3D, 6> pockets{};
     const int pocketCount = r.table.pockets.size() == 6 ? 6 : 0;
     // The pockets by place (table.frag looks up one by the fragment's sixth of the table): bottom
@@ -434,10 +436,71 @@ void TableRenderer::render(const RenderFrame& frame)
         if (program == tableCutProgram_.get()) glDrawArrays(GL_TRIANGLES, tableUncutCount_, tableCount_ - tableUncutCount_);
         else glDrawArrays(GL_TRIANGLES, 0, tableUncutCount_);
     }
+}
+
+void TableRenderer::render(const RenderFrame& frame)
+{
+    glViewport(0, 0, frame.viewportPixels.width(), frame.viewportPixels.height());
+    glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
+    glDisable(GL_SCISSOR_TEST);  // QPainter may leave it on in a widget
+    glDisable(GL_STENCIL_TEST);
+    if (!initialized_ || !scene_.result) {
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return;
+    }
+    const SimulationResult& r = *scene_.result;
+    if (tableDirty_) uploadTable();
+    if (overlaysDirty_ || overlaysHighlight_ != frame.highlightedEvent) uploadSceneOverlays(frame.highlightedEvent);
+    updateBallInstances(frame);
+
+    const std::array<QVector3D, 2> lamps = lampPositions(r.table);
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+
+    // The table, from the cache when the camera has not moved; then the cue stick.
+    GLint target = 0, samples = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    glGetIntegerv(GL_SAMPLES, &samples);
+    if (!tableCacheValid(frame, samples)) {
+        if (!tableCache_ || tableCache_->size() != frame.viewportPixels || cacheSamples_ != samples) {
+            QOpenGLFramebufferObjectFormat format;
+            format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);  // as QOpenGLWidget's
+            format.setSamples(samples);
+            tableCache_ = std::make_unique<QOpenGLFramebufferObject>(frame.viewportPixels, format);
+            cacheSamples_ = samples;
+        }
+        cacheGeneration_ = -1;
+        if (tableCache_->isValid()) {
+            glBindFramebuffer(GL_FRAMEBUFFER, tableCache_->handle());
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            drawTable(frame);
+            cacheViewProjection_ = frame.viewProjection;
+            cacheGeneration_ = tableGeneration_;
+            glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+        }
+    }
+    if (tableCacheValid(frame, samples)) {
+        const int w = frame.viewportPixels.width(), h = frame.viewportPixels.height();
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, tableCache_->handle());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    } else {
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        drawTable(frame);
+    }
     const bool beforeShot = frame.time <= 0.0;
     const bool showCue = beforeShot && scene_.shot && frame.overlays.test(static_cast<std::size_t>(Overlay::CueAndAim));
     if (showCue) {
         if (const std::optional<QMatrix4x4> model = cuePlacement(r, *scene_.shot)) {
+            tableProgram_->bind();
+            tableProgram_->setUniformValue("uViewProjection", frame.viewProjection);
+            tableProgram_->setUniformValue("uEye", frame.eye);
+            tableProgram_->setUniformValueArray("uLights", lamps.data(), 2);
             tableProgram_->setUniformValue("uModel", *model);
             glBindVertexArray(cueVao_);
             glDrawArrays(GL_TRIANGLES, 0, cueCount_);

@@ -22,6 +22,7 @@
 #include <memory>
 #include <vector>
 
+class QOpenGLFramebufferObject;
 class QOpenGLShaderProgram;
 
 namespace cuelab {
@@ -69,6 +70,8 @@ private:
     void drawLines(const LineBuffer& buffer, float widthPx, float pastAlpha,
                    float futureAlpha, float dashPeriod);
     void uploadTable();
+    void drawTable(const RenderFrame& frame);
+    bool tableCacheValid(const RenderFrame& frame, int samples) const;
     void uploadSceneOverlays(int highlightedEvent);
     void updateBallInstances(const RenderFrame& frame);
     void createDigitTexture();
@@ -87,6 +90,14 @@ private:
     unsigned int tableVao_ = 0, tableVbo_ = 0;
     int tableCount_ = 0;
     int tableUncutCount_ = 0;  // vertices drawn without the pocket cut; the rest with it
+    int tableGeneration_ = 0;  // counts table uploads
+
+    // The table does not change while time runs or scrubs: it is drawn once into this framebuffer
+    // (colour and depth) for a camera and copied into each frame until the camera or table changes.
+    std::unique_ptr<QOpenGLFramebufferObject> tableCache_;
+    QMatrix4x4 cacheViewProjection_;
+    int cacheSamples_ = -1;
+    int cacheGeneration_ = -1;
     unsigned int cueVao_ = 0, cueVbo_ = 0;
     int cueCount_ = 0;
     unsigned int ballVao_ = 0, ballInstanceVbo_ = 0;
