@@ -76,7 +76,8 @@ void paintEventTimes(QPainter& painter, const ViewScene& scene, const LabelFrame
     }
 }
 
-// A bar as long on screen as an arrow for 1 m/s drawn at the middle of the table, horizontally.
+// A bar exactly as long on screen as a velocity arrow drawn at the middle of the table, for the
+// largest round speed whose bar fits in 240 pixels.
 void paintVelocityLegend(QPainter& painter, const ViewScene& scene, const LabelFrame& frame)
 {
     const Table& t = scene.result->table;
@@ -86,10 +87,16 @@ void paintVelocityLegend(QPainter& painter, const ViewScene& scene, const LabelF
     const std::optional<QPointF> b = toScreen(frame, centre + QVector3D(static_cast<float>(kVelocityArrowScale), 0, 0));
     const std::optional<QPointF> c = toScreen(frame, centre + QVector3D(0, static_cast<float>(kVelocityArrowScale), 0));
     if (!a || !b || !c) return;
-    const double length = std::max(QLineF(*a, *b).length(), QLineF(*a, *c).length());
+    const double perMetrePerSecond = std::max(QLineF(*a, *b).length(), QLineF(*a, *c).length());  // pixels
+    double speed = 1.0;  // m/s
+    for (double candidate : {5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02}) {
+        speed = candidate;
+        if (candidate * perMetrePerSecond <= 240.0) break;
+    }
+    const double length = speed * perMetrePerSecond;
     if (length < 4.0) return;
     const QFontMetricsF metrics(painter.font());
-    const QString label = QStringLiteral("1 m/s");
+    const QString label = QStringLiteral("%1 m/s").arg(speed);
     const double h = metrics.height();
     const QRectF box(10.0, frame.logicalSize.height() - 2.0 * h - 14.0, length + metrics.horizontalAdvance(label) + 28.0,
                      h + 12.0);
