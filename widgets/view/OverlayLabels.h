@@ -1,7 +1,7 @@
 #pragma once
 // The text of the overlays, painted with QPainter over the GL image: the time of impact next to each
 // event marker and the scale legend of the velocity arrows. Works on a widget after paintGL and on a
-// rendered QImage alike.
+// rendered QImage alike; each label is drawn once into an image and reused (see OverlayLabels.cpp).
 
 #include "ViewScene.h"
 

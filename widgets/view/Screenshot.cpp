@@ -47,7 +47,7 @@ bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset
 
     QOpenGLFramebufferObjectFormat fboFormat;
     fboFormat.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
-    fboFormat.setSamples(4);
+    fboFormat.setSamples(0);  // as the view's: the renderer antialiases the table, balls and lines itself
     bool ok = false;
     {
         QOpenGLFramebufferObject fbo(size, fboFormat);

@@ -203,7 +203,9 @@ void TableRenderer::release()
     glDeleteTextures(1, &digitTexture_);
     digitTexture_ = 0;
     tableCache_.reset();
+    tableMultisampled_.reset();
     cacheGeneration_ = -1;
+    hasLastFrame_ = false;
     tableProgram_.reset();
     tableCutProgram_.reset();
     ballProgram_.reset();
@@ -398,10 +400,65 @@ void TableRenderer::drawLines(const LineBuffer& buffer, float widthPx, float pas
     glDrawArrays(GL_LINES, 0, buffer.count);
 }
 
-bool TableRenderer::tableCacheValid(const RenderFrame& frame, int samples) const
+bool TableRenderer::tableCacheValid(const RenderFrame& frame, int samples, bool withCue) const
 {
     return tableCache_ && tableCache_->isValid() && cacheGeneration_ == tableGeneration_ && cacheSamples_ == samples &&
-           tableCache_->size() == frame.viewportPixels && cacheViewProjection_ == frame.viewProjection;
+           cacheHasCue_ == withCue && tableCache_->size() == frame.viewportPixels &&
+           cacheViewProjection_ == frame.viewProjection;
+}
+
+// Draws the table (and the cue) into the cache. A multisampled target gets a cache with its own
+// samples; a single-sampled one (the view's, whose balls and lines antialias themselves) gets the
+// table drawn 4x multisampled and resolved once, so that its edges stay smooth at the cost of one
+// single-sampled copy per frame.
+void TableRenderer::buildTableCache(const RenderFrame& frame, int samples, bool withCue, unsigned int target)
+{
+    auto makeFbo = [&frame](int fboSamples) {
+        QOpenGLFramebufferObjectFormat format;
+        format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);  // as QOpenGLWidget's
+        format.setSamples(fboSamples);
+        return std::make_unique<QOpenGLFramebufferObject>(frame.viewportPixels, format);
+    };
+    if (!tableCache_ || tableCache_->size() != frame.viewportPixels || cacheSamples_ != samples) {
+        tableCache_ = makeFbo(samples);
+        cacheSamples_ = samples;
+    }
+    const bool resolve = samples == 0;
+    if (resolve && (!tableMultisampled_ || tableMultisampled_->size() != frame.viewportPixels))
+        tableMultisampled_ = makeFbo(kTableSamples);
+    if (!resolve) tableMultisampled_.reset();
+    cacheGeneration_ = -1;
+    QOpenGLFramebufferObject* drawInto = resolve ? tableMultisampled_.get() : tableCache_.get();
+    if (!tableCache_->isValid() || !drawInto->isValid()) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, drawInto->handle());
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    drawTable(frame);
+    if (withCue) drawCue(frame);
+    if (resolve) {
+        const int w = frame.viewportPixels.width(), h = frame.viewportPixels.height();
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, tableMultisampled_->handle());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, tableCache_->handle());
+        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    cacheViewProjection_ = frame.viewProjection;
+    cacheGeneration_ = tableGeneration_;
+    cacheHasCue_ = withCue;
+}
+
+void TableRenderer::drawCue(const RenderFrame& frame)
+{
+    const SimulationResult& r = *scene_.result;
+    const std::optional<QMatrix4x4> model = cuePlacement(r, *scene_.shot);
+    if (!model) return;
+    const std::array<QVector3D, 2> lamps = lampPositions(r.table);
+    tableProgram_->bind();
+    tableProgram_->setUniformValue("uViewProjection", frame.viewProjection);
+    tableProgram_->setUniformValue("uEye", frame.eye);
+    tableProgram_->setUniformValueArray("uLights", lamps.data(), 2);
+    tableProgram_->setUniformValue("uModel", *model);
+    glBindVertexArray(cueVao_);
+    glDrawArrays(GL_TRIANGLES, 0, cueCount_);
 }
 
 // The table: the part no pocket reaches without the pocket cut, the rest with it.
@@ -461,29 +518,18 @@ void TableRenderer::render(const RenderFrame& frame)
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
 
-    // The table, from the cache when the camera has not moved; then the cue stick.
+    // The table (and the cue before the shot), from the cache when the camera has not moved since
+    // the last frame; drawn straight into the frame, without antialiasing, while the camera moves.
     GLint target = 0, samples = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
     glGetIntegerv(GL_SAMPLES, &samples);
-    if (!tableCacheValid(frame, samples)) {
-        if (!tableCache_ || tableCache_->size() != frame.viewportPixels || cacheSamples_ != samples) {
-            QOpenGLFramebufferObjectFormat format;
-            format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);  // as QOpenGLWidget's
-            format.setSamples(samples);
-            tableCache_ = std::make_unique<QOpenGLFramebufferObject>(frame.viewportPixels, format);
-            cacheSamples_ = samples;
-        }
-        cacheGeneration_ = -1;
-        if (tableCache_->isValid()) {
-            glBindFramebuffer(GL_FRAMEBUFFER, tableCache_->handle());
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-            drawTable(frame);
-            cacheViewProjection_ = frame.viewProjection;
-            cacheGeneration_ = tableGeneration_;
-            glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
-        }
-    }
-    if (tableCacheValid(frame, samples)) {
+    const bool beforeShot = frame.time <= 0.0;
+    const bool showCue = beforeShot && scene_.shot && frame.overlays.test(static_cast<std::size_t>(Overlay::CueAndAim));
+    const bool moving = hasLastFrame_ && lastViewProjection_ != frame.viewProjection;
+    lastViewProjection_ = frame.viewProjection;
+    hasLastFrame_ = true;
+    if (!moving && !tableCacheValid(frame, samples, showCue)) buildTableCache(frame, samples, showCue, static_cast<GLuint>(target));
+    if (tableCacheValid(frame, samples, showCue)) {
         const int w = frame.viewportPixels.width(), h = frame.viewportPixels.height();
         glBindFramebuffer(GL_READ_FRAMEBUFFER, tableCache_->handle());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
@@ -492,19 +538,7 @@ void TableRenderer::render(const RenderFrame& frame)
     } else {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         drawTable(frame);
-    }
-    const bool beforeShot = frame.time <= 0.0;
-    const bool showCue = beforeShot && scene_.shot && frame.overlays.test(static_cast<std::size_t>(Overlay::CueAndAim));
-    if (showCue) {
-        if (const std::optional<QMatrix4x4> model = cuePlacement(r, *scene_.shot)) {
-            tableProgram_->bind();
-            tableProgram_->setUniformValue("uViewProjection", frame.viewProjection);
-            tableProgram_->setUniformValue("uEye", frame.eye);
-            tableProgram_->setUniformValueArray("uLights", lamps.data(), 2);
-            tableProgram_->setUniformValue("uModel", *model);
-            glBindVertexArray(cueVao_);
-            glDrawArrays(GL_TRIANGLES, 0, cueCount_);
-        }
+        if (showCue) drawCue(frame);
     }
 
     // Contact shadows, then the balls.

@@ -71,7 +71,9 @@ private:
                    float futureAlpha, float dashPeriod);
     void uploadTable();
     void drawTable(const RenderFrame& frame);
-    bool tableCacheValid(const RenderFrame& frame, int samples) const;
+    bool tableCacheValid(const RenderFrame& frame, int samples, bool withCue) const;
+    void buildTableCache(const RenderFrame& frame, int samples, bool withCue, unsigned int target);
+    void drawCue(const RenderFrame& frame);
     void uploadSceneOverlays(int highlightedEvent);
     void updateBallInstances(const RenderFrame& frame);
     void createDigitTexture();
@@ -94,10 +96,17 @@ private:
 
     // The table does not change while time runs or scrubs: it is drawn once into this framebuffer
     // (colour and depth) for a camera and copied into each frame until the camera or table changes.
-    std::unique_ptr<QOpenGLFramebufferObject> tableCache_;
+    // For a single-sampled target it is drawn with kTableSamples into tableMultisampled_ and resolved
+    // into the cache. While the camera moves (a new view every frame) the cache would be rebuilt each
+    // frame for nothing: the table is then drawn straight into the frame, without multisampling.
+    static constexpr int kTableSamples = 4;
+    std::unique_ptr<QOpenGLFramebufferObject> tableCache_, tableMultisampled_;
     QMatrix4x4 cacheViewProjection_;
     int cacheSamples_ = -1;
     int cacheGeneration_ = -1;
+    bool cacheHasCue_ = false;  // the cue stick is drawn into the cache before the shot
+    QMatrix4x4 lastViewProjection_;  // the camera of the previous frame, to tell a moving camera
+    bool hasLastFrame_ = false;
     unsigned int cueVao_ = 0, cueVbo_ = 0;
     int cueCount_ = 0;
     unsigned int ballVao_ = 0, ballInstanceVbo_ = 0;

@@ -27,10 +27,14 @@ constexpr double kFpsReportIntervalMs = 1000.0;
 
 TableView::TableView(QWidget* parent) : QOpenGLWidget(parent)
 {
-    // OpenGL 3.3 core whatever the application's default; keep its multisampling.
+    // OpenGL 3.3 core whatever the application's default, and single-sampled: the balls and lines
+    // antialias themselves in their shaders and the renderer multisamples the table once into its
+    // cache, so a multisampled widget would only make a software rasteriser shade, copy and resolve
+    // four samples of every pixel every frame.
     QSurfaceFormat f = QSurfaceFormat::defaultFormat();
     f.setVersion(3, 3);
     f.setProfile(QSurfaceFormat::CoreProfile);
+    f.setSamples(0);
     f.setDepthBufferSize(std::max(24, f.depthBufferSize()));
     setFormat(f);
     overlays_ = defaultOverlays();
