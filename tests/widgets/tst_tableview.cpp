@@ -11,6 +11,7 @@
 #include <QDir>
 #include <QMouseEvent>
 #include <QSignalSpy>
+#include <QTimer>
 #include <QtTest>
 
 #include <cmath>
@@ -75,6 +76,7 @@ private slots:
     void picking();
     void draggingIsConstrained();
     void overlaysSwitch();
+    void frameRateOnlyWhileAnimating();
     void screenshotShowsTheBalls_data();
     void screenshotShowsTheBalls();
     void screenshotRefusesBadInput();
@@ -232,6 +234,32 @@ void TestTableView::overlaysSwitch()
     QVERIFY(view.overlayVisible(Overlay::Trails));
     view.setOverlayVisible(Overlay::Spin, true);
     QVERIFY(view.overlayVisible(Overlay::Spin));
+}
+
+// The frame rate is reported while frames follow each other (here every 20 ms for 1.5 s), never for
+// an isolated repaint, and a reported run ends with one 0 ("not animating").
+void TestTableView::frameRateOnlyWhileAnimating()
+{
+    TableView view;
+    view.resize(320, 200);
+    view.setScene(sceneOf(threeBalls()));
+    QSignalSpy spy(&view, &TableView::framesPerSecond);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setSelectedBall(1);  // one more isolated repaint
+    QTest::qWait(1200);       // more than the idle gap (500 ms) after the last frame
+    for (const QList<QVariant>& args : spy) QCOMPARE(args.at(0).toDouble(), 0.0);
+
+    spy.clear();
+    QTimer ticker;
+    int step = 0;
+    QObject::connect(&ticker, &QTimer::timeout, &view, [&view, &step] { view.setSelectedBall(step++ % 3); });
+    ticker.start(20);
+    QTRY_VERIFY_WITH_TIMEOUT(!spy.isEmpty(), 5000);
+    ticker.stop();
+    QVERIFY(spy.first().at(0).toDouble() > 0.0);
+    QTRY_COMPARE_WITH_TIMEOUT(spy.last().at(0).toDouble(), 0.0, 3000);
+    for (qsizetype i = 0; i + 1 < spy.size(); ++i) QVERIFY(spy.at(i).at(0).toDouble() > 0.0);
 }
 
 void TestTableView::screenshotShowsTheBalls_data()

@@ -21,7 +21,8 @@ namespace {
 constexpr float kOrbitDegPerPixel = 0.3f;    // degrees of orbit per pixel of mouse travel
 constexpr float kPresetTransitionS = 0.6f;   // s
 constexpr double kDragThresholdPx = 3.0;     // pixels before a press becomes a drag
-constexpr double kFpsReportIntervalMs = 1000.0;
+constexpr int kFpsReportIntervalMs = 500;  // ms between reports while animating
+constexpr int kIdleGapMs = 500;            // ms: frames further apart do not make an animation
 
 }  // namespace
 
@@ -42,6 +43,9 @@ TableView::TableView(QWidget* parent) : QOpenGLWidget(parent)
     setMinimumSize(200, 120);
     cameraTimer_.setInterval(16);
     connect(&cameraTimer_, &QTimer::timeout, this, &TableView::stepCameraAnimation);
+    idleTimer_.setSingleShot(true);
+    idleTimer_.setInterval(kIdleGapMs);
+    connect(&idleTimer_, &QTimer::timeout, this, &TableView::animationStopped);
 }
 
 TableView::~TableView() { releaseGl(); }
@@ -208,16 +212,32 @@ void TableView::paintGL()
     countFrame();
 }
 
+// A frame drawn within kIdleGapMs of the previous one continues a run of animation; the rate counts
+// only the intervals between the frames of a run, never the idle time before it.
 void TableView::countFrame()
 {
-    if (!fpsClock_.isValid()) fpsClock_.start();
-    ++framesSinceReport_;
-    const double elapsedMs = static_cast<double>(fpsClock_.elapsed());
-    if (elapsedMs >= kFpsReportIntervalMs) {
-        emit framesPerSecond(1000.0 * framesSinceReport_ / elapsedMs);
+    if (!idleTimer_.isActive() || !fpsClock_.isValid()) {
+        fpsClock_.start();
         framesSinceReport_ = 0;
-        fpsClock_.restart();
+    } else {
+        ++framesSinceReport_;
+        const qint64 elapsedMs = fpsClock_.elapsed();
+        if (elapsedMs >= kFpsReportIntervalMs) {
+            emit framesPerSecond(1000.0 * framesSinceReport_ / static_cast<double>(elapsedMs));
+            rateReported_ = true;
+            framesSinceReport_ = 0;
+            fpsClock_.restart();
+        }
     }
+    idleTimer_.start();
+}
+
+void TableView::animationStopped()
+{
+    fpsClock_.invalidate();
+    if (!rateReported_) return;
+    rateReported_ = false;
+    emit framesPerSecond(0.0);
 }
 
 void TableView::mousePressEvent(QMouseEvent* event)

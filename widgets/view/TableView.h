@@ -51,7 +51,14 @@ signals:
                                                       // dragging, on the playing surface, not
                                                       // overlapping another ball
     void ballDragFinished(int index);
-    void framesPerSecond(double fps);                 // measured, for the status bar
+    // The rate at which the view drew frames while it was redrawn continuously (playback, a camera
+    // transition, orbiting, dragging), over the last half second of that run: frames per second
+    // delivered, bounded both by the renderer and by how often frames were asked for (playback's
+    // timer), not the renderer's capacity (cuelab-viewbench measures that). A frame more than half a
+    // second after the previous one starts a new run, and a single repaint (an edit, a selection) is
+    // no run at all: an idle view reports nothing. When a run that was reported ends (no frame for
+    // half a second), 0 is emitted once: "not animating", for the status bar to clear its reading.
+    void framesPerSecond(double fps);
 
 protected:
     void initializeGL() override;
@@ -70,6 +77,7 @@ private:
     void releaseGl();
     void stepCameraAnimation();
     void countFrame();
+    void animationStopped();
 
     ViewScene scene_;
     double time_ = 0.0;  // s
@@ -93,8 +101,10 @@ private:
 
     QTimer cameraTimer_;         // steps preset transitions
     QElapsedTimer cameraClock_;
-    QElapsedTimer fpsClock_;
+    QElapsedTimer fpsClock_;     // since the last report of the current run
     int framesSinceReport_ = 0;
+    QTimer idleTimer_;           // single shot: fires when no frame followed the last one in time
+    bool rateReported_ = false;  // a rate above 0 was emitted for the current run
 };
 
 }  // namespace cuelab
