@@ -186,6 +186,7 @@ private slots:
     void ballBallContact_data();
     void ballBallContact();
     void grazingContactsAreNeverMissed();
+    void grazingContactRestartMovesOn();
     void randomQuartics_data();
     void randomQuartics();
     void nonFiniteInput();
@@ -478,6 +479,71 @@ void TestQuartic::grazingContactsAreNeverMissed()
     }
     QCOMPARE(missed, 0);
     QVERIFY2(worst <= 3e-7, qPrintable(QString("worst relative error %1").arg(worst)));
+}
+
+// Event detection restarts the search from the contact just found. A grazing contact is a double
+// root, which rounding may split into two nearly equal roots (Quartic.h): restarting must report it at
+// most twice (the simulation would otherwise stall on it) and must then find the second touch, where
+// the decelerating path comes back to x = 0, also a double root, at
+// (speed + sqrt(speed^2 - 4 a distance)) / (2 a), or nothing when that lies beyond the interval.
+void TestQuartic::grazingContactRestartMovesOn()
+{
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    constexpr double kHorizon = 100.0;  // s, the interval searched
+    constexpr double kDoubleRootTolerance = 3e-7;  // relative, the sqrt(eps) conditioning of a touch
+    int stalled = 0;
+    int wrongAfter = 0;  // the second touch missed, or a root invented after the first
+    int split = 0;
+    double worst = 0.0;
+    constexpr int kCases = 2000;
+    for (int k = 0; k < kCases; ++k) {
+        const double angle = 2.0 * std::numbers::pi * unit(random);
+        const double u = std::cos(angle);
+        const double w = std::sin(angle);
+        const double distance = 0.05 + 2.0 * unit(random);  // m along the path to the touch
+        const double speed = 0.2 + 3.0 * unit(random);      // m/s
+        // Half the deceleration, m/s^2: at least 0.05 of the most that still reaches the touch, so
+        // that the second touch is well apart from the first.
+        const double halfDeceleration = (0.05 + 0.85 * unit(random)) * speed * speed / (4.0 * distance);
+        const double side = (k % 2 == 0) ? 1.0 : -1.0;
+        const Relative r{-distance * u - side * kContact * w, -distance * w + side * kContact * u,
+                         speed * u, speed * w, -halfDeceleration * u, -halfDeceleration * w};
+        const double root = std::sqrt(speed * speed - 4.0 * halfDeceleration * distance);
+        const double firstTouch = 2.0 * distance / (speed + root);
+        const double secondTouch = (speed + root) / (2.0 * halfDeceleration);
+        const Quartic c = contactQuartic(r, kContact);
+        double t = smallestRootInInterval(c, 0.0, kHorizon);
+        QVERIFY2(within(t, firstTouch, kDoubleRootTolerance), qPrintable(describe(c)));
+        int reports = 1;
+        for (;;) {
+            const double next = smallestRootInInterval(c, t, kHorizon);
+            if (!within(next, firstTouch, kDoubleRootTolerance)) {
+                t = next;
+                break;
+            }
+            t = next;
+            if (++reports > 2) break;
+        }
+        if (reports > 2) {
+            ++stalled;
+            continue;
+        }
+        if (reports == 2) ++split;
+        if (secondTouch > kHorizon) {
+            if (!std::isinf(t)) ++wrongAfter;  // a root reported where there is none
+            continue;
+        }
+        if (std::isinf(t)) {
+            ++wrongAfter;
+            continue;
+        }
+        worst = std::max(worst, std::abs(t - secondTouch) / secondTouch);
+    }
+    qInfo("%d of %d grazing contacts reported as a split pair", split, kCases);
+    QCOMPARE(stalled, 0);
+    QCOMPARE(wrongAfter, 0);
+    QVERIFY2(worst <= kDoubleRootTolerance, qPrintable(QString("worst relative error of the second touch %1").arg(worst)));
 }
 
 // Random quartics from random roots. Well separated roots must all be found, within
