@@ -1,7 +1,10 @@
 #version 330 core
 // Phenolic balls, ray-traced on their impostor quad: glossy Phong under the two lamps, a band for
 // stripes, a white disc with the number on both ends of the body x axis, red dots on the cue ball's
-// six axes, the silhouette antialiased over one pixel.
+// six axes, the silhouette antialiased over one pixel. Built with GHOST for the translucent ghost
+// balls, which keep the depth of their impostor quad (it lies just in front of the sphere): a shader
+// that writes gl_FragDepth loses the software rasteriser's early depth test, and the ghosts, many
+// and overlapping, are drawn after everything they could hide.
 in vec3 vQuadPoint;
 flat in vec4 vCentreRadius;
 flat in vec4 vOrientation;
@@ -43,8 +46,10 @@ void main()
     float h = max(r * r - miss2, 0.0);
     vec3 p = uEye + (-b - sqrt(h)) * dir;
     vec3 n = normalize(p - centre);
+#ifndef GHOST
     vec4 clip = uViewProjection * vec4(p, 1.0);
     gl_FragDepth = clamp(0.5 + 0.5 * clip.z / clip.w, 0.0, 1.0);
+#endif
 
     vec3 l = rotateInverse(vOrientation, n);
     vec3 base = vColourNumber.rgb;

@@ -119,6 +119,8 @@ bool TableRenderer::initialize(QString* error)
     if (!tableCutProgram_) return false;
     ballProgram_ = makeProgram(QStringLiteral("ball"), false, error);
     if (!ballProgram_) return false;
+    ghostProgram_ = makeProgram(QStringLiteral("ball"), false, error, "GHOST");
+    if (!ghostProgram_) return false;
     shadowProgram_ = makeProgram(QStringLiteral("shadow"), false, error);
     if (!shadowProgram_) return false;
     lineProgram_ = makeProgram(QStringLiteral("line"), true, error);
@@ -209,6 +211,7 @@ void TableRenderer::release()
     tableProgram_.reset();
     tableCutProgram_.reset();
     ballProgram_.reset();
+    ghostProgram_.reset();
     shadowProgram_.reset();
     lineProgram_.reset();
     initialized_ = false;
@@ -553,13 +556,16 @@ void TableRenderer::render(const RenderFrame& frame)
     }
     // Balls blend only their antialiased rim; they still write depth.
     glDepthMask(GL_TRUE);
-    ballProgram_->bind();
-    ballProgram_->setUniformValue("uViewProjection", frame.viewProjection);
-    ballProgram_->setUniformValue("uEye", frame.eye);
-    ballProgram_->setUniformValue("uCameraUp", frame.cameraUp);
-    ballProgram_->setUniformValue("uPixelAngle", frame.pixelAngle);
-    ballProgram_->setUniformValueArray("uLights", lamps.data(), 2);
-    ballProgram_->setUniformValue("uDigits", 0);
+    auto bindBallProgram = [&frame, &lamps](QOpenGLShaderProgram& program) {
+        program.bind();
+        program.setUniformValue("uViewProjection", frame.viewProjection);
+        program.setUniformValue("uEye", frame.eye);
+        program.setUniformValue("uCameraUp", frame.cameraUp);
+        program.setUniformValue("uPixelAngle", frame.pixelAngle);
+        program.setUniformValueArray("uLights", lamps.data(), 2);
+        program.setUniformValue("uDigits", 0);
+    };
+    bindBallProgram(*ballProgram_);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, digitTexture_);
     if (ballCount_ > 0) {
@@ -571,6 +577,7 @@ void TableRenderer::render(const RenderFrame& frame)
     glDepthMask(GL_FALSE);
     auto on = [&frame](Overlay o) { return frame.overlays.test(static_cast<std::size_t>(o)); };
     if (on(Overlay::GhostBalls) && ghostCount_ > 0) {
+        bindBallProgram(*ghostProgram_);
         glBindVertexArray(ghostVao_);
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, ghostCount_);
     }

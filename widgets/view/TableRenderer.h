@@ -87,7 +87,7 @@ private:
     int overlaysHighlight_ = -1;  // the highlighted event the marker buffer was built for
     bool initialized_ = false;
 
-    std::unique_ptr<QOpenGLShaderProgram> tableProgram_, tableCutProgram_, ballProgram_, shadowProgram_, lineProgram_;
+    std::unique_ptr<QOpenGLShaderProgram> tableProgram_, tableCutProgram_, ballProgram_, ghostProgram_, shadowProgram_, lineProgram_;
 
     unsigned int tableVao_ = 0, tableVbo_ = 0;
     int tableCount_ = 0;
