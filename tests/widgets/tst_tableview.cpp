@@ -77,6 +77,7 @@ private slots:
     void draggingIsConstrained();
     void overlaysSwitch();
     void frameRateOnlyWhileAnimating();
+    void settlesAfterTheCameraMoves();
     void screenshotShowsTheBalls_data();
     void screenshotShowsTheBalls();
     void screenshotRefusesBadInput();
@@ -260,6 +261,28 @@ void TestTableView::frameRateOnlyWhileAnimating()
     QVERIFY(spy.first().at(0).toDouble() > 0.0);
     QTRY_COMPARE_WITH_TIMEOUT(spy.last().at(0).toDouble(), 0.0, 3000);
     for (qsizetype i = 0; i + 1 < spy.size(); ++i) QVERIFY(spy.at(i).at(0).toDouble() > 0.0);
+}
+
+// While the camera moves the table is drawn without its antialiased cache; once it stops, the view
+// paints one more frame by itself (and no more) to draw the table antialiased.
+void TestTableView::settlesAfterTheCameraMoves()
+{
+    TableView view;
+    view.resize(320, 200);
+    view.setScene(sceneOf(threeBalls()));
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.grabFramebuffer();
+    QTest::qWait(300);
+    QSignalSpy frames(&view, &QOpenGLWidget::frameSwapped);
+    QTest::qWait(300);
+    QCOMPARE(frames.size(), 0);  // still: nothing to repaint
+    view.camera().orbit(10.0f, 0.0f);
+    view.update();
+    QTRY_COMPARE_WITH_TIMEOUT(frames.size(), 2, 3000);
+    QTest::qWait(500);
+    QCOMPARE(frames.size(), 2);
+    QCOMPARE(view.lastGlError(), 0u);
 }
 
 void TestTableView::screenshotShowsTheBalls_data()

@@ -504,6 +504,7 @@ void TableRenderer::render(const RenderFrame& frame)
     glClearColor(0.11f, 0.12f, 0.14f, 1.0f);
     glDisable(GL_SCISSOR_TEST);  // QPainter may leave it on in a widget
     glDisable(GL_STENCIL_TEST);
+    tableUncached_ = false;
     if (!initialized_ || !scene_.result) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         return;
@@ -532,7 +533,9 @@ void TableRenderer::render(const RenderFrame& frame)
     lastViewProjection_ = frame.viewProjection;
     hasLastFrame_ = true;
     if (!moving && !tableCacheValid(frame, samples, showCue)) buildTableCache(frame, samples, showCue, static_cast<GLuint>(target));
-    if (tableCacheValid(frame, samples, showCue)) {
+    const bool cached = tableCacheValid(frame, samples, showCue);
+    tableUncached_ = moving && !cached;  // not when the cache failed: that would repaint for ever
+    if (cached) {
         const int w = frame.viewportPixels.width(), h = frame.viewportPixels.height();
         glBindFramebuffer(GL_READ_FRAMEBUFFER, tableCache_->handle());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));

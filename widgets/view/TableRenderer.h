@@ -54,6 +54,10 @@ public:
     void setScene(const ViewScene& scene);
     void render(const RenderFrame& frame);
 
+    // Whether the last frame drew the table without its cache (the camera had moved since the frame
+    // before): the table was not antialiased, and one more frame with the same camera draws it so.
+    bool tableUncached() const { return tableUncached_; }
+
     // The ball states of the last rendered frame (index = ball index).
     const std::vector<BallState>& states() const { return states_; }
 
@@ -107,6 +111,7 @@ private:
     bool cacheHasCue_ = false;  // the cue stick is drawn into the cache before the shot
     QMatrix4x4 lastViewProjection_;  // the camera of the previous frame, to tell a moving camera
     bool hasLastFrame_ = false;
+    bool tableUncached_ = false;
     unsigned int cueVao_ = 0, cueVbo_ = 0;
     int cueCount_ = 0;
     unsigned int ballVao_ = 0, ballInstanceVbo_ = 0;

@@ -23,6 +23,7 @@ constexpr float kPresetTransitionS = 0.6f;   // s
 constexpr double kDragThresholdPx = 3.0;     // pixels before a press becomes a drag
 constexpr int kFpsReportIntervalMs = 500;  // ms between reports while animating
 constexpr int kIdleGapMs = 500;            // ms: frames further apart do not make an animation
+constexpr int kSettleMs = 100;             // ms after the camera stops before the antialiased frame
 
 }  // namespace
 
@@ -43,6 +44,9 @@ TableView::TableView(QWidget* parent) : QOpenGLWidget(parent)
     setMinimumSize(200, 120);
     cameraTimer_.setInterval(16);
     connect(&cameraTimer_, &QTimer::timeout, this, &TableView::stepCameraAnimation);
+    settleTimer_.setSingleShot(true);
+    settleTimer_.setInterval(kSettleMs);
+    connect(&settleTimer_, &QTimer::timeout, this, qOverload<>(&QWidget::update));
     idleTimer_.setSingleShot(true);
     idleTimer_.setInterval(kIdleGapMs);
     connect(&idleTimer_, &QTimer::timeout, this, &TableView::animationStopped);
@@ -202,6 +206,9 @@ void TableView::paintGL()
     frame.selectedBall = selectedBall_;
     frame.highlightedEvent = highlightedEvent_;
     renderer_->render(frame);
+    // While the camera moves the table is drawn without its antialiased cache; once it has been still
+    // for kSettleMs, one more frame draws it antialiased.
+    if (renderer_->tableUncached()) settleTimer_.start();
     lastGlError_ = glGetError();
     while (glGetError() != GL_NO_ERROR) {
     }

@@ -103,6 +103,7 @@ private:
     QElapsedTimer cameraClock_;
     QElapsedTimer fpsClock_;     // since the last report of the current run
     int framesSinceReport_ = 0;
+    QTimer settleTimer_;         // single shot: repaints once the camera has stopped (see paintGL)
     QTimer idleTimer_;           // single shot: fires when no frame followed the last one in time
     bool rateReported_ = false;  // a rate above 0 was emitted for the current run
 };
