@@ -76,6 +76,7 @@ private slots:
     void picking();
     void draggingIsConstrained();
     void overlaysSwitch();
+    void newSceneOnTheSameTableRedrawsTheCue();
     void frameRateOnlyWhileAnimating();
     void settlesAfterTheCameraMoves();
     void screenshotShowsTheBalls_data();
@@ -224,6 +225,44 @@ void TestTableView::draggingIsConstrained()
     sendMouse(&view, QEvent::MouseButtonPress, cloth, Qt::LeftButton, Qt::LeftButton);
     sendMouse(&view, QEvent::MouseButtonRelease, cloth, Qt::LeftButton, Qt::NoButton);
     QCOMPARE(clicked.last().at(0).toInt(), -1);
+}
+
+void TestTableView::newSceneOnTheSameTableRedrawsTheCue()
+{
+    // Before the shot the cue stick is drawn into the cached table image. A new scene on the same
+    // table (opening a file, dragging the cue ball) must not keep the previous scene's stick: the
+    // view that saw scene A and then B draws exactly what a view that only saw B draws.
+    Setup a = threeBalls();
+    CueStrike shot;
+    shot.ball = "cue";
+    a.shot = shot;
+    Setup b = a;
+    b.balls[0].state.position = Vec2(1.2, 0.3);
+    b.shot->headingDeg = 45.0;
+
+    auto frameOf = [](const std::vector<Setup>& scenes) {
+        TableView view;
+        view.resize(480, 300);
+        view.setCameraPreset(CameraPreset::Top, false);
+        view.show();
+        if (!QTest::qWaitForWindowExposed(&view)) return QImage();
+        QImage image;
+        for (const Setup& s : scenes) {
+            view.setScene(sceneOf(s));
+            image = view.grabFramebuffer();
+        }
+        return image;
+    };
+    const QImage afterA = frameOf({a, b});
+    const QImage onlyB = frameOf({b});
+    QVERIFY(!afterA.isNull() && afterA.size() == onlyB.size());
+    int differing = 0;
+    for (int y = 0; y < onlyB.height(); ++y)
+        for (int x = 0; x < onlyB.width(); ++x) {
+            const QColor p = afterA.pixelColor(x, y), q = onlyB.pixelColor(x, y);
+            differing += std::abs(p.red() - q.red()) + std::abs(p.green() - q.green()) + std::abs(p.blue() - q.blue()) > 24;
+        }
+    QVERIFY2(differing < onlyB.width() * onlyB.height() / 1000, qPrintable(QString::number(differing)));
 }
 
 void TestTableView::overlaysSwitch()

@@ -302,6 +302,8 @@ void TableRenderer::setScene(const ViewScene& scene)
                            before->table.cushionHeight == after->table.cushionHeight &&
                            before->table.pockets.size() == after->table.pockets.size();
     if (!sameTable) tableDirty_ = true;
+    // A cached image that holds the cue stick shows the old scene's cue ball and shot.
+    if (cacheHasCue_) cacheGeneration_ = -1;
     scene_ = scene;
     overlaysDirty_ = true;
     orientations_.reset(scene_.result);
