@@ -9,6 +9,12 @@ packages=(
   libqt6opengl6-dev                          # Qt6::OpenGLWidgets (QOpenGLWidget)
   libgl-dev libgl1-mesa-dri                  # OpenGL headers; Mesa's llvmpipe software renderer
   libeigen3-dev                              # Eigen 3.4 (the physics core's only dependency)
+  qt6-charts-dev                             # Qt Charts: plots, error and polynomial charts
+  qt6-svg-dev                                # Qt SVG: shot diagrams (QSvgGenerator) and their tests
+  qt6-l10n-tools                             # Qt Linguist tools: lupdate/lrelease for translations
+  libbox2d-dev                               # Box2D 2.4, the comparison engine of core/compare
+  clang libclang-rt-14-dev                   # libFuzzer (-fsanitize=fuzzer) for the fuzz targets
+  desktop-file-utils appstream               # desktop-file-validate, appstreamcli (install checks)
   xvfb xauth                                 # a real X server for the GUI tests (xvfb-run)
 )
 
