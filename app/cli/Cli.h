@@ -1,5 +1,5 @@
 #pragma once
-// cuelab-cli (CONTRACT.md): validate, simulate, state and trajectory of a setup file.
+// cuelab-cli (CONTRACT.md): the subcommands of a setup file, registered in Commands.cpp (Command.h).
 
 #include <QByteArray>
 #include <QStringList>

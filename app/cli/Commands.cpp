@@ -1,0 +1,24 @@
+// The subcommands of cuelab-cli, in the order of the help text. A new subcommand: a file in
+// app/cli/commands/ defining `Command <name>Command()`, declared and listed here (one line each).
+
+#include "Command.h"
+
+namespace cuelab::cli {
+
+Command validateCommand();
+Command simulateCommand();
+Command stateCommand();
+Command trajectoryCommand();
+
+const QList<Command>& commands()
+{
+    static const QList<Command> all{
+        validateCommand(),
+        simulateCommand(),
+        stateCommand(),
+        trajectoryCommand(),
+    };
+    return all;
+}
+
+}  // namespace cuelab::cli

@@ -1,0 +1,98 @@
+#include "Command.h"
+
+#include "JsonText.h"
+#include "SetupFile.h"
+
+#include <QFile>
+#include <QFileInfo>
+
+#include <cmath>
+#include <cstdio>
+
+namespace cuelab::cli {
+
+Invocation::Invocation(const Command& command, const QCommandLineParser& parser, QString setupPath, QByteArray* out,
+                       QByteArray* err)
+    : command_(command), parser_(parser), setupPath_(std::move(setupPath)), out_(out), err_(err)
+{
+}
+
+int Invocation::usage(const QString& message) const
+{
+    *err_ += "cuelab-cli: " + message.toUtf8() + "\nTry 'cuelab-cli --help'.\n";
+    return UsageError;
+}
+
+int Invocation::fail(const QString& message, int status) const
+{
+    *err_ += "cuelab-cli: " + message.toUtf8() + '\n';
+    return status;
+}
+
+std::optional<double> Invocation::seconds(const QString& option, bool strictlyPositive, QString* problem) const
+{
+    if (!parser_.isSet(option)) return std::nullopt;
+    const QString text = parser_.value(option);
+    bool ok = false;
+    const double x = text.toDouble(&ok);
+    if (!ok || !std::isfinite(x) || x < 0.0 || (strictlyPositive && x == 0.0)) {
+        *problem = QStringLiteral("--%1: expected a number of seconds %2, found '%3'")
+                       .arg(option, strictlyPositive ? QStringLiteral("> 0") : QStringLiteral(">= 0"), text);
+        return std::nullopt;
+    }
+    return x;
+}
+
+QString Invocation::setupName() const
+{
+    return setupPath_ == QLatin1String("-") ? QStringLiteral("<stdin>") : QFileInfo(setupPath_).fileName();
+}
+
+std::optional<Setup> Invocation::loadSetup(int* status) const
+{
+    QString error;
+    std::optional<Setup> setup;
+    if (setupPath_ == QLatin1String("-")) {
+        QFile in;
+        if (!in.open(stdin, QIODevice::ReadOnly)) {
+            *status = fail(QStringLiteral("<stdin>: cannot read standard input"), SetupRefused);
+            return std::nullopt;
+        }
+        setup = io::parseSetup(in.readAll(), QStringLiteral("<stdin>"), &error);
+    } else {
+        setup = io::loadSetup(setupPath_, &error);
+    }
+    if (!setup) {
+        *status = fail(error, SetupRefused);
+        return std::nullopt;
+    }
+    // --set KEY=VALUE overrides (CONTRACT.md, Extensions) are applied here, then checked again.
+    return setup;
+}
+
+bool Invocation::simulate(const Setup& setup, double until, SimulationResult& result) const
+{
+    SimulationOptions options;
+    options.until = until;
+    if (parser_.isSet(QStringLiteral("max-events")))
+        options.maxEvents = parser_.value(QStringLiteral("max-events")).toLongLong();  // checked by Cli.cpp
+    result = cuelab::simulate(setup, options);
+    if (result.status == SimulationStatus::EventLimit) {
+        fail(QStringLiteral("%1: the simulation was cut short at t = %2 s: %3")
+                 .arg(setupName(), QString::fromStdString(io::roundTripNumber(result.endTime)),
+                      QString::fromStdString(result.error)),
+             SimulationUnfinished);
+        return false;
+    }
+    // Stopping at the time the user asked for is success; stopping at max_time with balls moving is not.
+    const bool stoppedAtRequest = until >= 0.0 && until <= setup.simulation.maxTime;
+    if (result.status == SimulationStatus::ReachedUntil && !stoppedAtRequest) {
+        fail(QStringLiteral("%1: balls still move at max_time = %2 s (raise simulation.max_time in the setup)")
+                 .arg(setupName(), QString::fromStdString(io::roundTripNumber(setup.simulation.maxTime))),
+             SimulationUnfinished);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace cuelab::cli
