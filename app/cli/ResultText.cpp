@@ -95,6 +95,53 @@ std::string csvField(const std::string& text)
 
 }  // namespace
 
+void writeOutcome(JsonWriter& w, const SimulationResult& result, const ShotOutcome& o, Layout layout)
+{
+    auto id = [&](int ball) -> const std::string& { return result.balls.at(static_cast<std::size_t>(ball)).id; };
+    w.beginObject(layout);
+    w.key("struck_ball");
+    if (o.struckBall >= 0)
+        w.value(id(o.struckBall));
+    else
+        w.null();
+    w.key("first_contact");
+    if (o.firstContact) {
+        w.beginObject(Layout::Line);
+        w.key("ball");
+        w.value(id(o.firstContact->ball));
+        w.key("time");
+        w.value(o.firstContact->time);
+        w.endObject();
+    } else {
+        w.null();
+    }
+    w.key("pocketed");
+    w.beginArray(Layout::Line);
+    for (const PocketedBall& p : o.pocketed) {
+        w.beginObject(Layout::Line);
+        w.key("ball");
+        w.value(id(p.ball));
+        w.key("pocket");
+        w.value(pocketId(result, p.pocket));
+        w.key("time");
+        w.value(p.time);
+        w.endObject();
+    }
+    w.endArray();
+    w.key("cushion_hits");
+    w.beginObject(Layout::Line);
+    for (std::size_t b = 0; b < o.cushionHits.size(); ++b) {
+        w.key(id(static_cast<int>(b)));
+        w.value(o.cushionHits[b]);
+    }
+    w.endObject();
+    w.key("cushions_before_first_contact");
+    w.value(o.cushionsBeforeFirstContact);
+    w.key("struck_ball_pocketed");
+    w.value(o.struckBallPocketed);
+    w.endObject();
+}
+
 std::string simulationJson(const SimulationResult& result)
 {
     JsonWriter w;
@@ -106,6 +153,8 @@ std::string simulationJson(const SimulationResult& result)
     for (const Event& e : result.events) writeEvent(w, result, e);
     w.endArray();
     writeBalls(w, result, result.endTime);
+    w.key("outcome");
+    writeOutcome(w, result, shotOutcome(result));
     w.endObject();
     return w.text();
 }

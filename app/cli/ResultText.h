@@ -2,6 +2,8 @@
 // The text cuelab-cli prints for a simulation (CONTRACT.md): the event log and ball states as JSON,
 // the trajectory as CSV. Numbers use the shortest text that reads back to the same double.
 
+#include "JsonText.h"
+#include "ShotOutcome.h"
 #include "Simulation.h"
 
 #include <string>
@@ -9,8 +11,15 @@
 
 namespace cuelab::cli {
 
-// `simulate`: { "end_time": ..., "events": [...], "balls": [...] }, one event or ball per line.
+// `simulate`: { "end_time": ..., "events": [...], "balls": [...], "outcome": {...} }, one event or
+// ball per line.
 std::string simulationJson(const SimulationResult& result);
+
+// The `outcome` object of CONTRACT.md (Extensions) as the value of a key just written, e.g.
+// `w.key("outcome"); writeOutcome(w, result, shotOutcome(result), Layout::Line);` for one line.
+// `simulate` lays it out one member per line (Block); inside a Line container it is one line anyway.
+void writeOutcome(io::JsonWriter& w, const SimulationResult& result, const ShotOutcome& outcome,
+                  io::JsonWriter::Layout layout = io::JsonWriter::Layout::Block);
 
 // `state --at T`: { "time": T, "balls": [...] } with the exact state of every ball at t.
 std::string stateJson(const SimulationResult& result, double t);

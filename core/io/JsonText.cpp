@@ -106,6 +106,12 @@ void JsonWriter::value(std::string_view text)
     writeString(text);
 }
 
+void JsonWriter::null()
+{
+    beforeValue();
+    out_ += "null";
+}
+
 void JsonWriter::writeString(std::string_view text)
 {
     out_ += '"';

@@ -30,6 +30,7 @@ public:
     void value(bool flag);
     void value(std::string_view text);
     void value(const char* text) { value(std::string_view(text)); }
+    void null();                      // the literal null
     void numbers(const double* values, int count);  // a Line array of numbers
 
     // The text so far; once the outermost container is closed it ends with a newline.

@@ -249,7 +249,7 @@ void TestCli::simulateOutput()
     QVERIFY(r.out.indexOf("\"end_time\"") < r.out.indexOf("\"events\""));
     QVERIFY(r.out.indexOf("\"events\"") < r.out.lastIndexOf("\"balls\": ["));
     const QJsonObject o = parseObject(r.out);
-    QCOMPARE(o.keys(), (QStringList{"balls", "end_time", "events"}));
+    QCOMPARE(o.keys(), (QStringList{"balls", "end_time", "events", "outcome"}));
 
     const QJsonArray events = o.value("events").toArray();
     QVERIFY(!events.isEmpty());
