@@ -1,0 +1,191 @@
+#include "Curves.h"
+
+#include "Motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace cuelab::plots {
+
+std::string_view label(Quantity q)
+{
+    switch (q) {
+    case Quantity::Speed: return "speed";
+    case Quantity::SlipSpeed: return "slip speed";
+    case Quantity::SpinX: return "spin wx";
+    case Quantity::SpinY: return "spin wy";
+    case Quantity::SpinZ: return "spin wz";
+    case Quantity::TranslationalEnergy: return "translational energy";
+    case Quantity::RotationalEnergy: return "rotational energy";
+    case Quantity::KineticEnergy: return "kinetic energy";
+    }
+    return "speed";
+}
+
+std::string_view unit(Quantity q)
+{
+    switch (q) {
+    case Quantity::Speed:
+    case Quantity::SlipSpeed: return "m/s";
+    case Quantity::SpinX:
+    case Quantity::SpinY:
+    case Quantity::SpinZ: return "rad/s";
+    default: return "J";
+    }
+}
+
+bool isEnergy(Quantity q)
+{
+    return q == Quantity::TranslationalEnergy || q == Quantity::RotationalEnergy || q == Quantity::KineticEnergy;
+}
+
+double valueOf(Quantity q, const BallState& s, double radius, double mass)
+{
+    if (s.motion == MotionState::Pocketed) return 0.0;
+    switch (q) {
+    case Quantity::Speed: return s.velocity.norm();
+    case Quantity::SlipSpeed: return slipVelocity(s, radius).norm();
+    case Quantity::SpinX: return s.spin.x();
+    case Quantity::SpinY: return s.spin.y();
+    case Quantity::SpinZ: return s.spin.z();
+    case Quantity::TranslationalEnergy: return 0.5 * mass * s.velocity.squaredNorm();
+    case Quantity::RotationalEnergy: return 0.5 * ballInertia(mass, radius) * s.spin.squaredNorm();
+    case Quantity::KineticEnergy: return kineticEnergy(s, radius, mass);
+    }
+    return 0.0;
+}
+
+BallState stateJustBefore(const SimulationResult& result, int index, double t)
+{
+    const std::vector<MotionSegment>& timeline = result.timelines.at(static_cast<std::size_t>(index));
+    const double R = result.balls.at(static_cast<std::size_t>(index)).radius;
+    // The last segment that starts strictly before t (SimulationResult::stateAt takes the last one
+    // starting at or before t), then its transitions up to, but not at, t.
+    auto it = std::lower_bound(timeline.begin(), timeline.end(), t,
+                               [](const MotionSegment& s, double time) { return s.start < time; });
+    if (it != timeline.begin()) --it;
+    BallState s = it->state;
+    double start = it->start;
+    for (;;) {
+        const Transition tr = nextTransition(s, R, result.physics);
+        if (tr.after == kNever || start + tr.after >= t) break;
+        s = applyTransition(s, R, result.physics);
+        start += tr.after;
+    }
+    return evolve(s, R, result.physics, t - start);
+}
+
+std::vector<double> sampleTimes(double a, double b, const SamplingOptions& options, double end)
+{
+    const double maxStep = options.maxStep > 0.0 ? options.maxStep : std::max(end, 1e-3) / 600.0;
+    // Chebyshev-Lobatto nodes: the widest gap, in the middle, is about (b - a) pi / (2 (n - 1)).
+    const double needed = std::ceil(std::numbers::pi / 2.0 * (b - a) / maxStep) + 1.0;
+    const int n = std::max(std::max(options.samplesPerPiece, 2), static_cast<int>(std::min(needed, 1e6)));
+    std::vector<double> times;
+    times.reserve(static_cast<std::size_t>(n));
+    times.push_back(a);
+    for (int k = 1; k < n - 1; ++k) {
+        const double t = a + (b - a) * 0.5 * (1.0 - std::cos(std::numbers::pi * k / (n - 1)));
+        if (t > times.back() && t < b) times.push_back(t);
+    }
+    if (b > times.back()) times.push_back(b);
+    return times;
+}
+
+namespace {
+
+double endOf(const SimulationResult& result, const SamplingOptions& options)
+{
+    return options.until >= 0.0 ? options.until : result.endTime;
+}
+
+bool involves(const Event& e, int ball)
+{
+    return e.balls[0] == ball || (e.kind == EventKind::BallBall && e.balls[1] == ball);
+}
+
+// The boundaries of the pieces: 0, the selected event times in (0, end), and end; `isEvent` says
+// which boundaries are event times (whose left limit differs from stateAt).
+struct Breaks {
+    std::vector<double> times;
+    std::vector<bool> isEvent;
+};
+
+template <typename Selected>
+Breaks breaksOf(const SimulationResult& result, double end, Selected selected)
+{
+    Breaks b;
+    b.times.push_back(0.0);
+    b.isEvent.push_back(false);
+    for (const Event& e : result.events) {
+        if (!selected(e) || e.time > end) continue;
+        if (e.time <= b.times.back()) {
+            if (e.time == b.times.back()) b.isEvent.back() = true;
+            continue;
+        }
+        b.times.push_back(e.time);
+        b.isEvent.push_back(true);
+    }
+    if (end > b.times.back()) {
+        b.times.push_back(end);
+        b.isEvent.push_back(false);
+    }
+    return b;
+}
+
+}  // namespace
+
+std::vector<Piece> sampleBall(const SimulationResult& result, int index, const SamplingOptions& options)
+{
+    const double end = endOf(result, options);
+    const Breaks breaks = breaksOf(result, end, [index](const Event& e) { return involves(e, index); });
+    std::vector<Piece> pieces;
+    for (std::size_t k = 0; k + 1 < breaks.times.size(); ++k) {
+        const double a = breaks.times[k];
+        const double b = breaks.times[k + 1];
+        if (result.stateAt(index, a).motion == MotionState::Pocketed) break;
+        Piece piece;
+        const std::vector<double> times = sampleTimes(a, b, options, end);
+        for (std::size_t i = 0; i < times.size(); ++i) {
+            const bool closing = i + 1 == times.size() && breaks.isEvent[k + 1];
+            piece.samples.push_back({times[i], closing ? stateJustBefore(result, index, times[i])
+                                                       : result.stateAt(index, times[i])});
+        }
+        pieces.push_back(std::move(piece));
+    }
+    return pieces;
+}
+
+std::vector<TablePiece> sampleTable(const SimulationResult& result, const SamplingOptions& options)
+{
+    const double end = endOf(result, options);
+    const Breaks breaks = breaksOf(result, end, [](const Event&) { return true; });
+    const int balls = static_cast<int>(result.balls.size());
+    std::vector<TablePiece> pieces;
+    for (std::size_t k = 0; k + 1 < breaks.times.size(); ++k) {
+        TablePiece piece;
+        piece.times = sampleTimes(breaks.times[k], breaks.times[k + 1], options, end);
+        for (std::size_t i = 0; i < piece.times.size(); ++i) {
+            const double t = piece.times[i];
+            const bool closing = i + 1 == piece.times.size() && breaks.isEvent[k + 1];
+            std::vector<BallState> states;
+            states.reserve(static_cast<std::size_t>(balls));
+            for (int b = 0; b < balls; ++b)
+                states.push_back(closing ? stateJustBefore(result, b, t) : result.stateAt(b, t));
+            piece.states.push_back(std::move(states));
+        }
+        pieces.push_back(std::move(piece));
+    }
+    return pieces;
+}
+
+double totalOf(Quantity q, const SimulationResult& result, const std::vector<BallState>& states)
+{
+    double sum = 0.0;
+    for (std::size_t b = 0; b < states.size(); ++b)
+        sum += valueOf(q, states[b], result.balls[b].radius, result.balls[b].mass);
+    return sum;
+}
+
+}  // namespace cuelab::plots

@@ -1,0 +1,257 @@
+// The curves of the Plots dock and the report (core/plots): every sample is the exact closed-form
+// state (stateAt, or the state just before the event that closes a piece), no piece runs across an
+// event, samples crowd near events, and a ball's energy never rises between its events.
+
+#include "Curves.h"
+#include "Detection.h"
+#include "SetupFile.h"
+#include "Simulation.h"
+
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace cuelab;
+using namespace cuelab::plots;
+
+namespace {
+
+SimulationResult run(const QString& file)
+{
+    QString error;
+    const std::optional<Setup> setup =
+        io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + file, &error);
+    if (!setup) qFatal("%s", qPrintable(error));
+    return simulate(*setup);
+}
+
+bool same(const BallState& a, const BallState& b)
+{
+    return a.position == b.position && a.velocity == b.velocity && a.spin == b.spin && a.motion == b.motion;
+}
+
+double difference(const BallState& a, const BallState& b)
+{
+    return std::max({(a.position - b.position).norm(), (a.velocity - b.velocity).norm(), (a.spin - b.spin).norm()});
+}
+
+bool involves(const Event& e, int ball) { return e.balls[0] == ball || (e.kind == EventKind::BallBall && e.balls[1] == ball); }
+
+const QStringList kExamples{
+    "straight-shot.json", "stun-shot.json",   "follow-shot.json",   "draw-shot.json",     "half-ball-cut.json",
+    "stun-cut.json",      "one-cushion-bank.json", "two-rail-kick.json", "8-ball-break.json", "9-ball-break.json",
+    "newtons-cradle.json", "snooker-plant.json", "three-cushion.json"};
+
+// Sampling step in these tests: finer than the dock's default in a normal build, coarser under the
+// sanitizers (CI runs the core suites in an ASan Debug build).
+#ifdef NDEBUG
+constexpr int kSamples = 24;
+#else
+constexpr int kSamples = 8;
+#endif
+
+}  // namespace
+
+class TestCurves : public QObject {
+    Q_OBJECT
+
+private slots:
+    void samplesAreStateAt_data();
+    void samplesAreStateAt();
+    void energyNeverRisesBetweenEvents_data() { samplesAreStateAt_data(); }
+    void energyNeverRisesBetweenEvents();
+    void tableEnergyNeverRises_data() { samplesAreStateAt_data(); }
+    void tableEnergyNeverRises();
+    void denseNearEvents();
+    void stepBound();
+    void pocketedCurveEnds();
+    void quantities();
+};
+
+void TestCurves::samplesAreStateAt_data()
+{
+    QTest::addColumn<QString>("file");
+    for (const QString& f : kExamples) QTest::newRow(qPrintable(f)) << f;
+}
+
+void TestCurves::samplesAreStateAt()
+{
+    QFETCH(QString, file);
+    const SimulationResult r = run(file);
+    SamplingOptions options;
+    options.samplesPerPiece = kSamples;
+    int checked = 0;
+    int closings = 0;
+    for (int b = 0; b < static_cast<int>(r.balls.size()); ++b) {
+        const std::vector<Piece> pieces = sampleBall(r, b, options);
+        QVERIFY(!pieces.empty());
+        QCOMPARE(pieces.front().samples.front().time, 0.0);
+        for (std::size_t p = 0; p < pieces.size(); ++p) {
+            const std::vector<Sample>& s = pieces[p].samples;
+            QVERIFY(s.size() >= 2);
+            if (p > 0) QCOMPARE(s.front().time, pieces[p - 1].samples.back().time);  // pieces meet at events
+            for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+                QVERIFY(s[i].time < s[i + 1].time);
+                QVERIFY2(same(s[i].state, r.stateAt(b, s[i].time)), qPrintable(QString::number(s[i].time, 'g', 17)));
+                ++checked;
+            }
+            // No event of the ball strictly inside a piece.
+            for (const Event& e : r.events)
+                if (involves(e, b)) QVERIFY(!(e.time > s.front().time && e.time < s.back().time));
+            // The closing sample: the state just before the event there (its `before` state), or stateAt at the end.
+            const Sample& last = s.back();
+            const Event* closing = nullptr;
+            int agent = 0;
+            for (const Event& e : r.events)
+                if (e.time == last.time && involves(e, b)) {
+                    closing = &e;
+                    agent = e.balls[0] == b ? 0 : 1;
+                    break;
+                }
+            if (closing) {
+                const double scale = 1.0 + closing->before[agent].velocity.norm() + closing->before[agent].spin.norm();
+                QVERIFY2(difference(last.state, closing->before[agent]) <= 1e-12 * scale,
+                         qPrintable(QStringLiteral("ball %1 at %2: %3").arg(b).arg(last.time, 0, 'g', 17)
+                                        .arg(difference(last.state, closing->before[agent]))));
+                ++closings;
+            } else {
+                QVERIFY(same(last.state, r.stateAt(b, last.time)));
+            }
+        }
+    }
+    QVERIFY(checked > 100);
+    QVERIFY(closings > 0);
+}
+
+void TestCurves::energyNeverRisesBetweenEvents()
+{
+    // Between events friction only takes energy away (Simulation.h). Bound: rounding, 1e-12 of the
+    // piece's largest energy.
+    QFETCH(QString, file);
+    const SimulationResult r = run(file);
+    SamplingOptions options;
+    options.samplesPerPiece = kSamples;
+    for (int b = 0; b < static_cast<int>(r.balls.size()); ++b) {
+        const double R = r.balls[b].radius;
+        const double m = r.balls[b].mass;
+        for (const Piece& piece : sampleBall(r, b, options)) {
+            const double top = valueOf(Quantity::KineticEnergy, piece.samples.front().state, R, m);
+            for (std::size_t i = 0; i + 1 < piece.samples.size(); ++i) {
+                const double e0 = valueOf(Quantity::KineticEnergy, piece.samples[i].state, R, m);
+                const double e1 = valueOf(Quantity::KineticEnergy, piece.samples[i + 1].state, R, m);
+                QVERIFY2(e1 <= e0 + 1e-12 * std::max(top, 1e-9),
+                         qPrintable(QStringLiteral("%1 ball %2 t=%3: %4 -> %5").arg(file).arg(b)
+                                        .arg(piece.samples[i].time, 0, 'g', 17).arg(e0, 0, 'g', 17).arg(e1, 0, 'g', 17)));
+                // The parts of the energy are each a sum of squares; the total is their sum.
+                QCOMPARE(valueOf(Quantity::TranslationalEnergy, piece.samples[i].state, R, m) +
+                             valueOf(Quantity::RotationalEnergy, piece.samples[i].state, R, m),
+                         e0);
+            }
+        }
+    }
+}
+
+void TestCurves::tableEnergyNeverRises()
+{
+    // The whole table, broken at every event: the total never rises within a piece; across a
+    // collision it rises at most by the documented energy of a contact push (Detection.h).
+    QFETCH(QString, file);
+    const SimulationResult r = run(file);
+    SamplingOptions options;
+    options.samplesPerPiece = std::max(4, kSamples / 3);
+    const std::vector<TablePiece> pieces = sampleTable(r, options);
+    QVERIFY(!pieces.empty());
+    double previousEnd = -1.0;
+    for (const TablePiece& piece : pieces) {
+        QCOMPARE(piece.times.size(), piece.states.size());
+        const double first = totalOf(Quantity::KineticEnergy, r, piece.states.front());
+        // Detection.h: a collision adds at most 1/2 m_eff kMinSeparationSpeed^2 (m_eff <= the ball's
+        // mass); simultaneous events share one break, so a chain adds one bound per collision.
+        double bound = 0.0;
+        for (const Event& e : r.events)
+            if (e.time == piece.times.front() && isCollision(e.kind))
+                bound += 0.5 * r.balls[e.balls[0]].mass * kMinSeparationSpeed * kMinSeparationSpeed;
+        if (previousEnd >= 0.0)
+            QVERIFY2(first <= previousEnd + bound + 1e-12 * previousEnd,
+                     qPrintable(QStringLiteral("t=%1: %2 -> %3").arg(piece.times.front(), 0, 'g', 17).arg(previousEnd, 0, 'g', 17).arg(first, 0, 'g', 17)));
+        double e0 = first;
+        for (std::size_t i = 1; i < piece.states.size(); ++i) {
+            const double e1 = totalOf(Quantity::KineticEnergy, r, piece.states[i]);
+            QVERIFY(e1 <= e0 + 1e-12 * std::max(first, 1e-9));
+            e0 = e1;
+        }
+        previousEnd = e0;
+    }
+}
+
+void TestCurves::denseNearEvents()
+{
+    const SimulationResult r = run(QStringLiteral("half-ball-cut.json"));
+    const std::vector<Piece> pieces = sampleBall(r, r.ballIndex("cue"));
+    int long_ = 0;
+    for (const Piece& piece : pieces) {
+        const std::vector<Sample>& s = piece.samples;
+        if (s.size() < 8) continue;
+        const double firstGap = s[1].time - s[0].time;
+        const double lastGap = s[s.size() - 1].time - s[s.size() - 2].time;
+        const double middleGap = s[s.size() / 2].time - s[s.size() / 2 - 1].time;
+        QVERIFY(firstGap < middleGap / 4);
+        QVERIFY(lastGap < middleGap / 4);
+        ++long_;
+    }
+    QVERIFY(long_ >= 2);
+}
+
+void TestCurves::stepBound()
+{
+    const SimulationResult r = run(QStringLiteral("straight-shot.json"));
+    SamplingOptions options;
+    options.maxStep = 0.01;
+    for (const Piece& piece : sampleBall(r, 0, options))
+        for (std::size_t i = 0; i + 1 < piece.samples.size(); ++i)
+            QVERIFY(piece.samples[i + 1].time - piece.samples[i].time <= 0.01 * (1 + 1e-12));
+    // Default: no gap above a 600th of the run.
+    for (const Piece& piece : sampleBall(r, 0))
+        for (std::size_t i = 0; i + 1 < piece.samples.size(); ++i)
+            QVERIFY(piece.samples[i + 1].time - piece.samples[i].time <= r.endTime / 600 * (1 + 1e-12));
+    // until: the curves stop there.
+    options.until = 0.5;
+    QCOMPARE(sampleBall(r, 0, options).back().samples.back().time, 0.5);
+}
+
+void TestCurves::pocketedCurveEnds()
+{
+    const SimulationResult r = run(QStringLiteral("half-ball-cut.json"));
+    const int one = r.ballIndex("1");
+    double pocketTime = -1.0;
+    for (const Event& e : r.events)
+        if (e.kind == EventKind::BallPocket && e.balls[0] == one) pocketTime = e.time;
+    QVERIFY(pocketTime > 0.0);
+    const std::vector<Piece> pieces = sampleBall(r, one);
+    QCOMPARE(pieces.back().samples.back().time, pocketTime);
+    QVERIFY(pieces.back().samples.back().state.motion != MotionState::Pocketed);  // the state just before
+    QVERIFY(valueOf(Quantity::Speed, pieces.back().samples.back().state, 0.028575, 0.17) > 0.1);
+}
+
+void TestCurves::quantities()
+{
+    BallState s;
+    s.velocity = Vec2(3.0, 4.0);
+    s.spin = Vec3(1.0, 2.0, -2.0);
+    s.motion = MotionState::Sliding;
+    const double R = 0.03;
+    const double m = 0.2;
+    QCOMPARE(valueOf(Quantity::Speed, s, R, m), 5.0);
+    QCOMPARE(valueOf(Quantity::SlipSpeed, s, R, m), Vec2(3.0 - R * 2.0, 4.0 + R * 1.0).norm());
+    QCOMPARE(valueOf(Quantity::SpinZ, s, R, m), -2.0);
+    QCOMPARE(valueOf(Quantity::TranslationalEnergy, s, R, m), 0.5 * m * 25.0);
+    QCOMPARE(valueOf(Quantity::RotationalEnergy, s, R, m), 0.5 * 0.4 * m * R * R * 9.0);
+    s.motion = MotionState::Pocketed;
+    QCOMPARE(valueOf(Quantity::KineticEnergy, s, R, m), 0.0);
+    QCOMPARE(label(Quantity::SlipSpeed), std::string_view("slip speed"));
+    QCOMPARE(unit(Quantity::RotationalEnergy), std::string_view("J"));
+}
+
+QTEST_GUILESS_MAIN(TestCurves)
+#include "tst_curves.moc"
