@@ -15,6 +15,7 @@ packages=(
   libbox2d-dev                               # Box2D 2.4, the comparison engine of core/compare
   clang libclang-rt-14-dev                   # libFuzzer (-fsanitize=fuzzer) for the fuzz targets
   desktop-file-utils appstream               # desktop-file-validate, appstreamcli (install checks)
+  dpkg-dev file                              # cpack -G DEB (dpkg-shlibdeps, file)
   xvfb xauth                                 # a real X server for the GUI tests (xvfb-run)
 )
 

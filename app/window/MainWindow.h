@@ -1,6 +1,14 @@
 #pragma once
 // The CueLab main window: the table view and the transport in the middle, the editor's docks
 // around it (Balls, Physics, Shot, Events, Inspector), the menus, files and the remembered layout.
+//
+// Features (plots, explanations, comparisons, analysis, ...) add themselves through the public
+// extension API below: addPanel() for a dock, menu() for a place in the menus, and the shared
+// objects (document, playback, selection, table view). Each feature is one install function in
+// app/window/features/, called from Features.cpp, so that a new dock touches no central file.
+//
+// The class is split by job: MainWindow.cpp (layout, docks, selection and result wiring),
+// MainWindowMenus.cpp (menus and actions), MainWindowFiles.cpp (new, open, save, examples, settings).
 
 #include "view/ViewScene.h"
 
@@ -23,9 +31,22 @@ class InspectorPanel;
 class Playback;
 class PhysicsPanel;
 class RecentFiles;
+class Selection;
 class ShotPanel;
 class TableView;
 class TransportBar;
+
+// The menus a feature can add to. Export is the File menu's Export submenu; Analysis is a top-level
+// menu between View and Playback, shown once something is in it.
+enum class WindowMenu { File, Export, Edit, View, Analysis, Playback, Help };
+
+// Where a feature's dock goes first (the user may move it; the layout is remembered).
+struct PanelPlacement {
+    Qt::DockWidgetArea area = Qt::RightDockWidgetArea;
+    QString tabifyWith;   // object name of a dock to share tabs with ("InspectorDock"), or empty
+    bool scroll = false;  // put the content in a scroll area (tall forms)
+    bool visible = true;  // shown on the first start
+};
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -50,6 +71,16 @@ public:
     PhysicsPanel* physicsPanel() const { return physics_; }
     RecentFiles* recentMenu() const { return recentMenu_; }
     QMenu* examplesMenu() const { return examplesMenu_; }
+
+    Selection* selection() const { return selection_; }
+
+    // The extension API for features (app/window/features/). addPanel puts `content` in a dock named
+    // `objectName` (saveState/restoreState find docks by name: keep it stable) and lists it in
+    // View > Panels. menu() is a menu a feature adds its actions to.
+    QDockWidget* addPanel(QWidget* content, const QString& title, const QString& objectName,
+                          const PanelPlacement& placement = {});
+    QMenu* menu(WindowMenu which);
+    QList<QDockWidget*> panels() const { return docks_; }
 
     static QStringList bundledExamples();  // resource paths, sorted
 
@@ -76,13 +107,14 @@ private:
 
     void onResultChanged();
     void onTimeChanged(double seconds);
-    void selectBall(int index);
-    void selectEvent(int index);
+    void onBallSelected(int index);
+    void onEventSelected(int index);
     void selectEventAtCurrentTime();
     void refreshInspector();
 
     Document* document_;
     Playback* playback_;
+    Selection* selection_;
     TableView* view_ = nullptr;
     TransportBar* transport_ = nullptr;
     BallsPanel* balls_ = nullptr;
@@ -93,15 +125,19 @@ private:
     QList<QDockWidget*> docks_;
     RecentFiles* recentMenu_ = nullptr;
     QMenu* examplesMenu_ = nullptr;
+    QMenu* fileMenu_ = nullptr;
+    QMenu* exportMenu_ = nullptr;
+    QAction* exportSeparator_ = nullptr;  // before Quit: the Export submenu goes in front of it
+    QMenu* editMenu_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
+    QMenu* panelsMenu_ = nullptr;
+    QMenu* analysisMenu_ = nullptr;
+    QMenu* playbackMenu_ = nullptr;
+    QMenu* helpMenu_ = nullptr;
     std::array<QAction*, kOverlayCount> overlayActions_{};
     QLabel* summaryLabel_ = nullptr;
     QLabel* fpsLabel_ = nullptr;
     QProgressBar* busy_ = nullptr;
-
-    int selectedBall_ = -1;
-    int selectedEvent_ = -1;
-    enum class InspectorSubject { None, Ball, Event };
-    InspectorSubject inspectorSubject_ = InspectorSubject::None;
 };
 
 }  // namespace cuelab

@@ -1,0 +1,12 @@
+#include "Features.h"
+
+namespace cuelab {
+
+// One line each: the install function of a feature in app/window/features/.
+
+void installFeatures(MainWindow& window)
+{
+    (void)window;
+}
+
+}  // namespace cuelab

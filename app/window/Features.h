@@ -1,0 +1,14 @@
+#pragma once
+// The window's features: each adds its docks, menu actions and connections to a MainWindow through
+// the window's extension API (MainWindow::addPanel, MainWindow::menu, the shared document, playback,
+// selection and table view). One install function per feature, defined in
+// app/window/features/<Name>Feature.cpp, declared here and called from Features.cpp.
+
+namespace cuelab {
+
+class MainWindow;
+
+// Installs every feature, in a fixed order (the order of their docks in View > Panels).
+void installFeatures(MainWindow& window);
+
+}  // namespace cuelab

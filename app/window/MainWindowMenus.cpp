@@ -1,0 +1,139 @@
+// MainWindow's menus and their actions (see MainWindow.h for how the class is split).
+
+#include "MainWindow.h"
+#include "MainWindowPrivate.h"
+#include "RecentFiles.h"
+#include "ShortcutsDialog.h"
+
+#include "editor/BallsPanel.h"
+#include "editor/Document.h"
+#include "editor/TransportBar.h"
+#include "view/TableView.h"
+
+#include "SetupFile.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QUndoStack>
+
+namespace cuelab {
+
+namespace {
+
+QString overlayName(Overlay overlay)
+{
+    switch (overlay) {
+    case Overlay::Velocities: return QObject::tr("&Velocities");
+    case Overlay::Spin: return QObject::tr("&Spin");
+    case Overlay::Trails: return QObject::tr("&Trails");
+    case Overlay::FuturePaths: return QObject::tr("&Future Paths");
+    case Overlay::EventMarkers: return QObject::tr("&Event Markers");
+    case Overlay::GhostBalls: return QObject::tr("&Ghost Balls");
+    case Overlay::CueAndAim: return QObject::tr("&Cue and Aim Line");
+    }
+    return {};
+}
+
+}  // namespace
+
+void MainWindow::createMenus()
+{
+    QMenu* file = fileMenu_ = menuBar()->addMenu(tr("&File"));
+    QAction* newAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-new")), tr("&New"), this, &MainWindow::newDocument);
+    newAction->setShortcut(QKeySequence::New);
+    newAction->setToolTip(tr("A new setup: a 9-ft table with a cue ball and one object ball"));
+    QAction* openAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("&Open…"), this, &MainWindow::open);
+    openAction->setShortcut(QKeySequence::Open);
+    recentMenu_ = new RecentFiles(tr("Open &Recent"), this);
+    file->addMenu(recentMenu_);
+    connect(recentMenu_, &RecentFiles::openRequested, this, &MainWindow::openFile);
+    examplesMenu_ = file->addMenu(tr("&Examples"));
+    for (const QString& path : bundledExamples()) {
+        QString title = QFileInfo(path).completeBaseName();
+        QFile f(path);
+        QString ignored;
+        if (f.open(QIODevice::ReadOnly))
+            if (const auto setup = io::parseSetup(f.readAll(), title, &ignored); setup && !setup->name.empty())
+                title = QString::fromStdString(setup->name);
+        QAction* a = examplesMenu_->addAction(title, this, [this, path] { openExample(path); });
+        a->setToolTip(tr("Open the bundled example %1 as a new, untitled setup").arg(QFileInfo(path).fileName()));
+    }
+    examplesMenu_->setEnabled(!examplesMenu_->isEmpty());
+    file->addSeparator();
+    QAction* saveAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save"), this, &MainWindow::save);
+    saveAction->setShortcut(QKeySequence::Save);
+    QAction* saveAsAction = file->addAction(tr("Save &As…"), this, &MainWindow::saveAs);
+    saveAsAction->setShortcut(QKeySequence::SaveAs);
+    exportSeparator_ = file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* edit = editMenu_ = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    balls_->addBallAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    balls_->removeBallAction()->setShortcut(QKeySequence::Delete);
+    balls_->duplicateBallAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    edit->addAction(balls_->addBallAction());
+    edit->addAction(balls_->duplicateBallAction());
+    edit->addAction(balls_->removeBallAction());
+    edit->addMenu(balls_->rackMenu());
+    edit->addSeparator();
+    edit->addAction(tr("Reset &Physics to Defaults"), document_, &Document::resetPhysics);
+
+    QMenu* view = viewMenu_ = menuBar()->addMenu(tr("&View"));
+    panelsMenu_ = view->addMenu(tr("&Panels"));
+    for (QDockWidget* d : std::as_const(docks_)) panelsMenu_->addAction(d->toggleViewAction());
+    QMenu* overlays = view->addMenu(tr("&Overlays"));
+    for (int i = 0; i < kOverlayCount; ++i) {
+        const auto overlay = static_cast<Overlay>(i);
+        QAction* a = overlays->addAction(overlayName(overlay));
+        a->setCheckable(true);
+        a->setChecked(view_->overlayVisible(overlay));
+        connect(a, &QAction::toggled, this, [this, overlay](bool on) { view_->setOverlayVisible(overlay, on); });
+        overlayActions_[static_cast<std::size_t>(i)] = a;
+    }
+    QMenu* camera = view->addMenu(tr("&Camera"));
+    const std::pair<CameraPreset, QString> presets[] = {{CameraPreset::Top, tr("&Top")},
+                                                        {CameraPreset::Player, tr("&Player")},
+                                                        {CameraPreset::Side, tr("&Side")}};
+    int key = Qt::Key_1;
+    for (const auto& [preset, name] : presets) {
+        QAction* a = camera->addAction(name, this, [this, p = preset] { view_->setCameraPreset(p); });
+        a->setShortcut(QKeySequence(Qt::CTRL | key++));
+    }
+    view->addSeparator();
+    QAction* fullScreen = view->addAction(tr("&Full Screen"));
+    fullScreen->setCheckable(true);
+    fullScreen->setShortcut(QKeySequence::FullScreen);
+    connect(fullScreen, &QAction::toggled, this, [this](bool on) {
+        setWindowState(on ? (windowState() | Qt::WindowFullScreen) : (windowState() & ~Qt::WindowFullScreen));
+    });
+
+    analysisMenu_ = menuBar()->addMenu(tr("&Analysis"));
+    playbackMenu_ = menuBar()->addMenu(tr("&Playback"));
+    playbackMenu_->addActions(transport_->transportActions());
+
+    QMenu* help = helpMenu_ = menuBar()->addMenu(tr("&Help"));
+    QAction* keys = help->addAction(tr("&Keyboard and Mouse…"), this, [this] {
+        ShortcutsDialog dialog(menuBar(), this);
+        dialog.exec();
+    });
+    keys->setObjectName(QStringLiteral("keyboardAndMouseAction"));
+    keys->setShortcut(QKeySequence::HelpContents);
+    keys->setToolTip(tr("Every keyboard shortcut and mouse gesture of the window"));
+    help->addSeparator();
+    help->addAction(tr("&About CueLab"), this, &MainWindow::about);
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+}  // namespace cuelab

@@ -1,0 +1,103 @@
+#include "ShortcutsDialog.h"
+
+#include <QAction>
+#include <QDialogButtonBox>
+#include <QHeaderView>
+#include <QMenu>
+#include <QMenuBar>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace cuelab {
+
+namespace {
+
+QString plain(QString text)
+{
+    text.remove(QLatin1Char('&'));
+    text.remove(QStringLiteral("…"));
+    return text.trimmed();
+}
+
+void collect(const QMenu* menu, const QString& path, QList<ShortcutsDialog::Row>& rows)
+{
+    for (QAction* a : menu->actions()) {
+        if (a->isSeparator()) continue;
+        if (QMenu* sub = a->menu()) {
+            collect(sub, path + QStringLiteral(" › ") + plain(sub->title()), rows);
+            continue;
+        }
+        QStringList keys;
+        for (const QKeySequence& k : a->shortcuts()) keys << k.toString(QKeySequence::NativeText);
+        if (keys.isEmpty()) continue;
+        rows.push_back({path, plain(a->text()), keys.join(QStringLiteral(", "))});
+    }
+}
+
+}  // namespace
+
+QList<ShortcutsDialog::Row> ShortcutsDialog::keyboardRows(const QMenuBar* menus)
+{
+    QList<Row> rows;
+    for (QAction* top : menus->actions())
+        if (QMenu* m = top->menu()) collect(m, plain(m->title()), rows);
+    return rows;
+}
+
+QList<ShortcutsDialog::Row> ShortcutsDialog::mouseRows()
+{
+    const QString view = tr("Table view");
+    const QString panels = tr("Panels");
+    return {
+        {view, tr("Select a ball"), tr("Click the ball")},
+        {view, tr("Move a ball (at t = 0)"), tr("Drag the ball; it lands on the nearest free spot")},
+        {view, tr("Orbit the camera"), tr("Drag on the cloth or the background")},
+        {view, tr("Pan the camera"), tr("Right or middle drag, or Shift + drag")},
+        {view, tr("Zoom towards the cursor"), tr("Mouse wheel")},
+        {view, tr("Centre the camera on a point"), tr("Double-click")},
+        {panels, tr("Edit a value"), tr("Double-click a cell, type, Enter")},
+        {panels, tr("Place the cue tip"), tr("Click or drag on the ball face in Shot")},
+        {panels, tr("Jump to an event"), tr("Click its row in Events")},
+        {panels, tr("Scrub time"), tr("Drag the time slider; ticks mark events")},
+        {panels, tr("Open a setup"), tr("Drop a .json file on the window")},
+    };
+}
+
+ShortcutsDialog::ShortcutsDialog(const QMenuBar* menus, QWidget* parent) : QDialog(parent)
+{
+    setObjectName(QStringLiteral("ShortcutsDialog"));
+    setWindowTitle(tr("Keyboard and Mouse"));
+    auto* tree = new QTreeWidget(this);
+    tree->setObjectName(QStringLiteral("shortcutsTree"));
+    tree->setColumnCount(2);
+    tree->setHeaderLabels({tr("Action"), tr("Keys or gesture")});
+    tree->setRootIsDecorated(true);
+    tree->setAlternatingRowColors(true);
+    const auto fill = [tree](const QString& title, const QList<Row>& rows) {
+        auto* top = new QTreeWidgetItem(tree, {title});
+        QFont bold = top->font(0);
+        bold.setBold(true);
+        top->setFont(0, bold);
+        QTreeWidgetItem* group = nullptr;
+        QString groupName;
+        for (const Row& r : rows) {
+            if (!group || r.group != groupName) {
+                group = new QTreeWidgetItem(top, {r.group});
+                groupName = r.group;
+            }
+            new QTreeWidgetItem(group, {r.what, r.how});
+        }
+    };
+    fill(tr("Keyboard"), keyboardRows(menus));
+    fill(tr("Mouse"), mouseRows());
+    tree->expandAll();
+    tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(tree);
+    layout->addWidget(buttons);
+    resize(620, 640);
+}
+
+}  // namespace cuelab

@@ -1,0 +1,140 @@
+// The window's extension API, through which features add docks and menu entries (MainWindow.h),
+// the shared Selection, and Help > Keyboard and Mouse, which lists every shortcut of the menus.
+
+#include "MainWindow.h"
+#include "ShortcutsDialog.h"
+
+#include "editor/Selection.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace cuelab;
+
+namespace {
+
+QMenu* topMenu(QMenuBar* bar, const QString& title)
+{
+    for (QAction* a : bar->actions())
+        if (a->menu() && a->text().remove(QLatin1Char('&')) == title) return a->menu();
+    return nullptr;
+}
+
+}  // namespace
+
+class WindowApiTest : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void addPanelListsTheDockInViewPanels()
+    {
+        MainWindow window;
+        const qsizetype before = window.panels().size();
+        QDockWidget* dock = window.addPanel(new QLabel(QStringLiteral("hello")), QStringLiteral("Probe"),
+                                            QStringLiteral("ProbeDock"), {Qt::RightDockWidgetArea, QStringLiteral("InspectorDock")});
+        QCOMPARE(window.panels().size(), before + 1);
+        QCOMPARE(dock->objectName(), QStringLiteral("ProbeDock"));
+        QCOMPARE(window.dockWidgetArea(dock), Qt::RightDockWidgetArea);
+        // Tabified with the Inspector, as asked.
+        QDockWidget* inspector = window.findChild<QDockWidget*>(QStringLiteral("InspectorDock"));
+        QVERIFY(inspector);
+        QVERIFY(window.tabifiedDockWidgets(inspector).contains(dock));
+        // Listed in View > Panels, where its toggle hides and shows it.
+        QMenu* view = topMenu(window.menuBar(), QStringLiteral("View"));
+        QVERIFY(view);
+        QMenu* panels = nullptr;
+        for (QAction* a : view->actions())
+            if (a->menu() && a->text().remove(QLatin1Char('&')) == QLatin1String("Panels")) panels = a->menu();
+        QVERIFY(panels);
+        QVERIFY(panels->actions().contains(dock->toggleViewAction()));
+    }
+
+    void exportMenuSitsInFileBeforeQuit()
+    {
+        MainWindow window;
+        QMenu* file = window.menu(WindowMenu::File);
+        QMenu* exportMenu = window.menu(WindowMenu::Export);
+        QVERIFY(exportMenu);
+        QCOMPARE(window.menu(WindowMenu::Export), exportMenu);  // made once
+        const QList<QAction*> actions = file->actions();
+        const qsizetype exportAt = actions.indexOf(exportMenu->menuAction());
+        qsizetype quitAt = -1;
+        for (qsizetype i = 0; i < actions.size(); ++i)
+            if (actions[i]->text().remove(QLatin1Char('&')) == QLatin1String("Quit")) quitAt = i;
+        QVERIFY(exportAt >= 0);
+        QVERIFY2(exportAt < quitAt, "Export comes before Quit");
+    }
+
+    void analysisMenuAppearsWhenUsed()
+    {
+        MainWindow window;
+        QMenu* analysis = window.menu(WindowMenu::Analysis);
+        QVERIFY(analysis);
+        QVERIFY(analysis->menuAction()->isVisible());
+        QVERIFY(window.menu(WindowMenu::Help) != nullptr);
+        QVERIFY(window.menu(WindowMenu::Playback) != nullptr);
+    }
+
+    void selectionRules()
+    {
+        Selection s;
+        QSignalSpy balls(&s, &Selection::ballChanged);
+        QSignalSpy events(&s, &Selection::eventChanged);
+        s.selectBall(2);
+        QCOMPARE(s.ball(), 2);
+        QCOMPARE(s.subject(), Selection::Subject::Ball);
+        s.selectBall(2);
+        QCOMPARE(balls.size(), 1);  // no change, no signal
+        s.selectEvent(5);
+        QCOMPARE(s.event(), 5);
+        QCOMPARE(s.ball(), 2);  // the ball stays marked
+        QCOMPARE(s.subject(), Selection::Subject::Event);
+        s.selectEvent(5);
+        QCOMPARE(events.size(), 2);  // choosing the event again asks to go there again
+        s.selectBall(1);
+        QCOMPARE(s.event(), -1);  // a ball clears the event
+        QCOMPARE(s.subject(), Selection::Subject::Ball);
+        s.clear();
+        QCOMPARE(s.ball(), -1);
+        QCOMPARE(s.subject(), Selection::Subject::None);
+    }
+
+    void shortcutsListEveryMenuShortcut()
+    {
+        MainWindow window;
+        const QList<ShortcutsDialog::Row> rows = ShortcutsDialog::keyboardRows(window.menuBar());
+        const auto has = [&rows](const QString& what, const QKeySequence& keys) {
+            for (const ShortcutsDialog::Row& r : rows)
+                if (r.what == what && r.how.contains(keys.toString(QKeySequence::NativeText))) return true;
+            return false;
+        };
+        QVERIFY(has(QStringLiteral("Undo"), QKeySequence::Undo));
+        QVERIFY(has(QStringLiteral("Open"), QKeySequence::Open));
+        QVERIFY(has(QStringLiteral("Top"), QKeySequence(Qt::CTRL | Qt::Key_1)));
+        // Every action with a shortcut anywhere in the menus is listed.
+        qsizetype withShortcut = 0;
+        std::function<void(const QMenu*)> count = [&](const QMenu* m) {
+            for (QAction* a : m->actions()) {
+                if (a->menu()) count(a->menu());
+                else if (!a->isSeparator() && !a->shortcuts().isEmpty()) ++withShortcut;
+            }
+        };
+        for (QAction* a : window.menuBar()->actions())
+            if (a->menu()) count(a->menu());
+        QCOMPARE(rows.size(), withShortcut);
+        QVERIFY(!ShortcutsDialog::mouseRows().isEmpty());
+    }
+};
+
+QTEST_MAIN(WindowApiTest)
+#include "tst_windowapi.moc"
