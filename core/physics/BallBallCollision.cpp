@@ -15,7 +15,8 @@ double ballBallFriction(const PhysicsParams& p, double vRel)
     return p.ballBallFriction;
 }
 
-BallBallResult resolveBallBall(const BallBallBody& a, const BallBallBody& b, const PhysicsParams& p)
+BallBallResult resolveBallBall(const BallBallBody& a, const BallBallBody& b, const PhysicsParams& p,
+                               BallBallTrace* trace)
 {
     BallBallResult r;
     const Vec2 d = b.state.position - a.state.position;
@@ -43,9 +44,26 @@ BallBallResult resolveBallBall(const BallBallBody& a, const BallBallBody& b, con
         if (slipSpeed > 0.0) {
             const double compliance = 3.5 * invMass;  // 1/ma + 1/mb + Ra^2/Ia + Rb^2/Ib (1/kg)
             const double stopping = slipSpeed / compliance;
-            const double magnitude = std::min(ballBallFriction(p, slipSpeed) * normalImpulse, stopping);
+            const double mu = ballBallFriction(p, slipSpeed);
+            const double magnitude = std::min(mu * normalImpulse, stopping);
             tangentialOnA = -(magnitude / slipSpeed) * slip;
+            if (trace) {
+                trace->friction = mu;
+                trace->coulombLimit = mu * normalImpulse;
+                trace->stoppingImpulse = stopping;
+                trace->coulombLimited = mu * normalImpulse < stopping;
+            }
         }
+        if (trace) {
+            trace->frictional = true;
+            trace->slip = slip;
+            trace->slipSpeed = slipSpeed;
+        }
+    }
+    if (trace) {
+        trace->inverseMass = invMass;
+        trace->normalImpulse = normalImpulse;
+        trace->tangentialImpulse = tangentialOnA;
     }
     impulseOnA += tangentialOnA;
 

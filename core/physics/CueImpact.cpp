@@ -8,7 +8,8 @@
 
 namespace cuelab {
 
-CueImpactResult resolveCueStrike(const BallState& before, double radius, double mass, const CueStrike& strike)
+CueImpactResult resolveCueStrike(const BallState& before, double radius, double mass, const CueStrike& strike,
+                                 CueImpactTrace* trace)
 {
     const double R = radius;
     double a = strike.side * R;    // m, sideways offset of the tip (+ = player's right)
@@ -41,6 +42,7 @@ CueImpactResult resolveCueStrike(const BallState& before, double radius, double 
     r.after.motion = classify(r.after, R);
     r.contactPoint = before.position + q.head<2>();
     r.heading = d.head<2>();
+    if (trace) *trace = CueImpactTrace{a, b, offset > R, c, phi, theta, d, right, e, q, inertia, lever2, F};
     return r;
 }
 

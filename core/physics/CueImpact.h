@@ -15,6 +15,21 @@ struct CueImpactResult {
     Vec2 heading = Vec2::Zero();       // unit horizontal direction of the cue
 };
 
+// The intermediate numbers of resolveCueStrike, for core/explain (filled only when asked for).
+struct CueImpactTrace {
+    double a = 0.0, b = 0.0;      // m, side and height offsets of the tip (after clamping)
+    bool clamped = false;         // the offsets lay beyond the silhouette and were scaled onto it
+    double c = 0.0;               // m, sqrt(R^2 - a^2 - b^2), depth of the contact behind the centre
+    double phi = 0.0, theta = 0.0;  // rad, heading and elevation
+    Vec3 heading = Vec3::Zero();  // d
+    Vec3 right = Vec3::Zero();    // s = d x z
+    Vec3 axis = Vec3::Zero();     // e = cos(theta) d - sin(theta) z
+    Vec3 contact = Vec3::Zero();  // Q = a s + b z - c d, relative to the centre
+    double inertia = 0.0;         // kg m^2, 2/5 m R^2
+    double lever2 = 0.0;          // m^2, |Q x e|^2
+    double impulse = 0.0;         // N s, F
+};
+
 // The ball's state just after the strike. The tip offsets (strike.side, strike.height, fractions of
 // R) locate the contact point Q = a s + b z - c d relative to the centre, with d the horizontal
 // heading, s = d x z the player's right, z up, and c = sqrt(R^2 - a^2 - b^2): a is measured
@@ -25,6 +40,7 @@ struct CueImpactResult {
 // the ball gets v = F/m e (its vertical part discarded on the cloth) and w = Q x (F e) / I.
 // For theta = 0 this is PHYSICS.md's v = 2 V0 / (1 + m/M + 5 (a^2 + b^2) / (2 R^2)) and
 // w = (5 v / (2 R^2)) (a z + b (z x d)). Offsets beyond the ball's silhouette are clamped to it.
-CueImpactResult resolveCueStrike(const BallState& before, double radius, double mass, const CueStrike& strike);
+CueImpactResult resolveCueStrike(const BallState& before, double radius, double mass, const CueStrike& strike,
+                                 CueImpactTrace* trace = nullptr);
 
 }  // namespace cuelab

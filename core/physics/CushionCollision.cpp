@@ -7,10 +7,8 @@
 
 namespace cuelab {
 
-namespace {
-
 CushionResult mirrorCushion(const BallState& before, const Vec2& normal, double radius, double mass,
-                            double restitution)
+                            double restitution, MirrorTrace* trace)
 {
     CushionResult r;
     r.after = before;
@@ -20,13 +18,15 @@ CushionResult mirrorCushion(const BallState& before, const Vec2& normal, double 
     r.after.velocity += dv;
     r.after.motion = classify(r.after, radius);
     r.impulse = Vec3(mass * dv.x(), mass * dv.y(), 0.0);
+    if (trace) {
+        trace->normalVelocity = vn;
+        trace->velocityChange = dv;
+    }
     return r;
 }
 
-}  // namespace
-
 CushionResult hanCushion(const BallState& before, const Vec2& normal, double radius, double mass,
-                         double noseHeight, double restitution, double friction)
+                         double noseHeight, double restitution, double friction, HanTrace* trace)
 {
     const double R = radius;
     const double sinA = std::clamp(noseHeight / R - 1.0, -1.0, 1.0);
@@ -79,6 +79,9 @@ CushionResult hanCushion(const BallState& before, const Vec2& normal, double rad
     r.after.motion = classify(r.after, R);
     const Vec2 planar = PX * X + PY * Y;
     r.impulse = Vec3(planar.x(), planar.y(), PZ);
+    if (trace)
+        *trace = HanTrace{sinA, cosA, X,   Y,   vx,   vy,   wx, wy, wz, sx,  sy,  slip, c,   A,   B,   PzE,
+                          PzS,  PzS <= friction * PzE, PxE, PyE, PX, PY, PZ, vx1, vy1, wx1, wy1, wz1};
     return r;
 }
 

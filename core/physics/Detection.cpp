@@ -47,6 +47,33 @@ double circleContactTime(const Vec2& d0, const Vec2& d1, const Vec2& d2, double 
 
 }  // namespace
 
+Quartic ballBallGap(const Path& a, double ra, const Path& b, double rb)
+{
+    return distanceQuartic(b.c0 - a.c0, b.c1 - a.c1, b.c2 - a.c2, ra + rb);
+}
+
+Quartic jawGap(const Path& p, double radius, const JawTip& jaw)
+{
+    return distanceQuartic(p.c0 - jaw.centre, p.c1, p.c2, radius + jaw.radius);
+}
+
+Quartic pocketGap(const Path& p, const Pocket& pocket)
+{
+    return distanceQuartic(p.c0 - pocket.centre, p.c1, p.c2, pocket.radius);
+}
+
+Quartic cushionGap(const Path& p, double radius, const CushionSegment& seg)
+{
+    return {0.0, 0.0, p.c2.dot(seg.normal), p.c1.dot(seg.normal), (p.c0 - seg.a).dot(seg.normal) - radius};
+}
+
+bool onCushionSegment(const Path& p, const CushionSegment& seg, double s)
+{
+    const Vec2 along = seg.b - seg.a;
+    const double lambda = (p.at(s) - seg.a).dot(along);
+    return lambda >= 0.0 && lambda <= along.squaredNorm();
+}
+
 double ballBallTime(const Path& a, double ra, const Path& b, double rb, double horizon)
 {
     return circleContactTime(b.c0 - a.c0, b.c1 - a.c1, b.c2 - a.c2, ra + rb, horizon);
@@ -61,21 +88,15 @@ double pocketTime(const Path& p, const Pocket& pocket, double horizon)
 {
     const Vec2 d0 = p.c0 - pocket.centre;
     if (d0.squaredNorm() <= pocket.radius * pocket.radius) return 0.0;
-    return firstFallingRoot(distanceQuartic(d0, p.c1, p.c2, pocket.radius), horizon);
+    return firstFallingRoot(pocketGap(p, pocket), horizon);
 }
 
 double cushionTime(const Path& p, double radius, const CushionSegment& seg, double horizon)
 {
     // g(s) = (p(s) - a) . N - R = g0 + g1 s + g2 s^2.
-    const double g0 = (p.c0 - seg.a).dot(seg.normal) - radius;
-    const double g1 = p.c1.dot(seg.normal);
-    const double g2 = p.c2.dot(seg.normal);
-    const Vec2 along = seg.b - seg.a;
-    const double along2 = along.squaredNorm();
-    auto onSegment = [&](double s) {
-        const double lambda = (p.at(s) - seg.a).dot(along);
-        return lambda >= 0.0 && lambda <= along2;
-    };
+    const Quartic g = cushionGap(p, radius, seg);
+    const double g0 = g[4], g1 = g[3], g2 = g[2];
+    auto onSegment = [&](double s) { return onCushionSegment(p, seg, s); };
     // Touching: a contact now if the ball approaches, or rests against the nose (normal speed below
     // kRestingSpeed) while its acceleration presses it in.
     if (std::abs(g0) <= kContactTolerance && (g1 < 0.0 || (g1 <= kRestingSpeed && g2 < 0.0)) && onSegment(0.0))

@@ -10,6 +10,7 @@
 // again.
 
 #include "Motion.h"
+#include "Quartic.h"
 #include "Table.h"
 
 namespace cuelab {
@@ -28,6 +29,20 @@ inline constexpr double kRestingSpeed = 1e-9;
 // event per ~2 kMinSeparationSpeed / (relative deceleration), about 1 ms at 1 m/s^2, and adds at most
 // 1/2 m_eff kMinSeparationSpeed^2 (about 4e-8 J for pool balls) per event, far below anything visible.
 inline constexpr double kMinSeparationSpeed = 1e-3;
+
+// The gap functions whose roots are the contacts, as polynomials in s (Quartic order, highest degree
+// first). The detection functions below find their roots; core/explain shows them (one code path).
+//   two balls:  |pb(s) - pa(s)|^2 - (Ra + Rb)^2
+//   a cushion:  (p(s) - seg.a) . N - R          (degree 2: the first two coefficients are 0)
+//   a jaw:      |p(s) - c|^2 - (R + rj)^2
+//   a pocket:   |p(s) - c|^2 - rp^2
+Quartic ballBallGap(const Path& a, double ra, const Path& b, double rb);
+Quartic cushionGap(const Path& p, double radius, const CushionSegment& seg);
+Quartic jawGap(const Path& p, double radius, const JawTip& jaw);
+Quartic pocketGap(const Path& p, const Pocket& pocket);
+
+// Whether the foot of the perpendicular from p(s) to the cushion line lies within the segment [a, b].
+bool onCushionSegment(const Path& p, const CushionSegment& seg, double s);
 
 // Two balls: |d(s)|^2 = (Ra + Rb)^2 with d = pb - pa quadratic in s gives a quartic.
 double ballBallTime(const Path& a, double ra, const Path& b, double rb, double horizon);

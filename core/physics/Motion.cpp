@@ -177,10 +177,21 @@ BallState applyTransition(const BallState& s, double radius, const PhysicsParams
     return out;
 }
 
-double kineticEnergy(const BallState& s, double radius, double mass)
+double translationalEnergy(const BallState& s, double mass)
 {
     if (s.motion == MotionState::Pocketed) return 0.0;
-    return 0.5 * mass * s.velocity.squaredNorm() + 0.5 * ballInertia(mass, radius) * s.spin.squaredNorm();
+    return 0.5 * mass * s.velocity.squaredNorm();
+}
+
+double rotationalEnergy(const BallState& s, double radius, double mass)
+{
+    if (s.motion == MotionState::Pocketed) return 0.0;
+    return 0.5 * ballInertia(mass, radius) * s.spin.squaredNorm();
+}
+
+double kineticEnergy(const BallState& s, double radius, double mass)
+{
+    return translationalEnergy(s, mass) + rotationalEnergy(s, radius, mass);
 }
 
 }  // namespace cuelab

@@ -32,6 +32,9 @@ struct Path {
     Vec2 c1 = Vec2::Zero();  // m/s
     Vec2 c2 = Vec2::Zero();  // m/s^2
     Vec2 at(double tau) const { return c0 + tau * (c1 + tau * c2); }
+    // The same polynomial expanded about tau0: shifted(tau0).at(s) = at(tau0 + s). The simulator
+    // predicts from "now" with it, and core/explain rebuilds the same polynomials with it.
+    Path shifted(double tau0) const { return Path{at(tau0), c1 + (2.0 * tau0) * c2, c2}; }
 };
 Path pathOf(const BallState& s, double radius, const PhysicsParams& p);
 
@@ -54,5 +57,8 @@ BallState applyTransition(const BallState& s, double radius, const PhysicsParams
 
 // Translational plus rotational kinetic energy (J). A pocketed ball has none.
 double kineticEnergy(const BallState& s, double radius, double mass);
+// Its two parts, 1/2 m |v|^2 and 1/2 I |w|^2 (J); kineticEnergy() is their sum.
+double translationalEnergy(const BallState& s, double mass);
+double rotationalEnergy(const BallState& s, double radius, double mass);
 
 }  // namespace cuelab

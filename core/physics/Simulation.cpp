@@ -11,6 +11,7 @@
 #include "Detection.h"
 #include "EventQueue.h"
 #include "Motion.h"
+#include "SeparationFloor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,28 +30,6 @@ constexpr double kLookahead = 1.0;
 
 // m: side of the broad-phase grid's cells, about half the longest window of a moving ball.
 constexpr double kCellSize = 0.5;
-
-// Keeps the separation speed of a ball-ball collision at least kMinSeparationSpeed (Detection.h) by
-// an extra normal impulse shared as the masses dictate (momentum is kept).
-void enforceSeparation(BallBallResult& r, double massA, double massB)
-{
-    const double separation = (r.b.velocity - r.a.velocity).dot(r.normal);
-    if (separation >= kMinSeparationSpeed) return;
-    const double extra = (kMinSeparationSpeed - separation) / (1.0 / massA + 1.0 / massB);  // N s
-    r.a.velocity -= (extra / massA) * r.normal;
-    r.b.velocity += (extra / massB) * r.normal;
-    r.impulse.head<2>() -= extra * r.normal;
-}
-
-// The same for a ball leaving a cushion or jaw whose normal (towards the ball) is `normal`.
-void enforceSeparation(CushionResult& r, const Vec2& normal, double mass)
-{
-    const double separation = r.after.velocity.dot(normal);
-    if (separation >= kMinSeparationSpeed) return;
-    const double extra = kMinSeparationSpeed - separation;  // m/s
-    r.after.velocity += extra * normal;
-    r.impulse.head<2>() += (mass * extra) * normal;
-}
 
 class Simulator {
 public:
@@ -130,13 +109,7 @@ private:
 Path Simulator::pathNow(int i, double t) const
 {
     // The segment's polynomial shifted to the origin t: p(tau0 + s) expanded in s.
-    const Path& p = path_[at(i)];
-    const double tau0 = t - start_[at(i)];
-    Path out;
-    out.c0 = p.at(tau0);
-    out.c1 = p.c1 + (2.0 * tau0) * p.c2;
-    out.c2 = p.c2;
-    return out;
+    return path_[at(i)].shifted(t - start_[at(i)]);
 }
 
 bool Simulator::atRest(int i) const
