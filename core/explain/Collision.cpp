@@ -1,0 +1,183 @@
+// Ball-ball and ball-cushion (straight cushion or jaw tip) collisions: why they happen then, where
+// the bodies are, the contact geometry, the collision model's law, the separation floor when the
+// simulator applied it, and energy and momentum before and after.
+
+#include "Detection.h"
+#include "SeparationFloor.h"
+#include "Motion.h"
+#include "Parts.h"
+#include "models/ModelRegistry.h"
+
+#include <cmath>
+
+namespace cuelab::explain::detail {
+
+namespace {
+
+void addStateAfterStep(Explanation& e)
+{
+    StepBuilder b(e.steps, "Motion after", "", "u′ = v′ + R (z × ω′)   (the slip at the cloth decides the state)");
+    std::string words;
+    for (std::size_t k = 0; k < e.bodies.size(); ++k) {
+        const Body& body = e.bodies[k];
+        const std::string l = e.bodies.size() == 1 ? std::string() : "_" + std::string(1, static_cast<char>('a' + k));
+        if (!words.empty()) words += "; ";
+        words += body.id + " leaves " + std::string(toString(body.after.motion));
+        b.out("u" + l, "|u′" + (l.empty() ? std::string() : "_" + std::string(1, static_cast<char>('a' + k))) + "|",
+              slipVelocity(body.after, body.radius).norm(), "m/s");
+    }
+    b.step().law = "A ball whose cloth contact slips slides; one whose contact does not slip rolls. " + words + ".";
+}
+
+}  // namespace
+
+void explainBallBall(const SimulationResult& r, int index, Explanation& e)
+{
+    const Event& ev = r.events.at(static_cast<std::size_t>(index));
+    const int ia = ev.balls[0], ib = ev.balls[1];
+    const std::string& na = ballName(r, ia);
+    const std::string& nb = ballName(r, ib);
+    e.title = "Ball-ball collision of " + na + " and " + nb;
+    e.model = std::string(toString(r.physics.ballBallModel));
+    if (r.physics.ballBallModel == BallBallModel::Frictional)
+        e.model += r.physics.ballBallFrictionKind == BallBallFriction::Alciatore ? " (μ: Alciatore's fit)" : " (μ fixed)";
+    e.toi = timeOfImpact(r, index);
+    addToiStep(e, "The balls touch when their centres are R_a + R_b apart (a = " + na + ", b = " + nb +
+                      "). Both move on quadratic paths since t_0, so the squared distance is a quartic in τ.");
+    addMotionStep(e.steps, r, ia, "a", segmentBefore(r, ia, index), ev.time);
+    addMotionStep(e.steps, r, ib, "b", segmentBefore(r, ib, index), ev.time);
+
+    BallBallInput in;
+    in.a = {ev.before[0], r.balls[static_cast<std::size_t>(ia)].radius, r.balls[static_cast<std::size_t>(ia)].mass};
+    in.b = {ev.before[1], r.balls[static_cast<std::size_t>(ib)].radius, r.balls[static_cast<std::size_t>(ib)].mass};
+    in.params = r.physics;
+    in.nameA = na;
+    in.nameB = nb;
+    std::vector<Step> model;
+    const BallBallExplainer explainer = ballBallExplainer(r.physics.ballBallModel);
+    const BallBallResult res = explainer ? explainer(in, model) : resolveBallBall(in.a, in.b, in.params);
+    StepBuilder(e.steps, "Contact geometry",
+                "The normal n points from the centre of a to the centre of b; the contact point lies R_a along "
+                "it. The balls approach when their relative velocity along n is positive.",
+                "n = (r_b − r_a)/|r_b − r_a|,   r_c = r_a + R_a n,   v_n = (v_a − v_b)·n")
+        .in("r_a", "r_a", ev.before[0].position, "m")
+        .in("r_b", "r_b", ev.before[1].position, "m")
+        .in("R_a", "R_a", in.a.radius, "m")
+        .out("n", "n", res.normal, "")
+        .out("r_c", "r_c", res.contactPoint, "m")
+        .out("v_n", "v_n", res.approachSpeed, "m/s");
+    if (!explainer)
+        StepBuilder(e.steps, "Collision law (" + e.model + ")", "No step-by-step explanation of this model yet.",
+                    "(v′, ω′) = resolve(v, ω)")
+            .out("v_a_after", "v′_a", res.a.velocity, "m/s")
+            .out("v_b_after", "v′_b", res.b.velocity, "m/s");
+    for (Step& s : model) e.steps.push_back(std::move(s));
+    BallBallResult floored = res;
+    const double extra = enforceSeparation(floored, in.a.mass, in.b.mass);
+    if (extra != 0.0)
+        StepBuilder(e.steps, "Separation floor",
+                    "The law above leaves the balls parting slower than " + number(kMinSeparationSpeed) +
+                        " m/s; the simulator adds a normal impulse so that they part at that speed, which "
+                        "bounds the collisions of a sustained push (see Detection.h).",
+                    "ΔP = (v_{min} − (v′_b − v′_a)·n) / (1/m_a + 1/m_b)")
+            .in("v_sep", "(v′_b − v′_a)·n", (res.b.velocity - res.a.velocity).dot(res.normal), "m/s")
+            .in("v_min", "v_{min}", kMinSeparationSpeed, "m/s")
+            .out("floor", "ΔP", extra, "N s")
+            .out("v_a_after", "v′_a", floored.a.velocity, "m/s")
+            .out("v_b_after", "v′_b", floored.b.velocity, "m/s")
+            .out("w_a_after", "ω′_a", floored.a.spin, "rad/s")
+            .out("w_b_after", "ω′_b", floored.b.spin, "rad/s")
+            .out("J", "J", floored.impulse, "N s");
+    addStateAfterStep(e);
+    addEnergyStep(e, "The collision turns some energy into sound and heat (restitution e < 1, friction).");
+    addMomentumStep(e, "The impulses on the two balls are equal and opposite, so their horizontal momentum is "
+                       "kept (up to the vertical part of a frictional impulse, taken up by the cloth).");
+}
+
+void explainCushion(const SimulationResult& r, int index, Explanation& e)
+{
+    const Event& ev = r.events.at(static_cast<std::size_t>(index));
+    const int ia = ev.balls[0];
+    const std::string& na = ballName(r, ia);
+    const bool jaw = ev.kind == EventKind::BallJaw;
+    const std::string& agent = jaw ? r.table.jaws.at(static_cast<std::size_t>(ev.jaw)).id
+                                   : r.table.cushions.at(static_cast<std::size_t>(ev.cushion)).id;
+    e.title = std::string(jaw ? "Ball-jaw collision of " : "Ball-cushion collision of ") + na + " with " + agent;
+    e.model = std::string(toString(r.physics.ballCushionModel));
+    e.toi = timeOfImpact(r, index);
+    if (jaw)
+        addToiStep(e, "The ball touches the jaw's rounded tip (a circle of radius r_{jaw} around c) when its centre "
+                      "is R + r_{jaw} from c: a quartic in τ.");
+    else
+        addToiStep(e, "The ball touches the straight cushion nose when its centre is R from the nose line (normal N "
+                      "into the table): a quadratic in τ, whose contact point must also lie on the segment.");
+    const SegmentBefore seg = segmentBefore(r, ia, index);
+    addMotionStep(e.steps, r, ia, "", seg, ev.time);
+    if (!jaw) {
+        const CushionSegment& s = r.table.cushions.at(static_cast<std::size_t>(ev.cushion));
+        const Vec2 along = s.b - s.a;
+        const double lambda = (ev.before[0].position - s.a).dot(along) / along.squaredNorm();
+        const Path p = pathOf(seg.state, r.balls[static_cast<std::size_t>(ia)].radius, r.physics)
+                           .shifted(ev.time - seg.start);
+        StepBuilder(e.steps, "Segment check",
+                    "The foot of the perpendicular from the centre to the nose line must lie between the "
+                    "segment's ends p_a and p_b (0 ≤ λ ≤ 1); otherwise the ball passes the end of this "
+                    "cushion (into a pocket mouth, or onto a jaw).",
+                    "λ = (r − p_a)·(p_b − p_a) / |p_b − p_a|^2")
+            .in("p_a", "p_a", s.a, "m")
+            .in("p_b", "p_b", s.b, "m")
+            .in("r", "r", ev.before[0].position, "m")
+            .out("lambda", "λ", lambda)
+            .out("on_segment", "on segment", onCushionSegment(p, s, 0.0) ? 1.0 : 0.0);
+    }
+    CushionInput in;
+    in.before = ev.before[0];
+    in.normal = -ev.normal;
+    in.radius = r.balls[static_cast<std::size_t>(ia)].radius;
+    in.mass = r.balls[static_cast<std::size_t>(ia)].mass;
+    in.noseHeight = r.table.cushionHeight;
+    in.params = r.physics;
+    in.name = na;
+    in.jaw = jaw;
+    StepBuilder(e.steps, "Contact geometry",
+                jaw ? "The normal N points from the jaw tip's centre c to the ball's centre; the contact lies R "
+                      "behind the centre along −N."
+                    : "The normal N of the cushion points into the table; the contact lies R behind the centre "
+                      "along −N. The ball approaches when v·N < 0.",
+                "N = (r − c)/|r − c|  (jaw),   r_c = r − R N,   v_n = −v·N")
+        .in("r", "r", ev.before[0].position, "m")
+        .in("R", "R", in.radius, "m")
+        .out("N", "N", in.normal, "")
+        .out("r_c", "r_c", ev.contactPoint, "m")
+        .out("v_n", "v_n", ev.approachSpeed, "m/s");
+    std::vector<Step> model;
+    const CushionExplainer explainer = cushionExplainer(r.physics.ballCushionModel);
+    const CushionResult res = explainer ? explainer(in, model)
+                                        : resolveCushion(in.before, in.normal, in.radius, in.mass, in.noseHeight, in.params);
+    if (!explainer)
+        StepBuilder(e.steps, "Collision law (" + e.model + ")", "No step-by-step explanation of this model yet.",
+                    "(v′, ω′) = resolve(v, ω)")
+            .out("v_after", "v′", res.after.velocity, "m/s")
+            .out("w_after", "ω′", res.after.spin, "rad/s")
+            .out("J", "J", res.impulse, "N s");
+    for (Step& s : model) e.steps.push_back(std::move(s));
+    CushionResult floored = res;
+    const double extra = enforceSeparation(floored, in.normal, in.mass);
+    if (extra != 0.0)
+        StepBuilder(e.steps, "Separation floor",
+                    "The law above leaves the ball leaving the cushion slower than " + number(kMinSeparationSpeed) +
+                        " m/s; the simulator adds a normal impulse so that it parts at that speed.",
+                    "ΔP = m (v_{min} − v′·N)")
+            .in("v_sep", "v′·N", res.after.velocity.dot(in.normal), "m/s")
+            .in("v_min", "v_{min}", kMinSeparationSpeed, "m/s")
+            .out("floor", "ΔP", extra, "N s")
+            .out("v_after", "v′", floored.after.velocity, "m/s")
+            .out("w_after", "ω′", floored.after.spin, "rad/s")
+            .out("J", "J", floored.impulse, "N s");
+    addStateAfterStep(e);
+    addEnergyStep(e, "The cushion absorbs part of the energy (restitution e < 1, friction at the contact).");
+    addMomentumStep(e, "The cushion pushes the ball: the change of its momentum is the cushion's horizontal "
+                       "impulse J.");
+}
+
+}  // namespace cuelab::explain::detail

@@ -1,0 +1,213 @@
+#include "Explain.h"
+
+#include "Motion.h"
+#include "Parts.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace cuelab::explain {
+
+std::string number(double value)
+{
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return ec == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+const Quantity* Step::result(const std::string& key) const
+{
+    for (const Quantity& q : results)
+        if (q.key == key) return &q;
+    return nullptr;
+}
+
+const Quantity* Step::input(const std::string& key) const
+{
+    for (const Quantity& q : inputs)
+        if (q.key == key) return &q;
+    return nullptr;
+}
+
+const Step* Explanation::step(const std::string& name) const
+{
+    for (const Step& s : steps)
+        if (s.title == name) return &s;
+    return nullptr;
+}
+
+double TimeOfImpact::at(double tau) const
+{
+    double f = 0.0;
+    for (std::size_t k = coefficients.size(); k-- > 0;) f = f * tau + coefficients[k];
+    return f;
+}
+
+double TimeOfImpact::slopeAt(double tau) const
+{
+    double f = 0.0;
+    for (std::size_t k = coefficients.size(); k-- > 1;) f = f * tau + static_cast<double>(k) * coefficients[k];
+    return f;
+}
+
+SegmentBefore segmentBefore(const SimulationResult& r, int ball, int index)
+{
+    const std::vector<MotionSegment>& timeline = r.timelines.at(static_cast<std::size_t>(ball));
+    // The simulator begins one segment per ball at t = 0 and one more for every event of the ball
+    // (the cue strike included), so the segment current before event `index` is the count of the
+    // ball's earlier events.
+    std::size_t k = 0;
+    const double t = r.events.at(static_cast<std::size_t>(index)).time;
+    for (int i = 0; i < index; ++i) {
+        const Event& e = r.events[static_cast<std::size_t>(i)];
+        if (e.balls[0] == ball || e.balls[1] == ball) ++k;
+    }
+    if (k >= timeline.size() || timeline[k].start > t) {
+        // Not the bookkeeping above (a later simulator may begin segments otherwise): the last
+        // segment that began before t.
+        auto it = std::lower_bound(timeline.begin(), timeline.end(), t,
+                                   [](const MotionSegment& s, double time) { return s.start < time; });
+        k = it == timeline.begin() ? 0 : static_cast<std::size_t>(it - timeline.begin()) - 1;
+    }
+    SegmentBefore s;
+    s.start = timeline[k].start;
+    s.state = timeline[k].state;
+    const double R = r.balls.at(static_cast<std::size_t>(ball)).radius;
+    const Transition tr = nextTransition(s.state, R, r.physics);
+    s.end = tr.after == kNever ? kNever : s.start + tr.after;
+    return s;
+}
+
+Explanation explain(const SimulationResult& result, int index, const std::optional<CueStrike>& shot)
+{
+    if (index < 0 || static_cast<std::size_t>(index) >= result.events.size())
+        throw std::out_of_range("no event " + std::to_string(index));
+    const Event& ev = result.events[static_cast<std::size_t>(index)];
+    Explanation e;
+    e.event = index;
+    e.kind = ev.kind;
+    e.time = ev.time;
+    const int agents = ev.kind == EventKind::BallBall ? 2 : 1;
+    for (int k = 0; k < agents; ++k)
+        e.bodies.push_back(detail::makeBody(result, ev.balls[static_cast<std::size_t>(k)],
+                                            ev.before[static_cast<std::size_t>(k)],
+                                            ev.after[static_cast<std::size_t>(k)]));
+    if (isCollision(ev.kind) || ev.kind == EventKind::CueStrike) {
+        e.hasContact = true;
+        e.contactPoint = ev.contactPoint;
+        e.normal = ev.normal;
+        e.impulse = ev.impulse;
+    }
+    switch (ev.kind) {
+    case EventKind::CueStrike: detail::explainCueStrike(result, index, shot, e); break;
+    case EventKind::BallBall: detail::explainBallBall(result, index, e); break;
+    case EventKind::BallCushion:
+    case EventKind::BallJaw: detail::explainCushion(result, index, e); break;
+    case EventKind::BallPocket: detail::explainPocket(result, index, e); break;
+    default: detail::explainTransition(result, index, e); break;
+    }
+    return e;
+}
+
+namespace detail {
+
+const std::string& ballName(const SimulationResult& r, int ball)
+{
+    return r.balls.at(static_cast<std::size_t>(ball)).id;
+}
+
+Body makeBody(const SimulationResult& r, int ball, const BallState& before, const BallState& after)
+{
+    const Ball& b = r.balls.at(static_cast<std::size_t>(ball));
+    Body body;
+    body.ball = ball;
+    body.id = b.id;
+    body.mass = b.mass;
+    body.radius = b.radius;
+    body.before = before;
+    body.after = after;
+    body.translationBefore = translationalEnergy(before, b.mass);
+    body.rotationBefore = rotationalEnergy(before, b.radius, b.mass);
+    body.translationAfter = translationalEnergy(after, b.mass);
+    body.rotationAfter = rotationalEnergy(after, b.radius, b.mass);
+    return body;
+}
+
+void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball, const std::string& letter,
+                   const SegmentBefore& seg, double t)
+{
+    const double R = r.balls.at(static_cast<std::size_t>(ball)).radius;
+    const Path path = pathOf(seg.state, R, r.physics);
+    const BallState at = evolve(seg.state, R, r.physics, t - seg.start);
+    const std::string sub = letter.empty() ? std::string() : "_" + letter;
+    const std::string key = letter.empty() ? std::string() : "_" + letter;
+    std::string law = "Since t_{start} " + ballName(r, ball) + " has been " + std::string(toString(seg.state.motion)) +
+                      ": in closed form its centre moves on a parabola with constant acceleration ";
+    switch (seg.state.motion) {
+    case MotionState::Sliding: law += "−μ_s g û against the slip û of its cloth contact."; break;
+    case MotionState::Rolling: law += "−μ_r g v̂ (rolling resistance)."; break;
+    default: law += "zero (it does not move)."; break;
+    }
+    StepBuilder(steps, "Motion of " + ballName(r, ball) + " up to the event", law,
+                "r(τ) = r_0 + v_0 τ + ½ a τ^2,   v(τ) = v_0 + a τ,   τ = t − t_{start}")
+        .in("t_start" + key, "t_{start}" + sub, seg.start, "s")
+        .in("r0" + key, "r_0" + sub, seg.state.position, "m")
+        .in("v0" + key, "v_0" + sub, seg.state.velocity, "m/s")
+        .in("w0" + key, "ω_0" + sub, seg.state.spin, "rad/s")
+        .in("a" + key, "a" + sub, Vec2(2.0 * path.c2), "m/s²")
+        .out("r" + key, "r" + sub, at.position, "m")
+        .out("v" + key, "v" + sub, at.velocity, "m/s")
+        .out("w" + key, "ω" + sub, at.spin, "rad/s");
+}
+
+void addEnergyStep(Explanation& e, const std::string& where)
+{
+    double before = 0.0, after = 0.0;
+    StepBuilder b(e.steps, "Kinetic energy before and after",
+                  "Translation ½ m |v|² plus rotation ½ I |ω|² (I = 2/5 m R²) of each ball. " + where,
+                  "E = Σ (½ m |v|^2 + ½ I |ω|^2),   ΔE = E′ − E");
+    for (std::size_t k = 0; k < e.bodies.size(); ++k) {
+        const Body& body = e.bodies[k];
+        const std::string l = e.bodies.size() == 1 ? std::string() : std::string(1, static_cast<char>('a' + k));
+        const std::string key = l.empty() ? l : "_" + l;
+        const std::string sub = l.empty() ? l : "_{" + l + "}";
+        b.in("E_trans" + key, "E_{t" + (l.empty() ? "" : "," + l) + "}", body.translationBefore, "J")
+            .in("E_rot" + key, "E_{r" + (l.empty() ? "" : "," + l) + "}", body.rotationBefore, "J")
+            .in("E_trans_after" + key, "E′_{t" + (l.empty() ? "" : "," + l) + "}", body.translationAfter, "J")
+            .in("E_rot_after" + key, "E′_{r" + (l.empty() ? "" : "," + l) + "}", body.rotationAfter, "J");
+        before += body.translationBefore + body.rotationBefore;
+        after += body.translationAfter + body.rotationAfter;
+    }
+    const double change = after - before;
+    b.out("E_before", "E", before, "J")
+        .out("E_after", "E′", after, "J")
+        .out("dE", "ΔE", change, "J")
+        .out("dE_percent", "ΔE/E", before > 0.0 ? 100.0 * change / before : 0.0, "%");
+}
+
+void addMomentumStep(Explanation& e, const std::string& law)
+{
+    Vec2 before = Vec2::Zero(), after = Vec2::Zero();
+    StepBuilder b(e.steps, "Momentum before and after", law, "P = Σ m v,   ΔP = P′ − P");
+    for (std::size_t k = 0; k < e.bodies.size(); ++k) {
+        const Body& body = e.bodies[k];
+        const std::string l = e.bodies.size() == 1 ? std::string() : std::string(1, static_cast<char>('a' + k));
+        const std::string key = l.empty() ? l : "_" + l;
+        b.in("p" + key, l.empty() ? "p" : "p_" + l, body.momentumBefore(), "N s")
+            .in("p_after" + key, l.empty() ? "p′" : "p′_" + l, body.momentumAfter(), "N s");
+        before += body.momentumBefore();
+        after += body.momentumAfter();
+    }
+    const Vec2 change = after - before;
+    b.out("P_before", "P", before, "N s")
+        .out("P_after", "P′", after, "N s")
+        .out("dP", "ΔP", change, "N s")
+        .out("dP_norm", "|ΔP|", change.norm(), "N s")
+        .out("dP_percent", "|ΔP|/|P|", before.norm() > 0.0 ? 100.0 * change.norm() / before.norm() : 0.0, "%");
+}
+
+}  // namespace detail
+
+}  // namespace cuelab::explain

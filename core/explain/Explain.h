@@ -1,0 +1,27 @@
+#pragma once
+// explain(): the derivation of event `index` of a simulation (Explanation.h), from the simulator's
+// own functions (Detection.h, Motion.h, the collision models' resolvers with their traces), never
+// from formulas typed again. `shot` is the setup's cue strike (needed for the cue-strike event's
+// tip offsets and cue speed).
+
+#include "CueStrike.h"
+#include "Explanation.h"
+#include "Simulation.h"
+
+#include <optional>
+
+namespace cuelab::explain {
+
+// Throws std::out_of_range when index is not an event of the result.
+Explanation explain(const SimulationResult& result, int index, const std::optional<CueStrike>& shot = {});
+
+// The motion segment ball `ball` was in just before event `index` (or, for an event at which it is
+// not involved, at that event's time): its start, its state there, and when it would end by itself.
+struct SegmentBefore {
+    double start = 0.0;       // s
+    BallState state;          // at start
+    double end = 0.0;         // s, start + the closed-form duration of the state (inf if none)
+};
+SegmentBefore segmentBefore(const SimulationResult& result, int ball, int index);
+
+}  // namespace cuelab::explain

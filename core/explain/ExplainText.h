@@ -1,0 +1,27 @@
+#pragma once
+// Explanations for people: Markdown (cuelab-cli explain --format markdown, handouts) and HTML (the
+// Explain dock, handouts). Formulas and symbols carry the markup of Explanation.h: HTML renders it
+// as <sub>/<sup>, Markdown as Unicode sub- and superscripts where they exist.
+
+#include "Explanation.h"
+
+#include <string>
+#include <vector>
+
+namespace cuelab::explain {
+
+// A number for people: 6 significant digits ("0.292614", "1.2e-07"), "∞" for infinity.
+std::string readable(double value);
+
+// Markup -> HTML (escaped, <sub>/<sup>) and -> plain Unicode text.
+std::string markupToHtml(const std::string& markup);
+std::string markupToText(const std::string& markup);
+
+std::string toMarkdown(const Explanation& e);
+std::string toMarkdown(const std::vector<Explanation>& all, const std::string& heading);
+
+// An HTML fragment (for a QTextBrowser), or a whole standalone document for several explanations.
+std::string toHtml(const Explanation& e);
+std::string toHtmlDocument(const std::vector<Explanation>& all, const std::string& heading);
+
+}  // namespace cuelab::explain

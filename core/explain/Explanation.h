@@ -1,0 +1,94 @@
+#pragma once
+// The derivation of one event of a simulation, as plain data: ordered steps (each a law in words, a
+// formula, named inputs and named results), the time-of-impact polynomial of collisions and pockets,
+// and the bodies' states, energies and momenta before and after. Built by explain() (Explain.h) from
+// the simulator's own functions, so every result equals the simulator's number; rendered for people
+// by ExplainText.h (Markdown, HTML) and as JSON by `cuelab-cli explain`.
+//
+// Formulas and symbols use a small markup that every renderer understands: `_{...}` a subscript,
+// `^{...}` a superscript (a single character needs no braces: `v_a`, `τ^2`); everything else is
+// plain Unicode text (Greek letters, ·, ×, √, ′).
+
+#include "Event.h"
+#include "Types.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cuelab::explain {
+
+struct Quantity {
+    std::string key;     // unique within its list, ASCII (a JSON key): "v_a_x", "P_n", "mu_b"
+    std::string symbol;  // markup for people: "v_{a,x}", "P_n", "μ_b"
+    double value = 0.0;
+    std::string unit;    // "m/s", "N s", "" for a pure number
+};
+
+struct Step {
+    std::string title;    // "Normal impulse"
+    std::string law;      // the law in words
+    std::string formula;  // markup
+    std::vector<Quantity> inputs;
+    std::vector<Quantity> results;
+
+    const Quantity* result(const std::string& key) const;
+    const Quantity* input(const std::string& key) const;
+};
+
+// One real root of the time-of-impact polynomial and whether it can be the contact.
+struct ToiRoot {
+    double tau = 0.0;        // s, from t0
+    bool inWindow = false;   // 0 < tau <= horizon (the polynomial describes the motion there)
+    bool closing = false;    // f'(tau) < 0: the bodies approach (a root where they part is passed over)
+    bool onSegment = true;   // a straight cushion only: the contact lies between the segment's ends
+    bool chosen = false;     // the root that gave the event
+};
+
+// f(tau) = c0 + c1 tau + ... + c4 tau^4, tau = t - t0: the gap function whose root is the contact.
+struct TimeOfImpact {
+    std::string gap;                   // markup: what f measures
+    double t0 = 0.0;                   // s, the common start of the bodies' present closed-form paths
+    std::vector<double> coefficients;  // c0, c1, ... lowest degree first, trailing zeros dropped
+    double horizon = 0.0;              // s from t0: where the paths end (the next transition); may be inf
+    double root = 0.0;                 // s, the chosen tau: t0 + root is the event time
+    bool touching = false;             // the bodies touched at t0 and approached: contact at tau = 0
+    std::vector<ToiRoot> roots;        // every real root, ascending
+    std::string why;                   // why this root, in words
+
+    double at(double tau) const;       // f(tau)
+    double slopeAt(double tau) const;  // f'(tau)
+};
+
+// A body of the event, for the momenta diagram, the energy bars and the arrows in the table view.
+struct Body {
+    int ball = -1;
+    std::string id;
+    double mass = 0.0, radius = 0.0;
+    BallState before, after;
+    double translationBefore = 0.0, rotationBefore = 0.0;  // J
+    double translationAfter = 0.0, rotationAfter = 0.0;    // J
+    Vec2 momentumBefore() const { return mass * before.velocity; }  // N s
+    Vec2 momentumAfter() const { return mass * after.velocity; }
+};
+
+struct Explanation {
+    int event = -1;
+    EventKind kind = EventKind::CueStrike;
+    double time = 0.0;              // s
+    std::string title;              // "Ball-ball collision of cue and 1 at t = 0.2926 s"
+    std::string model;              // the collision model used ("frictionless", "han2005", ...), or ""
+    std::vector<Step> steps;
+    std::optional<TimeOfImpact> toi;
+    std::vector<Body> bodies;       // the event's balls, in the event's order
+    // Collisions and the cue strike: where the bodies touch, the normal (from the first ball towards
+    // the other body, or the cue's heading) and the impulse on the first ball, as the event holds them.
+    bool hasContact = false;
+    Vec2 contactPoint = Vec2::Zero();  // m
+    Vec2 normal = Vec2::Zero();
+    Vec3 impulse = Vec3::Zero();       // N s
+
+    const Step* step(const std::string& name) const;  // by title
+};
+
+}  // namespace cuelab::explain

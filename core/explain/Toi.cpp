@@ -1,0 +1,179 @@
+// The time-of-impact polynomial of a collision or pocketing, rebuilt from the simulator's own gap
+// polynomials (Detection.h) over the bodies' present closed-form paths (Motion.h), and its root
+// chosen by the simulator's own detection function.
+
+#include "Detection.h"
+#include "Parts.h"
+#include "Quartic.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cuelab::explain::detail {
+
+namespace {
+
+struct Paths {
+    double t0 = 0.0;
+    double horizon = kNever;  // s from t0
+    Path a, b;
+};
+
+// The paths of the event's bodies expanded about t0, the latest start of their present segments:
+// from t0 on, each is one quadratic polynomial up to its next transition.
+Paths pathsFor(const SimulationResult& r, int index)
+{
+    const Event& ev = r.events.at(static_cast<std::size_t>(index));
+    const int n = ev.kind == EventKind::BallBall ? 2 : 1;
+    SegmentBefore seg[2];
+    Paths p;
+    double end = kNever;
+    for (int k = 0; k < n; ++k) {
+        seg[k] = segmentBefore(r, ev.balls[static_cast<std::size_t>(k)], index);
+        p.t0 = std::max(p.t0, seg[k].start);
+        end = std::min(end, seg[k].end);
+    }
+    p.horizon = end == kNever ? kNever : end - p.t0;
+    for (int k = 0; k < n; ++k) {
+        const double R = r.balls.at(static_cast<std::size_t>(ev.balls[static_cast<std::size_t>(k)])).radius;
+        (k == 0 ? p.a : p.b) = pathOf(seg[k].state, R, r.physics).shifted(p.t0 - seg[k].start);
+    }
+    return p;
+}
+
+}  // namespace
+
+TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
+{
+    const Event& ev = r.events.at(static_cast<std::size_t>(index));
+    const Paths p = pathsFor(r, index);
+    const double Ra = r.balls.at(static_cast<std::size_t>(ev.balls[0])).radius;
+    // The simulator searches at most this far (a root beyond the event time is never the event's).
+    const double horizon = p.horizon;
+    Quartic q{};
+    double chosen = kNever;
+    bool touchingNow = false;
+    TimeOfImpact toi;
+    toi.t0 = p.t0;
+    toi.horizon = horizon;
+    const CushionSegment* segment = nullptr;
+    switch (ev.kind) {
+    case EventKind::BallBall: {
+        const double Rb = r.balls.at(static_cast<std::size_t>(ev.balls[1])).radius;
+        q = ballBallGap(p.a, Ra, p.b, Rb);
+        chosen = ballBallTime(p.a, Ra, p.b, Rb, horizon);
+        toi.gap = "f(τ) = |r_b(t_0+τ) − r_a(t_0+τ)|^2 − (R_a + R_b)^2";
+        break;
+    }
+    case EventKind::BallCushion: {
+        segment = &r.table.cushions.at(static_cast<std::size_t>(ev.cushion));
+        q = cushionGap(p.a, Ra, *segment);
+        chosen = cushionTime(p.a, Ra, *segment, horizon);
+        toi.gap = "f(τ) = (r(t_0+τ) − p_a)·N − R   (signed distance of the centre from the cushion line, minus R)";
+        break;
+    }
+    case EventKind::BallJaw: {
+        const JawTip& jaw = r.table.jaws.at(static_cast<std::size_t>(ev.jaw));
+        q = jawGap(p.a, Ra, jaw);
+        chosen = jawTime(p.a, Ra, jaw, horizon);
+        toi.gap = "f(τ) = |r(t_0+τ) − c|^2 − (R + r_{jaw})^2";
+        break;
+    }
+    case EventKind::BallPocket: {
+        const Pocket& pocket = r.table.pockets.at(static_cast<std::size_t>(ev.pocket));
+        q = pocketGap(p.a, pocket);
+        chosen = pocketTime(p.a, pocket, horizon);
+        toi.gap = "f(τ) = |r(t_0+τ) − c|^2 − r_{pocket}^2";
+        break;
+    }
+    default: return toi;
+    }
+    // Lowest degree first, trailing zeros dropped.
+    toi.coefficients.assign(q.rbegin(), q.rend());
+    while (toi.coefficients.size() > 1 && toi.coefficients.back() == 0.0) toi.coefficients.pop_back();
+
+    std::array<double, 4> roots{};
+    const int count = solveQuartic(q, roots);
+    if (chosen == 0.0) touchingNow = true;
+    if (chosen == kNever) {
+        // The simulator predicted this contact from a later instant (a refresh of its prediction
+        // window); the same polynomial from t0 rounds its root differently. Take the root nearest
+        // the event.
+        chosen = ev.time - p.t0;
+        double best = kNever;
+        for (int k = 0; k < count; ++k)
+            if (std::abs(roots[static_cast<std::size_t>(k)] - (ev.time - p.t0)) < best) {
+                best = std::abs(roots[static_cast<std::size_t>(k)] - (ev.time - p.t0));
+                chosen = roots[static_cast<std::size_t>(k)];
+            }
+    }
+    // The root finders of solveQuartic and of the detection may round a root differently: the root
+    // the detection chose is the nearest one, and it keeps the detection's value.
+    int nearest = -1;
+    for (int k = 0; k < count; ++k) {
+        const double d = std::abs(roots[static_cast<std::size_t>(k)] - chosen);
+        if (d <= 1e-9 * std::max(1.0, std::abs(chosen)) &&
+            (nearest < 0 || d < std::abs(roots[static_cast<std::size_t>(nearest)] - chosen)))
+            nearest = k;
+    }
+    if (nearest >= 0) roots[static_cast<std::size_t>(nearest)] = chosen;
+    for (int k = 0; k < count; ++k) {
+        ToiRoot root;
+        root.tau = roots[static_cast<std::size_t>(k)];
+        root.inWindow = root.tau > 0.0 && root.tau <= horizon;
+        root.closing = toi.slopeAt(root.tau) < 0.0;
+        if (segment) root.onSegment = onCushionSegment(p.a, *segment, root.tau);
+        root.chosen = k == nearest;
+        toi.roots.push_back(root);
+    }
+    if (nearest < 0) {
+        ToiRoot root;
+        root.tau = chosen;
+        root.inWindow = true;
+        root.closing = true;
+        root.chosen = true;
+        toi.roots.push_back(root);
+        std::sort(toi.roots.begin(), toi.roots.end(), [](const ToiRoot& x, const ToiRoot& y) { return x.tau < y.tau; });
+    }
+    toi.root = chosen;
+    toi.touching = touchingNow;
+    if (touchingNow)
+        toi.why = ev.kind == EventKind::BallPocket
+                      ? "The centre was already over the pocket at t_0: the ball drops at once (τ = 0)."
+                      : "The bodies were touching at t_0 (within 10^{−10} m) and approaching, or pressed "
+                        "together at rest: the contact begins at once (τ = 0).";
+    else
+        toi.why = std::string("τ* is the smallest root in the prediction window 0 < τ ≤ H at which f falls "
+                              "(f′(τ) < 0: the bodies approach); a root where f rises (they part) or only "
+                              "touches zero (a graze) is passed over") +
+                  (segment ? ", and the contact point must lie between the segment's ends." : ".");
+    return toi;
+}
+
+void addToiStep(Explanation& e, const std::string& law)
+{
+    const TimeOfImpact& toi = *e.toi;
+    std::string formula = toi.gap + ",   f(τ) = ";
+    for (std::size_t k = toi.coefficients.size(); k-- > 0;) {
+        formula += "c_" + std::to_string(k);
+        if (k >= 1) formula += " τ";
+        if (k >= 2) formula += "^" + std::to_string(k);
+        if (k > 0) formula += " + ";
+    }
+    StepBuilder b(e.steps, "Why now: the time of impact", law + " " + toi.why, formula);
+    b.in("t0", "t_0", toi.t0, "s");
+    const char* units[] = {"m²", "m²/s", "m²/s²", "m²/s³", "m²/s⁴"};
+    const bool linear = e.kind == EventKind::BallCushion;
+    const char* linearUnits[] = {"m", "m/s", "m/s²"};
+    for (std::size_t k = 0; k < toi.coefficients.size(); ++k)
+        b.in("c" + std::to_string(k), "c_" + std::to_string(k), toi.coefficients[k], linear ? linearUnits[k] : units[k]);
+    b.in("H", "H", toi.horizon, "s");
+    int index = 0;
+    for (const ToiRoot& root : toi.roots) {
+        ++index;
+        b.out("root" + std::to_string(index), "τ_" + std::to_string(index), root.tau, "s");
+    }
+    b.out("tau", "τ*", toi.root, "s").out("t", "t = t_0 + τ*", toi.t0 + toi.root, "s");
+}
+
+}  // namespace cuelab::explain::detail

@@ -1,0 +1,88 @@
+// Motion transitions (slide -> roll, roll -> stop, spin decay, ...): their closed-form times.
+#include "Motion.h"
+#include "Parts.h"
+
+#include <cmath>
+
+namespace cuelab::explain::detail {
+
+void explainTransition(const SimulationResult& r, int index, Explanation& e)
+{
+    const Event& ev = r.events.at(static_cast<std::size_t>(index));
+    const int i = ev.balls[0];
+    const Ball& ball = r.balls.at(static_cast<std::size_t>(i));
+    const PhysicsParams& p = r.physics;
+    const SegmentBefore seg = segmentBefore(r, i, index);
+    const Transition tr = nextTransition(seg.state, ball.radius, p);
+    e.title = "Transition " + std::string(toString(ev.kind)) + " of " + ball.id;
+    const double duration = tr.after;
+    switch (seg.state.motion) {
+    case MotionState::Sliding: {
+        const Vec2 u0 = slipVelocity(seg.state, ball.radius);
+        StepBuilder(e.steps, "Why now: the end of the slide",
+                    "Cloth friction −μ_s m g û slows the slip u = v + R (z × ω) of the contact point: it changes "
+                    "v by −μ_s g û and R (z × ω) by −(5/2) μ_s g û, so u falls at (7/2) μ_s g along a fixed "
+                    "direction and reaches zero after t_s.",
+                    "u_0 = v_0 + R (z × ω_0),   t_s = 2 |u_0| / (7 μ_s g)")
+            .in("t_start", "t_{start}", seg.start, "s")
+            .in("u0", "u_0", u0, "m/s")
+            .in("u0_norm", "|u_0|", u0.norm(), "m/s")
+            .in("mu_s", "μ_s", p.muSlide)
+            .in("g", "g", p.gravity, "m/s²")
+            .out("duration", "t_s", duration, "s")
+            .out("t", "t = t_{start} + t_s", seg.start + duration, "s");
+        StepBuilder(e.steps, ev.kind == EventKind::SlideToRoll ? "Natural roll" : "The slide ends at rest",
+                    ev.kind == EventKind::SlideToRoll
+                        ? "When the slip stops the ball rolls at v = (5/7) v_0 + (2/7) R (ω_0 × z), whatever μ_s is."
+                        : "The slide ends with the velocity at zero (draw or stun used the speed up exactly); "
+                          "what spin about z is left keeps decaying.",
+                    "v = (5/7) v_0 + (2/7) R (ω_0 × z)")
+            .in("v0", "v_0", seg.state.velocity, "m/s")
+            .in("w0", "ω_0", seg.state.spin, "rad/s")
+            .out("v_roll", "v", applyTransition(seg.state, ball.radius, p).velocity, "m/s");
+        break;
+    }
+    case MotionState::Rolling:
+        StepBuilder(e.steps, "Why now: the ball stops rolling",
+                    "Rolling resistance slows a rolling ball at μ_r g; it stops after t_r (having covered "
+                    "|v_0|²/(2 μ_r g)).",
+                    "t_r = |v_0| / (μ_r g)")
+            .in("t_start", "t_{start}", seg.start, "s")
+            .in("v0_norm", "|v_0|", seg.state.velocity.norm(), "m/s")
+            .in("mu_r", "μ_r", p.muRoll)
+            .in("g", "g", p.gravity, "m/s²")
+            .out("duration", "t_r", duration, "s")
+            .out("t", "t = t_{start} + t_r", seg.start + duration, "s");
+        break;
+    case MotionState::Spinning:
+        StepBuilder(e.steps, "Why now: the spin about z dies",
+                    "Spin friction decelerates the spin about the vertical at α = 5 μ_{sp} g / (2R) in every "
+                    "state; a spinning ball stops when ω_z reaches zero.",
+                    "α = 5 μ_{sp} g / (2R),   t_{sp} = |ω_{z,0}| / α")
+            .in("t_start", "t_{start}", seg.start, "s")
+            .in("wz0", "ω_{z,0}", seg.state.spin.z(), "rad/s")
+            .in("mu_sp", "μ_{sp}", p.muSpin)
+            .in("g", "g", p.gravity, "m/s²")
+            .out("alpha", "α", spinDeceleration(p, ball.radius), "rad/s²")
+            .out("duration", "t_{sp}", duration, "s")
+            .out("t", "t = t_{start} + t_{sp}", seg.start + duration, "s");
+        break;
+    default: break;
+    }
+    // The transition's state as Motion.h computes it (the simulator's after-state of the event).
+    const BallState last = applyTransition(seg.state, ball.radius, p);
+    StepBuilder(e.steps, "State at the transition",
+                "The closed-form motion evolved to the transition, its numbers made exact (a rolling ball's spin "
+                "follows its velocity; a stopped ball has v = 0). The ball is now " +
+                    std::string(toString(last.motion)) + ".",
+                "r(t), v(t), ω(t) from the segment's closed form")
+        .in("r_before", "r", ev.before[0].position, "m")
+        .out("r_after", "r′", last.position, "m")
+        .out("v_after", "v′", last.velocity, "m/s")
+        .out("w_after", "ω′", last.spin, "rad/s");
+    const double e0 = kineticEnergy(seg.state, ball.radius, ball.mass);
+    addEnergyStep(e, "Energy is continuous at a transition; since t_{start} friction has taken " +
+                         number(e0 - kineticEnergy(ev.before[0], ball.radius, ball.mass)) + " J.");
+}
+
+}  // namespace cuelab::explain::detail

@@ -1,0 +1,181 @@
+#include "ExplainChecks.h"
+
+#include "Motion.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace cuelab::testing {
+
+namespace {
+
+constexpr double kRel = 1e-12;
+
+struct Checker {
+    const explain::Explanation& e;
+    std::vector<std::string> problems;
+
+    void fail(const std::string& what, double got, double want)
+    {
+        std::ostringstream s;
+        s.precision(17);
+        s << "event " << e.event << " (" << toString(e.kind) << "): " << what << " = " << got << ", simulator "
+          << want;
+        problems.push_back(s.str());
+    }
+    // |got - want| <= 1e-12 max(|want|, scale): scale is the size of the quantity's vector, so that a
+    // component that is zero up to rounding compares against the vector it belongs to.
+    void same(const std::string& what, double got, double want, double scale = 0.0)
+    {
+        const double tol = kRel * std::max({std::abs(want), scale, 1e-300});
+        if (!(std::abs(got - want) <= tol)) fail(what, got, want);
+    }
+    const explain::Quantity* find(const std::string& key, bool results = true) const
+    {
+        const explain::Quantity* found = nullptr;  // the last step that states it
+        for (const explain::Step& s : e.steps)
+            if (const explain::Quantity* q = results ? s.result(key) : s.input(key)) found = q;
+        return found;
+    }
+    void need(const std::string& key, double want, double scale = 0.0)
+    {
+        const explain::Quantity* q = find(key);
+        if (!q) {
+            problems.push_back("event " + std::to_string(e.event) + ": no result " + key);
+            return;
+        }
+        same(key, q->value, want, scale);
+    }
+    void need(const std::string& key, const Vec2& want)
+    {
+        need(key + "_x", want.x(), want.norm());
+        need(key + "_y", want.y(), want.norm());
+    }
+    void need(const std::string& key, const Vec3& want)
+    {
+        need(key + "_x", want.x(), want.norm());
+        need(key + "_y", want.y(), want.norm());
+        need(key + "_z", want.z(), want.norm());
+    }
+    void state(const std::string& suffix, const BallState& s)
+    {
+        need("r" + suffix, s.position);
+        need("v" + suffix, s.velocity);
+        need("w" + suffix, s.spin);
+    }
+    void energy(const SimulationResult& r, const Event& ev)
+    {
+        double before = 0.0, after = 0.0;
+        const int n = ev.kind == EventKind::BallBall ? 2 : 1;
+        for (int k = 0; k < n; ++k) {
+            const Ball& b = r.balls[static_cast<std::size_t>(ev.balls[static_cast<std::size_t>(k)])];
+            before += kineticEnergy(ev.before[static_cast<std::size_t>(k)], b.radius, b.mass);
+            after += kineticEnergy(ev.after[static_cast<std::size_t>(k)], b.radius, b.mass);
+        }
+        need("E_before", before);
+        need("E_after", after, before);
+    }
+};
+
+}  // namespace
+
+std::vector<std::string> checkExplanation(const SimulationResult& r, const explain::Explanation& e)
+{
+    Checker c{e, {}};
+    const Event& ev = r.events.at(static_cast<std::size_t>(e.event));
+    if (e.kind != ev.kind) c.problems.push_back("kind differs");
+    const bool hasToi = isCollision(ev.kind) || ev.kind == EventKind::BallPocket;
+    if (hasToi != e.toi.has_value()) c.problems.push_back("event " + std::to_string(e.event) + ": toi presence");
+    if (e.toi) {
+        const explain::TimeOfImpact& toi = *e.toi;
+        c.same("t0 + root", toi.t0 + toi.root, ev.time, 1.0);
+        c.need("t", ev.time, 1.0);
+        // f(tau) from the exact positions at a few instants between t0 and the event.
+        const double R0 = r.balls[static_cast<std::size_t>(ev.balls[0])].radius;
+        for (double frac : {0.0, 0.3, 0.7, 0.95}) {
+            const double tau = frac * toi.root;
+            const double t = toi.t0 + tau;
+            if (frac > 0.0 && t >= ev.time) continue;
+            // stateAt(t) is the state after any event at t; at t0 it is the segment's start.
+            const BallState a = r.stateAt(ev.balls[0], t);
+            double gap = 0.0, scale = 0.0;
+            switch (ev.kind) {
+            case EventKind::BallBall: {
+                const BallState b = r.stateAt(ev.balls[1], t);
+                const double reach = R0 + r.balls[static_cast<std::size_t>(ev.balls[1])].radius;
+                gap = (b.position - a.position).squaredNorm() - reach * reach;
+                scale = (b.position - a.position).squaredNorm() + reach * reach;
+                break;
+            }
+            case EventKind::BallCushion: {
+                const CushionSegment& s = r.table.cushions[static_cast<std::size_t>(ev.cushion)];
+                gap = (a.position - s.a).dot(s.normal) - R0;
+                scale = std::abs((a.position - s.a).dot(s.normal)) + R0;
+                break;
+            }
+            case EventKind::BallJaw: {
+                const JawTip& j = r.table.jaws[static_cast<std::size_t>(ev.jaw)];
+                gap = (a.position - j.centre).squaredNorm() - (R0 + j.radius) * (R0 + j.radius);
+                scale = (a.position - j.centre).squaredNorm() + (R0 + j.radius) * (R0 + j.radius);
+                break;
+            }
+            case EventKind::BallPocket: {
+                const Pocket& k = r.table.pockets[static_cast<std::size_t>(ev.pocket)];
+                gap = (a.position - k.centre).squaredNorm() - k.radius * k.radius;
+                scale = (a.position - k.centre).squaredNorm() + k.radius * k.radius;
+                break;
+            }
+            default: break;
+            }
+            // Positions are exact to rounding (1e-16 m on a metre), the gap to its scale's rounding.
+            if (!(std::abs(toi.at(tau) - gap) <= 1e-12 * scale)) c.fail("f(" + std::to_string(frac) + " root)", toi.at(tau), gap);
+        }
+        int chosen = 0;
+        for (const explain::ToiRoot& root : toi.roots) chosen += root.chosen ? 1 : 0;
+        if (chosen != 1) c.problems.push_back("event " + std::to_string(e.event) + ": not one chosen root");
+    }
+    switch (ev.kind) {
+    case EventKind::CueStrike:
+        c.need("v_after", ev.after[0].velocity);
+        c.need("w_after", ev.after[0].spin);
+        c.need("J", ev.impulse);
+        break;
+    case EventKind::BallBall:
+        c.state("_a", ev.before[0]);
+        c.state("_b", ev.before[1]);
+        c.need("n", ev.normal);
+        c.need("r_c", ev.contactPoint);
+        c.need("v_n", ev.approachSpeed, ev.before[0].velocity.norm() + ev.before[1].velocity.norm());
+        c.need("v_a_after", ev.after[0].velocity);
+        c.need("v_b_after", ev.after[1].velocity);
+        c.need("w_a_after", ev.after[0].spin);
+        c.need("w_b_after", ev.after[1].spin);
+        c.need("J", ev.impulse);
+        c.energy(r, ev);
+        break;
+    case EventKind::BallCushion:
+    case EventKind::BallJaw:
+        c.state("", ev.before[0]);
+        c.need("N", Vec2(-ev.normal));
+        c.need("r_c", ev.contactPoint);
+        c.need("v_after", ev.after[0].velocity);
+        c.need("w_after", ev.after[0].spin);
+        c.need("J", ev.impulse);
+        c.energy(r, ev);
+        break;
+    case EventKind::BallPocket:
+        c.state("", ev.before[0]);
+        c.need("r_after", ev.after[0].position);
+        break;
+    default:
+        c.need("t", ev.time, 1.0);
+        c.need("r_after", ev.after[0].position);
+        c.need("v_after", ev.after[0].velocity);
+        c.need("w_after", ev.after[0].spin);
+        c.energy(r, ev);
+        break;
+    }
+    return c.problems;
+}
+
+}  // namespace cuelab::testing

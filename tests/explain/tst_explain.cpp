@@ -1,0 +1,264 @@
+// core/explain against the simulator: for every event kind and collision model, over the bundled
+// examples and random setups, each step's results equal the event's numbers, t0 + root is the event
+// time, and the time-of-impact polynomial equals the gap of the exact positions. A tampered event
+// proves the checks can fail.
+
+#include "Explain.h"
+#include "ExplainChecks.h"
+#include "ExplainText.h"
+#include "Racks.h"
+#include "SetupFile.h"
+#include "Simulation.h"
+#include "models/ModelRegistry.h"
+
+#include <QDir>
+#include <QtTest>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+using namespace cuelab;
+
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__) || !defined(NDEBUG)
+constexpr int kRandomSetups = 40;
+#else
+constexpr int kRandomSetups = 300;
+#endif
+
+struct Combination {
+    const char* name;
+    BallBallModel ballBall;
+    BallBallFriction friction;
+    BallCushionModel cushion;
+};
+const Combination kCombinations[] = {
+    {"frictionless+han2005", BallBallModel::Frictionless, BallBallFriction::Fixed, BallCushionModel::Han2005},
+    {"frictional-fixed+mirror", BallBallModel::Frictional, BallBallFriction::Fixed, BallCushionModel::Mirror},
+    {"frictional-alciatore+han2005", BallBallModel::Frictional, BallBallFriction::Alciatore, BallCushionModel::Han2005},
+    {"frictionless+mirror", BallBallModel::Frictionless, BallBallFriction::Fixed, BallCushionModel::Mirror},
+};
+
+Setup randomSetup(std::mt19937_64& rng, const Combination& c)
+{
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Setup s;
+    s.table.kind = u(rng) < 0.8 ? TableKind::Pool9ft : TableKind::Pool7ft;
+    const Table t = makeTable(s.table);
+    const double R = t.ballRadius;
+    const int count = 2 + static_cast<int>(u(rng) * 7);
+    auto legal = [&](const Vec2& p) {
+        if (p.x() < R || p.x() > t.length - R || p.y() < R || p.y() > t.width - R) return false;
+        for (const Pocket& k : t.pockets)
+            if ((p - k.centre).norm() < k.radius + R) return false;
+        for (const JawTip& j : t.jaws)
+            if ((p - j.centre).norm() < j.radius + R) return false;
+        for (const Ball& b : s.balls)
+            if ((p - b.state.position).norm() < 2 * R - 1e-12) return false;
+        return true;
+    };
+    for (int tries = 0; int(s.balls.size()) < count && tries < 1000; ++tries) {
+        Vec2 p(t.length * u(rng), t.width * u(rng));
+        if (!s.balls.empty() && u(rng) < 0.25) {
+            const Ball& other = s.balls[static_cast<std::size_t>(u(rng) * double(s.balls.size()))];
+            const double a = 2 * M_PI * u(rng);
+            p = other.state.position + 2 * R * Vec2(std::cos(a), std::sin(a));
+        }
+        if (!legal(p)) continue;
+        Ball b;
+        b.id = s.balls.empty() ? "cue" : std::to_string(s.balls.size());
+        b.radius = R;
+        b.mass = t.ballMass;
+        b.state.position = p;
+        s.balls.push_back(b);
+    }
+    s.physics.ballBallModel = c.ballBall;
+    s.physics.ballBallFrictionKind = c.friction;
+    s.physics.ballCushionModel = c.cushion;
+    CueStrike shot;
+    shot.ball = "cue";
+    shot.speed = 0.5 + 6.0 * u(rng);
+    shot.headingDeg = 360.0 * u(rng);
+    shot.elevationDeg = u(rng) < 0.3 ? 20.0 * u(rng) : 0.0;
+    shot.side = 0.8 * (u(rng) - 0.5);
+    shot.height = 0.8 * (u(rng) - 0.5);
+    s.shot = shot;
+    return s;
+}
+
+// Explains every event of the run and returns the disagreements; counts explained kinds.
+QStringList checkRun(const Setup& setup, std::map<EventKind, int>* kinds = nullptr)
+{
+    SimulationOptions options;
+    options.maxEvents = 4000;
+    const SimulationResult r = simulate(setup, options);
+    QStringList problems;
+    for (int i = 0; i < int(r.events.size()); ++i) {
+        const explain::Explanation e = explain::explain(r, i, setup.shot);
+        if (kinds) ++(*kinds)[e.kind];
+        for (const std::string& p : testing::checkExplanation(r, e)) problems << QString::fromStdString(p);
+        if (e.steps.empty()) problems << QStringLiteral("event %1: no steps").arg(i);
+    }
+    return problems;
+}
+
+Setup example(const QString& name)
+{
+    QString error;
+    const auto s = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + name, &error);
+    if (!s) qFatal("%s", qPrintable(error));
+    return *s;
+}
+
+}  // namespace
+
+class TestExplain : public QObject {
+    Q_OBJECT
+private slots:
+    void examples_data()
+    {
+        QTest::addColumn<QString>("file");
+        const QStringList files = QDir(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples")).entryList({"*.json"});
+        for (const QString& f : files) QTest::newRow(qPrintable(f)) << f;
+    }
+    void examples()
+    {
+        QFETCH(QString, file);
+        for (const Combination& c : kCombinations) {
+            Setup s = example(file);
+            s.physics.ballBallModel = c.ballBall;
+            s.physics.ballBallFrictionKind = c.friction;
+            s.physics.ballCushionModel = c.cushion;
+            const QStringList problems = checkRun(s);
+            if (!problems.isEmpty()) qWarning().noquote() << c.name << problems.mid(0, 10).join('\n');
+            QCOMPARE(problems.size(), 0);
+        }
+    }
+
+    void randomSetups_data()
+    {
+        QTest::addColumn<int>("combination");
+        for (int k = 0; k < int(std::size(kCombinations)); ++k) QTest::newRow(kCombinations[k].name) << k;
+    }
+    void randomSetups()
+    {
+        QFETCH(int, combination);
+        std::mt19937_64 rng(1234 + static_cast<unsigned>(combination));
+        std::map<EventKind, int> kinds;
+        QStringList problems;
+        for (int n = 0; n < kRandomSetups; ++n) problems << checkRun(randomSetup(rng, kCombinations[combination]), &kinds);
+        if (!problems.isEmpty()) qWarning().noquote() << problems.mid(0, 10).join('\n');
+        QCOMPARE(problems.size(), 0);
+        // The random shots reach every kind the examples cannot be relied on for.
+        for (EventKind k : {EventKind::CueStrike, EventKind::BallBall, EventKind::BallCushion, EventKind::SlideToRoll,
+                            EventKind::RollToStop, EventKind::RollToSpin, EventKind::SpinToStop})
+            QVERIFY2(kinds[k] > 0, toString(k).data());
+    }
+
+    // Jaw hits and pockets, aimed: a ball rolled into a corner pocket's jaw and one into its mouth.
+    void jawAndPocket()
+    {
+        std::map<EventKind, int> kinds;
+        QStringList problems;
+        for (double heading = 30.0; heading <= 60.0; heading += 0.5) {
+            Setup s;
+            Ball b;
+            b.id = "cue";
+            b.state.position = Vec2(0.3, 0.3);
+            s.balls.push_back(b);
+            s.shot = CueStrike{"cue", 2.0, 180.0 + heading, 0.0, 0.0, 0.2, 0.567};
+            problems << checkRun(s, &kinds);
+        }
+        QCOMPARE(problems.size(), 0);
+        QVERIFY(kinds[EventKind::BallJaw] > 0);
+        QVERIFY(kinds[EventKind::BallPocket] > 0);
+    }
+
+    // The checks fail when the derivation and the simulation disagree.
+    void driftIsCaught()
+    {
+        Setup s = example(QStringLiteral("half-ball-cut.json"));
+        SimulationResult r = simulate(s);
+        int hit = -1;
+        for (int i = 0; i < int(r.events.size()); ++i)
+            if (r.events[static_cast<std::size_t>(i)].kind == EventKind::BallBall) hit = i;
+        QVERIFY(hit >= 0);
+        const explain::Explanation e = explain::explain(r, hit, s.shot);
+        QVERIFY(testing::checkExplanation(r, e).empty());
+        SimulationResult tampered = r;
+        tampered.events[static_cast<std::size_t>(hit)].after[1].velocity.x() *= 1.0 + 1e-10;
+        QVERIFY(!testing::checkExplanation(tampered, e).empty());
+        tampered = r;
+        tampered.events[static_cast<std::size_t>(hit)].time += 1e-9;
+        QVERIFY(!testing::checkExplanation(tampered, e).empty());
+        // A different restitution in the explanation than in the run.
+        SimulationResult other = r;
+        other.physics.ballBallRestitution = 0.9;
+        QVERIFY(!testing::checkExplanation(r, explain::explain(other, hit, s.shot)).empty());
+    }
+
+    void halfBallCut()
+    {
+        const Setup s = example(QStringLiteral("half-ball-cut.json"));
+        const SimulationResult r = simulate(s);
+        int hit = -1;
+        for (int i = 0; i < int(r.events.size()) && hit < 0; ++i)
+            if (r.events[static_cast<std::size_t>(i)].kind == EventKind::BallBall) hit = i;
+        const explain::Explanation e = explain::explain(r, hit, s.shot);
+        QVERIFY(e.toi);
+        QCOMPARE(e.toi->coefficients.size(), std::size_t(5));
+        QVERIFY(e.step("Why now: the time of impact"));
+        QVERIFY(e.step("Kinetic energy before and after"));
+        QVERIFY(e.step("Momentum before and after"));
+        QCOMPARE(e.bodies.size(), std::size_t(2));
+        // Frictionless, equal masses: momentum is kept to rounding.
+        const explain::Quantity* dp = e.step("Momentum before and after")->result("dP_norm");
+        QVERIFY(dp && dp->value < 1e-12);
+        const std::string md = explain::toMarkdown(e);
+        QVERIFY(md.find("Why now") != std::string::npos);
+        const std::string html = explain::toHtml(e);
+        QVERIFY(html.find("<sub>") != std::string::npos);
+        QVERIFY(html.find("τ") != std::string::npos);
+    }
+
+    void transitionsHaveNoToi()
+    {
+        const Setup s = example(QStringLiteral("stun-shot.json"));
+        const SimulationResult r = simulate(s);
+        int seen = 0;
+        for (int i = 0; i < int(r.events.size()); ++i)
+            if (isTransition(r.events[static_cast<std::size_t>(i)].kind)) {
+                QVERIFY(!explain::explain(r, i, s.shot).toi);
+                ++seen;
+            }
+        QVERIFY(seen > 0);
+    }
+
+    void everyModelHasAnExplainer()
+    {
+        QVERIFY(explain::ballBallExplainer(BallBallModel::Frictionless));
+        QVERIFY(explain::ballBallExplainer(BallBallModel::Frictional));
+        QVERIFY(explain::cushionExplainer(BallCushionModel::Mirror));
+        QVERIFY(explain::cushionExplainer(BallCushionModel::Han2005));
+    }
+
+    void markup()
+    {
+        QCOMPARE(QString::fromStdString(explain::markupToHtml("v_{a,x} τ^2 <")), QStringLiteral("v<sub>a,x</sub> τ<sup>2</sup> &lt;"));
+        QCOMPARE(QString::fromStdString(explain::markupToText("c_0 τ^2 + t_{start}")), QStringLiteral("c₀ τ² + tₛₜₐᵣₜ"));
+        QCOMPARE(QString::fromStdString(explain::markupToText("v_{b,y}")), QStringLiteral("v_(b,y)"));
+    }
+
+    void outOfRange()
+    {
+        const Setup s = example(QStringLiteral("straight-shot.json"));
+        const SimulationResult r = simulate(s);
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, explain::explain(r, int(r.events.size()), s.shot));
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, explain::explain(r, -1, s.shot));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestExplain)
+#include "tst_explain.moc"
