@@ -9,6 +9,7 @@ Command validateCommand();
 Command simulateCommand();
 Command stateCommand();
 Command trajectoryCommand();
+Command explainCommand();
 
 const QList<Command>& commands()
 {
@@ -17,6 +18,7 @@ const QList<Command>& commands()
         simulateCommand(),
         stateCommand(),
         trajectoryCommand(),
+        explainCommand(),
     };
     return all;
 }
