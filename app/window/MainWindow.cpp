@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 #include "MainWindowPrivate.h"
 
+#include "DockLayout.h"
 #include "Features.h"
 #include "RecentFiles.h"
 
@@ -48,7 +49,8 @@ bool isSetupFile(const QUrl& url) { return url.isLocalFile() && url.toLocalFile(
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), document_(new Document(this)), playback_(new Playback(this)), selection_(new Selection(this))
+    : QMainWindow(parent), document_(new Document(this)), playback_(new Playback(this)), selection_(new Selection(this)),
+      layout_(new DockLayout(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
@@ -74,6 +76,7 @@ MainWindow::MainWindow(QWidget* parent)
     installFeatures(*this);
     for (QMenu* m : findChildren<QMenu*>()) m->setToolTipsVisible(true);
     analysisMenu_->menuAction()->setVisible(!analysisMenu_->isEmpty());
+    layout_->captureDefault();
 
     connect(document_, &Document::resultChanged, this, &MainWindow::onResultChanged);
     connect(document_, &Document::setupChanged, this, [this] {
@@ -161,7 +164,12 @@ QDockWidget* MainWindow::addPanel(QWidget* content, const QString& title, const 
     } else {
         d->setWidget(content);
     }
+    if (placement.area == Qt::TopDockWidgetArea || placement.area == Qt::BottomDockWidgetArea)
+        d->setMinimumHeight(DockLayout::kMinimumDockHeight);
+    else
+        d->setMinimumWidth(DockLayout::kMinimumDockWidth);
     addDockWidget(placement.area, d);
+    layout_->adopt(d);
     if (!placement.tabifyWith.isEmpty()) {
         for (QDockWidget* other : std::as_const(docks_))
             if (other->objectName() == placement.tabifyWith) tabifyDockWidget(other, d);
@@ -170,6 +178,11 @@ QDockWidget* MainWindow::addPanel(QWidget* content, const QString& title, const 
     docks_ << d;
     if (panelsMenu_) panelsMenu_->addAction(d->toggleViewAction());
     return d;
+}
+
+void MainWindow::resetLayout()
+{
+    layout_->reset();
 }
 
 QMenu* MainWindow::menu(WindowMenu which)

@@ -25,6 +25,7 @@ class QProgressBar;
 namespace cuelab {
 
 class BallsPanel;
+class DockLayout;
 class Document;
 class EventsPanel;
 class InspectorPanel;
@@ -81,6 +82,8 @@ public:
                           const PanelPlacement& placement = {});
     QMenu* menu(WindowMenu which);
     QList<QDockWidget*> panels() const { return docks_; }
+    DockLayout* dockLayout() const { return layout_; }
+    void resetLayout();  // View > Reset Layout: the docks where the first start put them
 
     static QStringList bundledExamples();  // resource paths, sorted
 
@@ -115,6 +118,7 @@ private:
     Document* document_;
     Playback* playback_;
     Selection* selection_;
+    DockLayout* layout_;
     TableView* view_ = nullptr;
     TransportBar* transport_ = nullptr;
     BallsPanel* balls_ = nullptr;

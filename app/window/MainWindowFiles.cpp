@@ -3,6 +3,7 @@
 
 #include "MainWindow.h"
 #include "MainWindowPrivate.h"
+#include "DockLayout.h"
 #include "RecentFiles.h"
 
 #include "editor/Document.h"
@@ -39,8 +40,11 @@ void MainWindow::readSettings()
     QSettings settings;
     if (const QByteArray geometry = settings.value(QStringLiteral("window/geometry")).toByteArray(); !geometry.isEmpty())
         restoreGeometry(geometry);
-    if (const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray(); !state.isEmpty())
-        restoreState(state);
+    // A remembered layout that does not restore, or whose docks would not leave the table view room,
+    // is dropped: the default layout stays (DockLayout::restore).
+    const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray();
+    const QVariant shares = settings.value(QStringLiteral("window/dockShares"));
+    if (!state.isEmpty() || shares.isValid()) layout_->restore(state, shares);
     for (int i = 0; i < kOverlayCount; ++i) {
         const QVariant on = settings.value(window::overlayKey(static_cast<Overlay>(i)));
         if (on.isValid()) overlayActions_[static_cast<std::size_t>(i)]->setChecked(on.toBool());
@@ -52,6 +56,7 @@ void MainWindow::writeSettings() const
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
+    settings.setValue(QStringLiteral("window/dockShares"), layout_->savedShares());
     for (int i = 0; i < kOverlayCount; ++i)
         settings.setValue(window::overlayKey(static_cast<Overlay>(i)), overlayActions_[static_cast<std::size_t>(i)]->isChecked());
 }

@@ -93,6 +93,9 @@ void MainWindow::createMenus()
     QMenu* view = viewMenu_ = menuBar()->addMenu(tr("&View"));
     panelsMenu_ = view->addMenu(tr("&Panels"));
     for (QDockWidget* d : std::as_const(docks_)) panelsMenu_->addAction(d->toggleViewAction());
+    QAction* resetLayoutAction = view->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
+    resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
+    resetLayoutAction->setToolTip(tr("Put every panel back where the first start put it, at its default width"));
     QMenu* overlays = view->addMenu(tr("&Overlays"));
     for (int i = 0; i < kOverlayCount; ++i) {
         const auto overlay = static_cast<Overlay>(i);

@@ -1,6 +1,7 @@
 // The window's extension API, through which features add docks and menu entries (MainWindow.h),
 // the shared Selection, and Help > Keyboard and Mouse, which lists every shortcut of the menus.
 
+#include "DockLayout.h"
 #include "MainWindow.h"
 #include "ShortcutsDialog.h"
 
@@ -83,6 +84,78 @@ private slots:
         QVERIFY(analysis->menuAction()->isVisible());
         QVERIFY(window.menu(WindowMenu::Help) != nullptr);
         QVERIFY(window.menu(WindowMenu::Playback) != nullptr);
+    }
+
+    // Shrinking the window to 800x600 keeps every side dock usable, and growing it back gives the
+    // docks their share again instead of handing every pixel to the table view.
+    void docksSurviveResizing()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTest::qWait(100);
+        QDockWidget* balls = window.findChild<QDockWidget*>(QStringLiteral("BallsDock"));
+        QDockWidget* events = window.findChild<QDockWidget*>(QStringLiteral("EventsDock"));
+        QVERIFY(balls && events);
+        const int ballsBefore = balls->width();
+        const int eventsBefore = events->width();
+        QVERIFY2(ballsBefore >= DockLayout::kMinimumDockWidth, qPrintable(QString::number(ballsBefore)));
+
+        window.resize(800, 600);
+        QTest::qWait(200);
+        QVERIFY2(balls->width() >= DockLayout::kMinimumDockWidth, qPrintable(QString::number(balls->width())));
+        QVERIFY2(events->width() >= DockLayout::kMinimumDockWidth, qPrintable(QString::number(events->width())));
+
+        window.resize(1600, 1000);
+        QTest::qWait(200);
+        QVERIFY2(std::abs(balls->width() - ballsBefore) <= 0.05 * ballsBefore,
+                 qPrintable(QStringLiteral("%1 then %2").arg(ballsBefore).arg(balls->width())));
+        QVERIFY2(std::abs(events->width() - eventsBefore) <= 0.05 * eventsBefore,
+                 qPrintable(QStringLiteral("%1 then %2").arg(eventsBefore).arg(events->width())));
+
+        // A separator dragged by the user sets the share that later resizes keep.
+        QTest::qWait(200);
+        window.resizeDocks({balls}, {520}, Qt::Horizontal);
+        QTest::qWait(50);
+        QCOMPARE(balls->width(), 520);
+        QTest::mouseRelease(&window, Qt::LeftButton, {}, QPoint(balls->width() + 2, window.height() / 2));
+        QTest::qWait(50);
+        const double share = window.dockLayout()->leftShare();
+        QVERIFY2(std::abs(share - balls->width() / 1600.0) < 0.01, qPrintable(QString::number(share)));
+        QVERIFY2(share > 0.3, qPrintable(QString::number(share)));
+        window.resize(1200, 800);
+        QTest::qWait(200);
+        QVERIFY2(std::abs(balls->width() - share * 1200) <= 0.05 * share * 1200, qPrintable(QString::number(balls->width())));
+    }
+
+    void resetLayoutBringsPanelsBack()
+    {
+        MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QDockWidget* events = window.findChild<QDockWidget*>(QStringLiteral("EventsDock"));
+        QDockWidget* shot = window.findChild<QDockWidget*>(QStringLiteral("ShotDock"));
+        events->setFloating(true);
+        shot->hide();
+        window.resetLayout();
+        QTest::qWait(100);
+        QVERIFY(!events->isFloating());
+        QCOMPARE(window.dockWidgetArea(events), Qt::RightDockWidgetArea);
+        QVERIFY(!shot->isHidden());
+        QCOMPARE(window.dockWidgetArea(shot), Qt::LeftDockWidgetArea);
+    }
+
+    void unusableRememberedLayoutIsRefused()
+    {
+        MainWindow window;
+        // Shares that would leave the table view no room are refused; the defaults stay.
+        QVERIFY(!window.dockLayout()->restore({}, QVariantList{0.6, 0.5}));
+        QCOMPARE(window.dockLayout()->leftShare(), DockLayout::kDefaultLeftShare);
+        QVERIFY(!window.dockLayout()->restore(QByteArray("not a state"), QVariantList{0.2, 0.2}));
+        QVERIFY(window.dockLayout()->restore({}, QVariantList{0.2, 0.25}));
+        QCOMPARE(window.dockLayout()->rightShare(), 0.25);
     }
 
     void selectionRules()

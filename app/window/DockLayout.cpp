@@ -1,0 +1,152 @@
+#include "DockLayout.h"
+
+#include <QDockWidget>
+#include <QEvent>
+#include <QLayout>
+#include <QMainWindow>
+#include <QTimer>
+
+#include <algorithm>
+
+namespace cuelab {
+
+namespace {
+
+// A side may take at most this share of the window, both together at most kMaxBothShare: the table
+// view keeps the rest.
+constexpr double kMinShare = 0.08;
+constexpr double kMaxShare = 0.45;
+constexpr double kMaxBothShare = 0.70;
+
+bool sharesUsable(double left, double right)
+{
+    return left >= kMinShare && left <= kMaxShare && right >= kMinShare && right <= kMaxShare &&
+           left + right <= kMaxBothShare;
+}
+
+}  // namespace
+
+DockLayout::DockLayout(QMainWindow* window) : QObject(window), window_(window)
+{
+    settle_.setSingleShot(true);
+    settle_.setInterval(kSettleMs);
+    connect(&settle_, &QTimer::timeout, this, [this] {
+        // The first pass lets the layout take the window's new size; the second sizes the docks in
+        // it (Qt 6.4 drops a resizeDocks made while the layout still holds the old size).
+        applyShares();
+        QTimer::singleShot(0, this, [this] {
+            applyShares();
+            windowResizing_ = false;
+        });
+    });
+    window_->installEventFilter(this);
+}
+
+void DockLayout::adopt(QDockWidget* dock)
+{
+    connect(dock, &QDockWidget::dockLocationChanged, this, [this] { QTimer::singleShot(0, this, &DockLayout::recordShares); });
+}
+
+void DockLayout::captureDefault()
+{
+    default_ = window_->saveState();
+}
+
+void DockLayout::reset()
+{
+    if (!default_.isEmpty()) window_->restoreState(default_);
+    for (QDockWidget* d : window_->findChildren<QDockWidget*>()) {
+        // Every dock comes back, docked where the default layout put it.
+        if (d->isFloating()) d->setFloating(false);
+    }
+    left_ = kDefaultLeftShare;
+    right_ = kDefaultRightShare;
+    applyShares();
+}
+
+bool DockLayout::restore(const QByteArray& state, const QVariant& shares)
+{
+    const QVariantList list = shares.toList();
+    double left = kDefaultLeftShare, right = kDefaultRightShare;
+    if (list.size() == 2) {
+        left = list[0].toDouble();
+        right = list[1].toDouble();
+    }
+    if (!sharesUsable(left, right)) return false;
+    if (!state.isEmpty() && !window_->restoreState(state)) return false;
+    left_ = left;
+    right_ = right;
+    applyShares();
+    return true;
+}
+
+QVariant DockLayout::savedShares() const { return QVariantList{left_, right_}; }
+
+bool DockLayout::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched != window_) return QObject::eventFilter(watched, event);
+    if (event->type() == QEvent::Resize) {
+        // The window's own resize: the docks follow their shares once the layout has settled.
+        // Debounced: a window edge being dragged resizes many times; the layout settles in between.
+        windowResizing_ = true;
+        settle_.start();
+    } else if (event->type() == QEvent::MouseButtonRelease) {
+        // The separators between the docks and the view belong to the window itself: a release on
+        // the window (not on a child) ends a drag of one, and the shares become what the user left.
+        QTimer::singleShot(0, this, &DockLayout::recordShares);
+    }
+    return QObject::eventFilter(watched, event);
+}
+
+QDockWidget* DockLayout::sideDock(Qt::DockWidgetArea area) const
+{
+    QDockWidget* widest = nullptr;
+    for (QDockWidget* d : window_->findChildren<QDockWidget*>()) {
+        if (d->isFloating() || !d->isVisible() || window_->dockWidgetArea(d) != area) continue;
+        if (!widest || d->width() > widest->width()) widest = d;
+    }
+    return widest;
+}
+
+int DockLayout::sideWidth(Qt::DockWidgetArea area) const
+{
+    const QDockWidget* d = sideDock(area);
+    return d ? d->width() : 0;
+}
+
+void DockLayout::recordShares()
+{
+    if (windowResizing_ || applying_ || window_->width() <= 0) return;
+    const double w = window_->width();
+    const int leftWidth = sideWidth(Qt::LeftDockWidgetArea);
+    const int rightWidth = sideWidth(Qt::RightDockWidgetArea);
+    const double left = leftWidth > 0 ? leftWidth / w : left_;
+    const double right = rightWidth > 0 ? rightWidth / w : right_;
+    if (sharesUsable(left, right)) {
+        left_ = left;
+        right_ = right;
+    }
+}
+
+void DockLayout::applyShares()
+{
+    const int w = window_->width();
+    if (w <= 0) return;
+    QList<QDockWidget*> docks;
+    QList<int> widths;
+    for (const auto& [area, share] : {std::pair{Qt::LeftDockWidgetArea, left_}, std::pair{Qt::RightDockWidgetArea, right_}}) {
+        if (QDockWidget* d = sideDock(area)) {
+            docks << d;
+            widths << std::max(kMinimumDockWidth, static_cast<int>(share * w));
+        }
+    }
+    if (docks.isEmpty()) return;
+    applying_ = true;
+    // The layout must hold the window's new size before the docks are sized within it.
+    if (QLayout* layout = window_->layout()) layout->activate();
+    // One dock at a time: sized together, Qt 6.4 leaves a side that grows after a shrink unchanged.
+    for (qsizetype i = 0; i < docks.size(); ++i) window_->resizeDocks({docks[i]}, {widths[i]}, Qt::Horizontal);
+    QTimer::singleShot(0, this, [this] { applying_ = false; });
+}
+
+}  // namespace cuelab

@@ -1,0 +1,66 @@
+#pragma once
+// Keeps the window's side docks usable whatever the window's size.
+//
+// QMainWindow gives every pixel of a growing window to the central widget and takes every pixel of
+// a shrinking one from the docks down to their minimum, so a window shrunk and grown again ends
+// with squeezed docks. DockLayout remembers the share of the window's width the user gave each side
+// (left and right dock areas) — updated when the user drags a separator or moves a dock, not when
+// the window is resized — and restores those shares after every resize. It also keeps the layout of the first
+// start, for View > Reset Layout, and refuses a remembered layout that would not be usable.
+
+#include <QObject>
+#include <QByteArray>
+#include <QTimer>
+#include <QVariant>
+
+class QDockWidget;
+class QMainWindow;
+
+namespace cuelab {
+
+class DockLayout : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kMinimumDockWidth = 240;   // px: the Shot panel's spin boxes and tip widget fit
+    static constexpr int kMinimumDockHeight = 150;  // px, for docks at the top or bottom
+    static constexpr double kDefaultLeftShare = 0.27;
+    static constexpr double kDefaultRightShare = 0.30;
+
+    explicit DockLayout(QMainWindow* window);
+
+    // Follows a new dock: moving it to another area updates the shares.
+    void adopt(QDockWidget* dock);
+    // The layout Reset Layout returns to: call once every dock exists.
+    void captureDefault();
+    void reset();
+
+    // The shares of the window's width of the left and right dock areas.
+    double leftShare() const { return left_; }
+    double rightShare() const { return right_; }
+
+    // Restores a saved state and shares; a state that does not restore or shares outside what a
+    // window can hold are refused (returns false) and the default layout stays.
+    bool restore(const QByteArray& state, const QVariant& shares);
+    QVariant savedShares() const;
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void applyShares();
+    void recordShares();
+    int sideWidth(Qt::DockWidgetArea area) const;
+    QDockWidget* sideDock(Qt::DockWidgetArea area) const;
+
+    static constexpr int kSettleMs = 40;  // after the last resize event, the docks take their shares
+
+    QMainWindow* window_;
+    QTimer settle_;
+    QByteArray default_;
+    double left_ = kDefaultLeftShare;
+    double right_ = kDefaultRightShare;
+    bool windowResizing_ = false;
+    bool applying_ = false;
+};
+
+}  // namespace cuelab
