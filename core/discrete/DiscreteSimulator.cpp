@@ -62,7 +62,8 @@ void reflect(Vec2& v, const Vec2& n, double restitution)
 
 }  // namespace
 
-DiscreteResult simulateDiscrete(const Setup& setup, const DiscreteSettings& settings)
+DiscreteResult simulateDiscrete(const Setup& setup, const DiscreteSettings& settings,
+                                const DiscreteStepObserver& observer)
 {
     const Table table = makeTable(setup.table);
     const std::size_t n = setup.balls.size();
@@ -88,15 +89,19 @@ DiscreteResult simulateDiscrete(const Setup& setup, const DiscreteSettings& sett
     const double cushionE = setup.physics.cushionRestitution;
 
     DiscreteResult result;
+    bool stopped = false;
     auto record = [&](double t) {
-        result.frameTimes.push_back(t);
-        result.frames.push_back(balls);
+        if (settings.keepFrames) {
+            result.frameTimes.push_back(t);
+            result.frames.push_back(balls);
+        }
+        if (observer && !observer(t, balls)) stopped = true;
     };
     record(0.0);
 
     const double dt = settings.timeStep;
     double now = 0.0;
-    for (long long step = 0; now < settings.maxTime; ++step) {
+    for (long long step = 0; now < settings.maxTime && !stopped; ++step) {
         const bool anyMoving = std::any_of(balls.begin(), balls.end(), [](const DiscreteBall& b) {
             return !b.pocketed && b.velocity.squaredNorm() > 0.0;
         });
@@ -151,7 +156,8 @@ DiscreteResult simulateDiscrete(const Setup& setup, const DiscreteSettings& sett
                 b.velocity += (va - vb) * lineOfCentres;
                 result.maxOverlap = std::max(result.maxOverlap, first.overlap);
             }
-            result.events.push_back({first.kind, now + (dt - remaining), first.ball, first.other, first.overlap});
+            result.events.push_back(
+                {first.kind, now + (dt - remaining), first.ball, first.other, first.overlap, first.jaw});
         }
         now += dt;
 

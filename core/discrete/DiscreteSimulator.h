@@ -18,6 +18,7 @@
 #include "Types.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace cuelab::discrete {
@@ -28,7 +29,13 @@ struct DiscreteSettings {
     double restSpeed = 0.005;      // m/s, below this a ball is put to rest
     double maxTime = 60.0;         // s
     double friction = 0.0;         // m/s^2 constant deceleration; 0 = mu_roll * g of the setup
+    bool keepFrames = true;        // false: DiscreteResult::frames stays empty (long runs at tiny steps)
 };
+
+struct DiscreteBall;
+
+// Called with the balls at t = 0 and after every step; returning false ends the run there.
+using DiscreteStepObserver = std::function<bool(double time, const std::vector<DiscreteBall>& balls)>;
 
 enum class DiscreteEventKind : std::uint8_t { BallBall, BallCushion, BallPocket, Rest };
 
@@ -38,6 +45,7 @@ struct DiscreteEvent {
     int ball = -1;
     int other = -1;              // second ball (BallBall), cushion index (BallCushion), pocket (BallPocket)
     double overlap = 0.0;        // m, how far the balls had interpenetrated when the hit was found
+    bool jaw = false;            // BallCushion: `other` indexes Table::jaws instead of Table::cushions
 };
 
 struct DiscreteBall {
@@ -57,6 +65,8 @@ struct DiscreteResult {
 // Runs the 2011 method on a setup. The cue strike gives the struck ball the speed of the exact
 // model's level, centre-ball strike along the heading; tip offsets and spin are ignored (the
 // method has none).
-DiscreteResult simulateDiscrete(const Setup& setup, const DiscreteSettings& settings = {});
+// `observer`, when given, sees every step (see DiscreteStepObserver).
+DiscreteResult simulateDiscrete(const Setup& setup, const DiscreteSettings& settings = {},
+                                const DiscreteStepObserver& observer = {});
 
 }  // namespace cuelab::discrete

@@ -74,7 +74,7 @@ static const QStringList kExamples{
     QStringLiteral("draw-shot.json"),      QStringLiteral("half-ball-cut.json"), QStringLiteral("stun-cut.json"),
     QStringLiteral("one-cushion-bank.json"), QStringLiteral("two-rail-kick.json"), QStringLiteral("8-ball-break.json"),
     QStringLiteral("9-ball-break.json"),   QStringLiteral("newtons-cradle.json"), QStringLiteral("snooker-plant.json"),
-    QStringLiteral("three-cushion.json"),
+    QStringLiteral("three-cushion.json"),  QStringLiteral("fast-graze.json"),
 };
 
 void TestExamples::everyFileIsListed()
@@ -105,6 +105,7 @@ void TestExamples::loadsAndSimulatesToRest_data()
     QTest::newRow("Newton's cradle") << "newtons-cradle.json" << none;
     QTest::newRow("snooker plant") << "snooker-plant.json" << QStringList{"red-2:pocket-tr"};
     QTest::newRow("three-cushion carom") << "three-cushion.json" << none;
+    QTest::newRow("fast graze") << "fast-graze.json" << QStringList{"5:pocket-t"};
 }
 
 void TestExamples::loadsAndSimulatesToRest()
