@@ -392,7 +392,7 @@ EngineRun runBox2D(const Setup& setup, const EngineSettings& settings, const Pro
     run.worstOverlap = std::max(run.worstOverlap, listener.worstOverlap);
     run.steps = step;
     run.endTime = t;
-    run.samples = sampler.finish(t);
+    run.samples = sampler.finish(t, run.atRest);
     for (std::size_t i = 0; i < n; ++i) {
         run.finalStates.emplace_back(balls[i].pocketed ? "pocketed"
                                      : balls[i].velocity == Vec2::Zero() ? "stationary"

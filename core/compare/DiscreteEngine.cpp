@@ -49,7 +49,9 @@ EngineRun runDiscrete(const Setup& setup, const EngineSettings& settings, const 
     const discrete::DiscreteResult r = discrete::simulateDiscrete(setup, d, observe);
     run.steps = steps - 1;
     run.worstOverlap = std::max(run.worstOverlap, r.maxOverlap);
-    run.samples = sampler.finish(run.endTime);
+    run.atRest = std::none_of(balls.begin(), balls.end(),
+                              [](const BallSample& b) { return !b.pocketed && b.velocity != Vec2::Zero(); });
+    run.samples = sampler.finish(run.endTime, run.atRest);
 
     for (const discrete::DiscreteEvent& e : r.events) {
         Collision c;
@@ -78,7 +80,6 @@ EngineRun runDiscrete(const Setup& setup, const EngineSettings& settings, const 
     std::stable_sort(run.collisions.begin(), run.collisions.end(),
                      [](const Collision& a, const Collision& b) { return a.time < b.time; });
 
-    run.atRest = true;
     const std::vector<BallSample>& last = run.samples.back();
     for (std::size_t i = 0; i < last.size(); ++i) {
         std::string state = "stationary", pocket;
@@ -88,7 +89,6 @@ EngineRun runDiscrete(const Setup& setup, const EngineSettings& settings, const 
                 if (c.kind == CollisionKind::BallPocket && c.ball == static_cast<int>(i)) pocket = c.agent;
         } else if (last[i].velocity != Vec2::Zero()) {
             state = "moving";
-            run.atRest = false;
         }
         run.finalStates.push_back(state);
         run.finalPockets.push_back(pocket);

@@ -20,8 +20,9 @@ class Sampler {
 public:
     explicit Sampler(double sampleDt) : dt_(sampleDt) {}
     void add(double time, const std::vector<BallSample>& balls);  // times increase
-    // Repeats the last state up to `endTime` and hands the samples over.
-    std::vector<std::vector<BallSample>> finish(double endTime);
+    // Hands the samples over. A run that ended at rest repeats its last state up to the first sample
+    // time at or after `endTime`; one that did not stops at its last sample.
+    std::vector<std::vector<BallSample>> finish(double endTime, bool atRest);
 
 private:
     double dt_;

@@ -68,8 +68,10 @@ EngineRun runExact(const Setup& setup, const EngineSettings& settings, const Pro
         run.collisions.push_back(std::move(c));
     }
 
-    // Samples up to the first sample time at or after the end, where every ball rests.
-    const std::size_t count = static_cast<std::size_t>(std::ceil(r.endTime / run.sampleDt)) + 1;
+    // Samples up to the first sample time at or after the end, where every ball rests; a run cut
+    // short stops at its last sample time within the run.
+    const double spans = r.endTime / run.sampleDt;
+    const std::size_t count = static_cast<std::size_t>(run.atRest ? std::ceil(spans) : std::floor(spans)) + 1;
     run.samples.reserve(count);
     for (std::size_t k = 0; k < count; ++k) {
         if (progress && k % 256 == 255 && !progress(run.sampleTime(k))) {

@@ -33,10 +33,10 @@ void Sampler::add(double time, const std::vector<BallSample>& balls)
     last_ = balls;
 }
 
-std::vector<std::vector<BallSample>> Sampler::finish(double endTime)
+std::vector<std::vector<BallSample>> Sampler::finish(double endTime, bool atRest)
 {
     // Up to the first sample time at or after the end, so that the last sample is the final state.
-    while (samples_.empty() || nextSampleTime() - dt_ < endTime) samples_.push_back(last_);
+    while (samples_.empty() || (atRest && nextSampleTime() - dt_ < endTime)) samples_.push_back(last_);
     return std::move(samples_);
 }
 
