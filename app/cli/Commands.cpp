@@ -10,6 +10,7 @@ Command simulateCommand();
 Command stateCommand();
 Command trajectoryCommand();
 Command explainCommand();
+Command compareCommand();
 
 const QList<Command>& commands()
 {
@@ -19,6 +20,7 @@ const QList<Command>& commands()
         stateCommand(),
         trajectoryCommand(),
         explainCommand(),
+        compareCommand(),
     };
     return all;
 }
