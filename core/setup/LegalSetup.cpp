@@ -1,0 +1,231 @@
+#include "LegalSetup.h"
+
+#include "LegalGeometry.h"
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace cuelab {
+
+using legal::ballPath;
+using legal::quoted;
+
+namespace {
+
+// Collects problems; with `firstOnly` it stops taking them after the first (the rules still run,
+// but they are cheap: no geometry is computed once one is found).
+class Problems {
+public:
+    explicit Problems(bool firstOnly) : firstOnly_(firstOnly) {}
+
+    bool done() const { return firstOnly_ && !list_.empty(); }
+    void add(SetupProblem p)
+    {
+        if (!done()) list_.push_back(std::move(p));
+    }
+    void add(std::optional<SetupProblem> p)
+    {
+        if (p) add(std::move(*p));
+    }
+    std::vector<SetupProblem> take() { return std::move(list_); }
+
+    // The value rules. Each returns whether the value passed, so that dependent rules can be skipped.
+    // A ball's values name the ball and the field: "ball \"cue\": radius must be greater than 0".
+    bool finite(double x, const std::string& path, const Ball* ball = nullptr, int index = -1)
+    {
+        if (std::isfinite(x)) return true;
+        add(make(path, ball, index, "must be a finite number (found " + describeNumber(x) + ")"));
+        return false;
+    }
+    bool positive(double x, const std::string& path, const Ball* ball = nullptr, int index = -1)
+    {
+        if (!finite(x, path, ball, index)) return false;
+        if (x > 0.0) return true;
+        add(make(path, ball, index, "must be greater than 0 (found " + describeNumber(x) + ")"));
+        return false;
+    }
+    bool nonNegative(double x, const std::string& path)
+    {
+        if (!finite(x, path)) return false;
+        if (x >= 0.0) return true;
+        add(make(path, nullptr, -1, "must not be negative (found " + describeNumber(x) + ")"));
+        return false;
+    }
+    bool unitInterval(double x, const std::string& path)
+    {
+        if (!finite(x, path)) return false;
+        if (x >= 0.0 && x <= 1.0) return true;
+        add(make(path, nullptr, -1, "must lie between 0 and 1 (found " + describeNumber(x) + ")"));
+        return false;
+    }
+    template <int N>
+    bool finiteVector(const Eigen::Matrix<double, N, 1>& v, const std::string& path, const Ball& ball, int index)
+    {
+        bool ok = true;
+        for (int i = 0; i < N; ++i)
+            ok = finite(v[i], path + "[" + std::to_string(i) + "]", &ball, index) && ok;
+        return ok;
+    }
+
+    static SetupProblem make(const std::string& path, const Ball* ball, int index, const std::string& what)
+    {
+        if (!ball) return SetupProblem{path, {}, -1, what};
+        // "balls[2].position[1]" -> "ball \"7\": position[1] must be ..."
+        const std::size_t dot = path.find("].");
+        const std::string field = dot == std::string::npos ? path : path.substr(dot + 2);
+        return SetupProblem{path, ball->id, index, "ball " + quoted(ball->id) + ": " + field + " " + what};
+    }
+
+private:
+    bool firstOnly_;
+    std::vector<SetupProblem> list_;
+};
+
+void checkTableSpec(const TableSpec& spec, Problems& out)
+{
+    if (spec.length) out.positive(*spec.length, "table.length");
+    if (spec.width) out.positive(*spec.width, "table.width");
+    if (spec.cushionHeight) out.positive(*spec.cushionHeight, "table.cushion_height");
+}
+
+void checkPhysics(const PhysicsParams& p, Problems& out)
+{
+    out.positive(p.gravity, "physics.gravity");
+    // The cloth frictions must be positive: with zero friction a ball would slide, roll or spin for
+    // ever and every transition time (|u| / (mu g), ...) would divide by zero.
+    out.positive(p.muSlide, "physics.mu_slide");
+    out.positive(p.muRoll, "physics.mu_roll");
+    out.positive(p.muSpin, "physics.mu_spin");
+    out.unitInterval(p.ballBallRestitution, "physics.ball_ball.restitution");
+    if (p.ballBallFrictionKind == BallBallFriction::Fixed) out.nonNegative(p.ballBallFriction, "physics.ball_ball.friction");
+    out.unitInterval(p.cushionRestitution, "physics.ball_cushion.restitution");
+    out.nonNegative(p.cushionFriction, "physics.ball_cushion.friction");
+}
+
+// The values of ball `i`; returns whether its place can be checked (finite position, usable radius).
+bool checkBallValues(const Setup& setup, std::size_t i, Problems& out)
+{
+    const Ball& ball = setup.balls[i];
+    const int index = static_cast<int>(i);
+    if (ball.id.empty()) out.add(SetupProblem{ballPath(index, "id"), {}, index, "the id must not be empty"});
+    for (std::size_t j = 0; j < i && !ball.id.empty(); ++j)
+        if (setup.balls[j].id == ball.id) {
+            out.add(SetupProblem{ballPath(index, "id"), ball.id, index,
+                                 "duplicate id " + quoted(ball.id) + " (balls[" + std::to_string(j) + "] has it too)"});
+            break;
+        }
+    const bool placed = out.finiteVector<2>(ball.state.position, ballPath(index, "position"), ball, index);
+    out.finiteVector<2>(ball.state.velocity, ballPath(index, "velocity"), ball, index);
+    out.finiteVector<3>(ball.state.spin, ballPath(index, "spin"), ball, index);
+    const bool sized = out.positive(ball.radius, ballPath(index, "radius"), &ball, index);
+    out.positive(ball.mass, ballPath(index, "mass"), &ball, index);
+    return placed && sized;
+}
+
+void checkShot(const Setup& setup, Problems& out)
+{
+    if (!setup.shot) return;
+    const CueStrike& shot = *setup.shot;
+    bool found = false;
+    for (const Ball& b : setup.balls) found = found || b.id == shot.ball;
+    if (!found) out.add(SetupProblem{"shot.ball", {}, -1, "there is no ball " + quoted(shot.ball)});
+    out.nonNegative(shot.speed, "shot.speed");
+    out.finite(shot.headingDeg, "shot.heading");
+    if (out.finite(shot.elevationDeg, "shot.elevation") && (shot.elevationDeg < 0.0 || shot.elevationDeg > 90.0))
+        out.add(SetupProblem{"shot.elevation", {}, -1,
+                             "must lie between 0 and 90 degrees (found " + describeNumber(shot.elevationDeg) + ")"});
+    const bool side = out.finite(shot.side, "shot.side");
+    const bool height = out.finite(shot.height, "shot.height");
+    // The tip must meet the ball: the offset from the centre is less than one radius.
+    if (side && height && std::hypot(shot.side, shot.height) >= 1.0)
+        out.add(SetupProblem{std::abs(shot.side) >= std::abs(shot.height) ? "shot.side" : "shot.height", {}, -1,
+                             "the tip misses the ball: side and height must satisfy side² + height² < 1"});
+    out.positive(shot.cueMass, "shot.cue_mass");
+}
+
+void checkSimulation(const SimulationSettings& s, Problems& out)
+{
+    out.positive(s.frameDt, "simulation.frame_dt");
+    out.positive(s.maxTime, "simulation.max_time");
+}
+
+std::vector<SetupProblem> run(const Setup& setup, bool firstOnly)
+{
+    Problems out(firstOnly);
+    checkTableSpec(setup.table, out);
+    checkPhysics(setup.physics, out);
+    std::vector<bool> placeable(setup.balls.size());
+    for (std::size_t i = 0; i < setup.balls.size(); ++i) placeable[i] = checkBallValues(setup, i, out);
+    checkShot(setup, out);
+    checkSimulation(setup.simulation, out);
+    if (out.done() || !legal::tableSpecUsable(setup.table)) return out.take();
+
+    const Table table = makeTable(setup.table);
+    out.add(legal::railsProblem(table));
+    for (std::size_t i = 0; i < setup.balls.size() && !out.done(); ++i) {
+        if (!placeable[i]) continue;
+        const int index = static_cast<int>(i);
+        out.add(legal::tableProblem(table, setup.balls[i], index));
+        for (std::size_t j = 0; j < i && !out.done(); ++j)
+            if (placeable[j]) out.add(legal::overlapProblem(setup.balls[i], index, setup.balls[j]));
+    }
+    return out.take();
+}
+
+}  // namespace
+
+std::vector<SetupProblem> validateSetup(const Setup& setup) { return run(setup, false); }
+
+std::optional<SetupProblem> firstSetupProblem(const Setup& setup)
+{
+    std::vector<SetupProblem> problems = run(setup, true);
+    if (problems.empty()) return std::nullopt;
+    return std::move(problems.front());
+}
+
+std::vector<SetupProblem> validateBall(const Setup& setup, std::size_t index)
+{
+    if (index >= setup.balls.size()) return {};
+    Problems out(false);
+    const bool placeable = checkBallValues(setup, index, out);
+    const Ball& ball = setup.balls[index];
+    const int i = static_cast<int>(index);
+    // A later ball with the same id is this ball's problem too, when this is the one being edited.
+    for (std::size_t j = index + 1; j < setup.balls.size() && !ball.id.empty(); ++j)
+        if (setup.balls[j].id == ball.id) {
+            out.add(SetupProblem{ballPath(i, "id"), ball.id, i,
+                                 "duplicate id " + quoted(ball.id) + " (balls[" + std::to_string(j) + "] has it too)"});
+            break;
+        }
+    if (!placeable || !legal::tableSpecUsable(setup.table)) return out.take();
+    const Table table = makeTable(setup.table);
+    out.add(legal::tableProblem(table, ball, i));
+    for (std::size_t j = 0; j < setup.balls.size(); ++j) {
+        if (j == index) continue;
+        const Ball& other = setup.balls[j];
+        if (!other.state.position.allFinite() || !std::isfinite(other.radius)) continue;
+        out.add(legal::overlapProblem(ball, i, other));
+    }
+    return out.take();
+}
+
+std::string describeLength(double metres)
+{
+    const double magnitude = std::abs(metres);
+    char text[64];
+    if (magnitude >= 0.1) std::snprintf(text, sizeof text, "%.3f m", metres);
+    else if (magnitude >= 1e-4) std::snprintf(text, sizeof text, "%.1f mm", metres * 1e3);
+    else if (magnitude >= 1e-7) std::snprintf(text, sizeof text, "%.1f µm", metres * 1e6);
+    else std::snprintf(text, sizeof text, "%.1f nm", metres * 1e9);
+    return text;
+}
+
+std::string describeNumber(double value)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+}  // namespace cuelab
