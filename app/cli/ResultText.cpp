@@ -170,18 +170,6 @@ std::string stateJson(const SimulationResult& result, double t)
     return w.text();
 }
 
-double frameTime(long long k, double frameDt)
-{
-    // std::to_chars and std::from_chars ignore the locale (Qt sets the user's locale at start-up).
-    std::array<char, 32> buffer{};
-    const double product = static_cast<double>(k) * frameDt;
-    const std::to_chars_result written =
-        std::to_chars(buffer.data(), buffer.data() + buffer.size(), product, std::chars_format::general, 15);
-    double rounded = product;
-    std::from_chars(buffer.data(), written.ptr, rounded);
-    return rounded;
-}
-
 std::string trajectoryCsv(const SimulationResult& result, double frameDt)
 {
     // Frame times come from k, never from a running sum, so that they do not drift.

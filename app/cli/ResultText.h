@@ -2,6 +2,7 @@
 // The text cuelab-cli prints for a simulation (CONTRACT.md): the event log and ball states as JSON,
 // the trajectory as CSV. Numbers use the shortest text that reads back to the same double.
 
+#include "FrameTimes.h"  // frameTime: the one definition of frame times (core/setup)
 #include "JsonText.h"
 #include "ShotOutcome.h"
 #include "Simulation.h"
@@ -23,11 +24,6 @@ void writeOutcome(io::JsonWriter& w, const SimulationResult& result, const ShotO
 
 // `state --at T`: { "time": T, "balls": [...] } with the exact state of every ball at t.
 std::string stateJson(const SimulationResult& result, double t);
-
-// The time of frame k: k * frameDt rounded to 15 significant digits. The product carries the
-// binary error of frameDt (3 * 0.1 = 0.30000000000000004); 15 digits lie above that error, so the
-// frame falls on the decimal time a person expects (0.3), within 1e-15 relative of the product.
-double frameTime(long long k, double frameDt);
 
 // `trajectory`: the header time,ball,state,x,y,vx,vy,wx,wy,wz, then one row per ball at every
 // frame time in [0, endTime] and at every event time (the state just after the event).

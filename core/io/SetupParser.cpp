@@ -1,16 +1,18 @@
 // parseSetup: JSON text -> Setup, refusing (never half-loading) anything CONTRACT.md version 1 does
 // not allow or the simulator cannot take. Every refusal names the JSON path of the culprit.
+// This file reads the document's shape (keys, types, names of kinds and models); whether the values
+// make a legal setup is the Qt-free validator's to say (core/setup, LegalSetup.h), whose messages
+// are only formatted here.
 
 #include "JsonDuplicateKeys.h"
+#include "LegalSetup.h"
 #include "SetupFile.h"
-#include "SetupGeometry.h"
 #include "SetupProblem.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
-#include <QSet>
 
 #include <cmath>
 #include <initializer_list>
@@ -123,23 +125,6 @@ private:
     QJsonObject object_;
 };
 
-// Range checks. Each names the bound in its message.
-double positive(double x, const QString& path)
-{
-    if (!(x > 0.0)) refuse(path, QStringLiteral("must be greater than 0 (found %1)").arg(x));
-    return x;
-}
-double nonNegative(double x, const QString& path)
-{
-    if (x < 0.0) refuse(path, QStringLiteral("must not be negative (found %1)").arg(x));
-    return x;
-}
-double unitInterval(double x, const QString& path)
-{
-    if (x < 0.0 || x > 1.0) refuse(path, QStringLiteral("must lie between 0 and 1 (found %1)").arg(x));
-    return x;
-}
-
 template <int N>
 Eigen::Matrix<double, N, 1> vector(const QJsonValue& v, const QString& path)
 {
@@ -180,10 +165,9 @@ TableSpec parseTable(const QJsonValue& value)
                    QStringLiteral("unknown table kind \"%1\" (expected pool-9ft, pool-8ft, pool-7ft, snooker or carom)")
                        .arg(*kind));
     }
-    if (const auto x = in.optionalNumber("length")) spec.length = positive(*x, in.pathOf("length"));
-    if (const auto x = in.optionalNumber("width")) spec.width = positive(*x, in.pathOf("width"));
-    if (const auto x = in.optionalNumber("cushion_height"))
-        spec.cushionHeight = positive(*x, in.pathOf("cushion_height"));
+    spec.length = in.optionalNumber("length");
+    spec.width = in.optionalNumber("width");
+    spec.cushionHeight = in.optionalNumber("cushion_height");
     if (const auto pockets = in.optionalBool("pockets")) spec.pockets = *pockets;
     return spec;
 }
@@ -200,7 +184,7 @@ void parseBallBall(const QJsonValue& value, const QString& path, PhysicsParams& 
             refuse(in.pathOf("model"),
                    QStringLiteral("unknown model \"%1\" (expected frictionless or frictional)").arg(*model));
     }
-    if (const auto e = in.optionalNumber("restitution")) p.ballBallRestitution = unitInterval(*e, in.pathOf("restitution"));
+    if (const auto e = in.optionalNumber("restitution")) p.ballBallRestitution = *e;
     if (in.has("friction")) {
         const QJsonValue friction = in.value("friction");
         if (friction.isString()) {
@@ -210,7 +194,7 @@ void parseBallBall(const QJsonValue& value, const QString& path, PhysicsParams& 
             p.ballBallFrictionKind = BallBallFriction::Alciatore;
         } else if (friction.isDouble()) {
             p.ballBallFrictionKind = BallBallFriction::Fixed;
-            p.ballBallFriction = nonNegative(ObjectReader::toNumber(friction, in.pathOf("friction")), in.pathOf("friction"));
+            p.ballBallFriction = ObjectReader::toNumber(friction, in.pathOf("friction"));
         } else {
             wrongType(in.pathOf("friction"), "a number or \"alciatore\"", friction);
         }
@@ -228,8 +212,8 @@ void parseBallCushion(const QJsonValue& value, const QString& path, PhysicsParam
         else
             refuse(in.pathOf("model"), QStringLiteral("unknown model \"%1\" (expected mirror or han2005)").arg(*model));
     }
-    if (const auto e = in.optionalNumber("restitution")) p.cushionRestitution = unitInterval(*e, in.pathOf("restitution"));
-    if (const auto mu = in.optionalNumber("friction")) p.cushionFriction = nonNegative(*mu, in.pathOf("friction"));
+    if (const auto e = in.optionalNumber("restitution")) p.cushionRestitution = *e;
+    if (const auto mu = in.optionalNumber("friction")) p.cushionFriction = *mu;
 }
 
 PhysicsParams parsePhysics(const QJsonValue& value)
@@ -237,66 +221,49 @@ PhysicsParams parsePhysics(const QJsonValue& value)
     const ObjectReader in(value, QStringLiteral("physics"),
                           {"gravity", "mu_slide", "mu_roll", "mu_spin", "ball_ball", "ball_cushion"});
     PhysicsParams p;
-    if (const auto g = in.optionalNumber("gravity")) p.gravity = positive(*g, in.pathOf("gravity"));
-    // The cloth frictions must be positive: with zero friction a ball would slide, roll or spin for
-    // ever and every transition time (|u| / (mu g), ...) would divide by zero.
-    if (const auto mu = in.optionalNumber("mu_slide")) p.muSlide = positive(*mu, in.pathOf("mu_slide"));
-    if (const auto mu = in.optionalNumber("mu_roll")) p.muRoll = positive(*mu, in.pathOf("mu_roll"));
-    if (const auto mu = in.optionalNumber("mu_spin")) p.muSpin = positive(*mu, in.pathOf("mu_spin"));
+    if (const auto g = in.optionalNumber("gravity")) p.gravity = *g;
+    if (const auto mu = in.optionalNumber("mu_slide")) p.muSlide = *mu;
+    if (const auto mu = in.optionalNumber("mu_roll")) p.muRoll = *mu;
+    if (const auto mu = in.optionalNumber("mu_spin")) p.muSpin = *mu;
     if (in.has("ball_ball")) parseBallBall(in.value("ball_ball"), in.pathOf("ball_ball"), p);
     if (in.has("ball_cushion")) parseBallCushion(in.value("ball_cushion"), in.pathOf("ball_cushion"), p);
     return p;
 }
 
-std::vector<Ball> parseBalls(const QJsonValue& value, const Table& table)
+// `preset` gives the radius and mass of a ball that states none (the table kind's balls).
+std::vector<Ball> parseBalls(const QJsonValue& value, const Table& preset)
 {
     const QString path = QStringLiteral("balls");
     if (!value.isArray()) wrongType(path, "an array", value);
     const QJsonArray array = value.toArray();
     std::vector<Ball> balls;
-    QSet<QString> ids;
     for (qsizetype i = 0; i < array.size(); ++i) {
         const ObjectReader in(array[i], element(path, i), {"id", "position", "velocity", "spin", "radius", "mass"});
         Ball ball;
-        const QString id = in.string("id");
-        if (id.isEmpty()) refuse(in.pathOf("id"), QStringLiteral("the id must not be empty"));
-        if (ids.contains(id)) refuse(in.pathOf("id"), QStringLiteral("duplicate id \"%1\"").arg(id));
-        ids.insert(id);
-        ball.id = id.toStdString();
+        ball.id = in.string("id").toStdString();
         ball.state.position = vector<2>(in.required("position"), in.pathOf("position"));
         if (in.has("velocity")) ball.state.velocity = vector<2>(in.value("velocity"), in.pathOf("velocity"));
         if (in.has("spin")) ball.state.spin = vector<3>(in.value("spin"), in.pathOf("spin"));
-        ball.radius = positive(in.optionalNumber("radius").value_or(table.ballRadius), in.pathOf("radius"));
-        ball.mass = positive(in.optionalNumber("mass").value_or(table.ballMass), in.pathOf("mass"));
+        ball.radius = in.optionalNumber("radius").value_or(preset.ballRadius);
+        ball.mass = in.optionalNumber("mass").value_or(preset.ballMass);
         ball.state.motion = classify(ball.state, ball.radius);
         balls.push_back(std::move(ball));
     }
     return balls;
 }
 
-CueStrike parseShot(const QJsonValue& value, const std::vector<Ball>& balls)
+CueStrike parseShot(const QJsonValue& value)
 {
     const ObjectReader in(value, QStringLiteral("shot"),
                           {"ball", "speed", "heading", "elevation", "side", "height", "cue_mass"});
     CueStrike shot;
-    const QString ball = in.string("ball");
-    shot.ball = ball.toStdString();
-    bool found = false;
-    for (const Ball& b : balls) found = found || b.id == shot.ball;
-    if (!found) refuse(in.pathOf("ball"), QStringLiteral("there is no ball \"%1\"").arg(ball));
-    shot.speed = nonNegative(in.number("speed"), in.pathOf("speed"));
+    shot.ball = in.string("ball").toStdString();
+    shot.speed = in.number("speed");
     shot.headingDeg = in.number("heading");
     shot.elevationDeg = in.number("elevation");
-    if (shot.elevationDeg < 0.0 || shot.elevationDeg > 90.0)
-        refuse(in.pathOf("elevation"),
-               QStringLiteral("must lie between 0 and 90 degrees (found %1)").arg(shot.elevationDeg));
     shot.side = in.number("side");
     shot.height = in.number("height");
-    // The tip must meet the ball: the offset from the centre is less than one radius.
-    if (std::hypot(shot.side, shot.height) >= 1.0)
-        refuse(in.pathOf(std::abs(shot.side) >= std::abs(shot.height) ? "side" : "height"),
-               QStringLiteral("the tip misses the ball: side and height must satisfy side² + height² < 1"));
-    if (const auto m = in.optionalNumber("cue_mass")) shot.cueMass = positive(*m, in.pathOf("cue_mass"));
+    if (const auto m = in.optionalNumber("cue_mass")) shot.cueMass = *m;
     return shot;
 }
 
@@ -304,8 +271,8 @@ SimulationSettings parseSimulation(const QJsonValue& value)
 {
     const ObjectReader in(value, QStringLiteral("simulation"), {"frame_dt", "max_time"});
     SimulationSettings s;
-    if (const auto dt = in.optionalNumber("frame_dt")) s.frameDt = positive(*dt, in.pathOf("frame_dt"));
-    if (const auto t = in.optionalNumber("max_time")) s.maxTime = positive(*t, in.pathOf("max_time"));
+    if (const auto dt = in.optionalNumber("frame_dt")) s.frameDt = *dt;
+    if (const auto t = in.optionalNumber("max_time")) s.maxTime = *t;
     return s;
 }
 
@@ -320,11 +287,12 @@ Setup parseDocument(const QJsonValue& document)
     setup.notes = in.optionalString("notes").value_or(QString()).toStdString();
     if (in.has("table")) setup.table = parseTable(in.value("table"));
     if (in.has("physics")) setup.physics = parsePhysics(in.value("physics"));
-    const Table table = makeTable(setup.table);
-    setup.balls = parseBalls(in.required("balls"), table);
-    if (in.has("shot")) setup.shot = parseShot(in.value("shot"), setup.balls);
+    setup.balls = parseBalls(in.required("balls"), makeTable(setup.table.kind));
+    if (in.has("shot")) setup.shot = parseShot(in.value("shot"));
     if (in.has("simulation")) setup.simulation = parseSimulation(in.value("simulation"));
-    if (auto problem = checkGeometry(setup, table)) throw Refusal{*problem};
+    // The values and the geometry: the one validator's first problem, its message as it is.
+    if (const std::optional<cuelab::SetupProblem> problem = firstSetupProblem(setup))
+        refuse(QString::fromStdString(problem->path), QString::fromStdString(problem->message));
     return setup;
 }
 

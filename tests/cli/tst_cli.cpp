@@ -198,7 +198,7 @@ void TestCli::refusedSetups_data()
     for (const char* command : {"validate", "simulate", "state", "trajectory"}) {
         const QString c = QLatin1String(command);
         QTest::newRow(qPrintable(c + " overlap")) << c << overlap
-                                                  << "cuelab-cli: rack.json: balls[1].position: overlaps ball \"7\" by 2.1 mm\n";
+                                                  << "cuelab-cli: rack.json: balls[1].position: ball \"cue\" overlaps ball \"7\" by 2.1 mm\n";
         QTest::newRow(qPrintable(c + " version")) << c << future << "cuelab-cli: future.json: version: version 2";
         QTest::newRow(qPrintable(c + " not JSON")) << c << broken << "cuelab-cli: broken.json: line 2, column 15: not valid JSON";
         QTest::newRow(qPrintable(c + " missing")) << c << dir_.filePath("missing.json")
