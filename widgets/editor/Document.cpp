@@ -1,5 +1,6 @@
 #include "Document.h"
 
+#include "LegalSetup.h"
 #include "SetupFile.h"
 
 #include <QCoreApplication>
@@ -82,6 +83,15 @@ std::optional<Vec2> freeSpot(const Setup& setup, const Table& table, const Vec2&
 
 }  // namespace
 
+QString describeProblem(const SetupProblem& problem)
+{
+    // The validator's message is a sentence that names the ball; the window shows it as one.
+    QString text = QString::fromStdString(problem.message);
+    if (!text.isEmpty()) text[0] = text[0].toUpper();
+    if (!problem.ballId.empty() || problem.path.empty()) return text + QLatin1Char('.');
+    return QStringLiteral("%1: %2.").arg(QString::fromStdString(problem.path), text);
+}
+
 Document::Document(QObject* parent)
     : QObject(parent), undoStack_(new QUndoStack(this)), watcher_(new QFutureWatcher<SimulationOutcome>(this))
 {
@@ -148,9 +158,13 @@ void Document::replace(const Setup& setup, const QString& path, const QString& t
 
 bool Document::validate(const Setup& setup, QString* error) const
 {
-    // The file format's validator is the one authority on what a valid setup is (CONTRACT.md):
-    // an edit is accepted exactly when the setup could be saved and opened again.
-    return io::parseSetup(io::serializeSetup(setup), displayName(), error).has_value();
+    // The one validator of a legal setup (core/setup) is the authority, the same the loader asks:
+    // an edit is accepted exactly when the setup could be saved and opened again. It checks the
+    // values directly (no round trip through the file's text), and its message names the ball.
+    const std::optional<SetupProblem> problem = firstSetupProblem(setup);
+    if (!problem) return true;
+    if (error) *error = describeProblem(*problem);
+    return false;
 }
 
 bool Document::edit(const QString& text, const Setup& after, MergeKey merge)

@@ -17,9 +17,17 @@
 #include <optional>
 
 class QUndoStack;
+
+namespace cuelab {
+struct SetupProblem;
+}
 template <typename T> class QFutureWatcher;
 
 namespace cuelab {
+
+// A validator's problem as the window shows it: "Ball "3" is outside the playing surface (...)."; a
+// problem not about a ball names its field: "physics.mu_roll: must be greater than 0 (found 0).".
+QString describeProblem(const SetupProblem& problem);
 
 struct SimulationOutcome {
     std::shared_ptr<const SimulationResult> result;  // null when the simulator threw

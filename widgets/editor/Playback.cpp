@@ -1,14 +1,15 @@
 #include "Playback.h"
 
+#include "FrameTimes.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace cuelab {
 
 namespace {
-// Two times closer than this count as the same moment when stepping, so that a time that sits on
-// a frame boundary or an event up to rounding steps past it rather than onto it again.
-constexpr double kSameTime = 1e-9;  // s
+// Two times closer than this count as the same moment when stepping (core/setup/FrameTimes.h).
+constexpr double kSameTime = kSameMoment;  // s
 constexpr int kTickMs = 16;         // ms, the repaint rate while playing (about 60 Hz)
 }  // namespace
 
@@ -75,11 +76,9 @@ void Playback::tick()
 void Playback::stepFrames(int n)
 {
     if (n == 0) return;
-    const double position = time_ / frameDt_;  // in frames
-    const double frame = n > 0 ? std::floor(position + kSameTime / frameDt_) + n
-                         : std::ceil(position - kSameTime / frameDt_) + n;
+    // Frame times are core's (frameTime), the same as the rows of `cuelab-cli trajectory`.
     pause();
-    setTime(frame * frameDt_);
+    setTime(frameTime(frameStep(time_, frameDt_, n), frameDt_));
 }
 
 void Playback::nextEvent()

@@ -35,7 +35,8 @@ public slots:
     void pause();
     void togglePlaying();
     // Moves to the n-th frame boundary after (n > 0) or before (n < 0) the current time; frame
-    // boundaries are the multiples of frameDt, so stepping from an event time lands on the grid.
+    // boundaries are core's frameTime(k, frameDt) (the rows of `cuelab-cli trajectory`), so
+    // stepping from an event time lands on the grid.
     void stepFrames(int n);
     void nextEvent();      // the first event strictly after the current time, else the end
     void previousEvent();  // the last event strictly before the current time, else the start
