@@ -1,5 +1,6 @@
 #include "OverlayLabels.h"
 
+#include "LabelLayout.h"
 #include "OverlayLines.h"
 
 #include <QFontMetricsF>
@@ -7,6 +8,7 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -18,12 +20,14 @@ namespace cuelab {
 
 namespace {
 
+constexpr double kSameInstantPx = 90.0;  // logical pixels: equal times closer than this share a label
+
 std::optional<QPointF> toScreen(const LabelFrame& frame, const QVector3D& world)
 {
     const QVector4D clip = frame.viewProjection * QVector4D(world, 1.0f);
     if (clip.w() <= 1e-6f) return std::nullopt;
     const double x = clip.x() / clip.w(), y = clip.y() / clip.w();
-    if (x < -1.2 || x > 1.2 || y < -1.2 || y > 1.2) return std::nullopt;
+    if (x < -1.0 || x > 1.0 || y < -1.0 || y > 1.0) return std::nullopt;  // off screen: no label
     return QPointF((x + 1.0) / 2.0 * frame.logicalSize.width(), (1.0 - y) / 2.0 * frame.logicalSize.height());
 }
 
@@ -37,7 +41,7 @@ struct LabelCache {
     qreal devicePixelRatio = 1.0;
     std::map<std::pair<double, TagStyle>, QImage> tags;
     std::map<std::pair<int, double>, QImage> legends;
-    std::vector<QRectF> taken;  // reused every frame
+    std::map<std::pair<QString, QRgb>, QImage> texts;  // layer labels by text and colour
     std::vector<int> order;     // reused every frame
 };
 
@@ -46,8 +50,9 @@ LabelCache& labelCache(qreal devicePixelRatio)
     static LabelCache cache;
     // Bounded: a new scene brings new times; the cache starts over rather than growing without end.
     constexpr std::size_t kMaxImages = 2048;
-    if (cache.devicePixelRatio != devicePixelRatio || cache.tags.size() + cache.legends.size() > kMaxImages) {
+    if (cache.devicePixelRatio != devicePixelRatio || cache.tags.size() + cache.legends.size() + cache.texts.size() > kMaxImages) {
         cache.tags.clear();
+        cache.texts.clear();
         cache.legends.clear();
         cache.devicePixelRatio = devicePixelRatio;
     }
@@ -99,12 +104,45 @@ const QImage& tagImage(LabelCache& cache, double time, TagStyle style)
     return cache.tags.emplace(key, std::move(image)).first->second;
 }
 
-void paintEventTimes(QPainter& painter, const ViewScene& scene, const LabelFrame& frame, LabelCache& cache)
+QImage textImage(LabelCache& cache, const QString& text, const QColor& ink)
+{
+    const auto key = std::make_pair(text, ink.rgba());
+    auto it = cache.texts.find(key);
+    if (it != cache.texts.end()) return it->second;
+    const QFont font = labelFont();
+    const QFontMetricsF metrics(font);
+    const QSizeF size = metrics.size(Qt::TextSingleLine, text) + QSizeF(8.0, 2.0);
+    QImage image = blankImage(size, cache.devicePixelRatio);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    QPainterPath path;
+    path.addRoundedRect(QRectF(QPointF(0, 0), size), 3.0, 3.0);
+    painter.fillPath(path, QColor(0, 0, 0, 175));
+    painter.setFont(font);
+    QColor opaque = ink;
+    opaque.setAlpha(255);
+    painter.setPen(opaque.lightnessF() < 0.35 ? QColor(Qt::white) : opaque);
+    painter.drawText(QRectF(QPointF(0, 0), size), Qt::AlignCenter, text);
+    painter.end();
+    return cache.texts.emplace(key, std::move(image)).first->second;
+}
+
+struct PendingLabel {
+    QImage image;
+    LabelRequest request;
+};
+
+// Event times, in the label scope, one per instant and neighbourhood on screen.
+void collectEventTimes(const ViewScene& scene, const LabelFrame& frame, LabelCache& cache, std::vector<PendingLabel>& out)
 {
     const SimulationResult& r = *scene.result;
-    std::vector<QRectF>& taken = cache.taken;
+    struct Shown {
+        QString text;
+        QPointF at;
+    };
+    std::vector<Shown> shown;
     std::vector<int>& order = cache.order;
-    taken.clear();
     order.clear();
     // The highlighted event first, so that it always gets its label.
     if (frame.highlightedEvent >= 0 && static_cast<std::size_t>(frame.highlightedEvent) < r.events.size())
@@ -114,21 +152,54 @@ void paintEventTimes(QPainter& painter, const ViewScene& scene, const LabelFrame
     for (int e : order) {
         const Event& ev = r.events[static_cast<std::size_t>(e)];
         if (!isCollision(ev.kind) && ev.kind != EventKind::BallPocket) continue;
+        const bool highlighted = e == frame.highlightedEvent;
+        if (!highlighted) {
+            if (frame.labelScope == BallScope::None) continue;
+            if (frame.labelScope == BallScope::Selected && ev.balls[0] != frame.selectedBall &&
+                ev.balls[1] != frame.selectedBall)
+                continue;
+        }
         const Vec2 p = ev.kind == EventKind::BallPocket ? ev.before[0].position : ev.contactPoint;
         const double radius = ev.balls[0] >= 0 ? r.balls[static_cast<std::size_t>(ev.balls[0])].radius : r.table.ballRadius;
         const std::optional<QPointF> at = toScreen(frame, QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()),
                                                                     static_cast<float>(radius)));
         if (!at) continue;
-        const bool highlighted = e == frame.highlightedEvent;
+        // A chain of contacts at one instant (a rack) reads as one time: label it once per neighbourhood.
+        const QString text = QStringLiteral("%1 s").arg(ev.time, 0, 'f', 3);
+        const bool repeated = std::any_of(shown.begin(), shown.end(), [&](const Shown& s) {
+            return s.text == text && QLineF(s.at, *at).length() < kSameInstantPx;
+        });
+        if (repeated && !highlighted) continue;
+        shown.push_back({text, *at});
         const TagStyle style = highlighted ? TagStyle::Highlighted : (ev.time > frame.time ? TagStyle::Future : TagStyle::Past);
         const QImage& image = tagImage(cache, ev.time, style);
-        const QSizeF size = image.deviceIndependentSize();
-        const QRectF box(*at + QPointF(9.0, -size.height() - 6.0), size);
-        bool overlaps = false;
-        for (const QRectF& t : taken) overlaps = overlaps || t.intersects(box);
-        if (overlaps && !highlighted) continue;
-        taken.push_back(box);
-        painter.drawImage(box.topLeft(), image);
+        out.push_back({image, {*at, image.deviceIndependentSize(), highlighted ? 30 : (style == TagStyle::Past ? 5 : 0), highlighted}});
+    }
+}
+
+// The labels of the view layers, above every event time but the highlighted one.
+void collectLayerLabels(const LabelFrame& frame, LabelCache& cache, std::vector<PendingLabel>& out)
+{
+    if (!frame.layers) return;
+    auto add = [&](const QString& text, const QColor& colour, const QVector3D& where) {
+        if (text.isEmpty()) return;
+        const std::optional<QPointF> at = toScreen(frame, where);
+        if (!at) return;
+        QImage image = textImage(cache, text, colour);
+        out.push_back({image, {*at, image.deviceIndependentSize(), 20, true}});
+    };
+    auto v3 = [](const Vec3& p) { return QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())); };
+    for (const auto& [name, layer] : *frame.layers) {
+        if (!layer.visible) continue;
+        for (const GhostTrack& g : layer.ghosts) {
+            Vec2 p;
+            if (!g.label.isEmpty() && ghostPositionAt(g, frame.time, &p))
+                add(g.label, g.colour, QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(2.0 * g.radius)));
+        }
+        for (const LayerArrow& a : layer.arrows) add(a.label, a.colour, v3(a.to));
+        for (const LayerPolyline& l : layer.polylines)
+            if (!l.points.empty()) add(l.label, l.colour, v3(l.points.back()));
+        for (const LayerMarker& m : layer.markers) add(m.label, m.colour, v3(m.position));
     }
 }
 
@@ -164,9 +235,10 @@ const QImage& legendImage(LabelCache& cache, int length, double speed)
     return cache.legends.emplace(key, std::move(image)).first->second;
 }
 
-// A bar exactly as long on screen (to the pixel) as a velocity arrow drawn at the middle of the
-// table, for the largest round speed whose bar fits in 240 pixels.
-void paintVelocityLegend(QPainter& painter, const ViewScene& scene, const LabelFrame& frame, LabelCache& cache)
+// Where the velocity legend goes: a bar exactly as long on screen (to the pixel) as a velocity arrow
+// drawn at the middle of the table, for the largest round speed whose bar fits in 240 pixels, in the
+// bottom-left corner. Null when the arrows are too short to show.
+const QImage* velocityLegend(const ViewScene& scene, const LabelFrame& frame, LabelCache& cache, QPointF* topLeft)
 {
     const Table& t = scene.result->table;
     const auto z = static_cast<float>(t.ballRadius);
@@ -174,7 +246,7 @@ void paintVelocityLegend(QPainter& painter, const ViewScene& scene, const LabelF
     const std::optional<QPointF> a = toScreen(frame, centre);
     const std::optional<QPointF> b = toScreen(frame, centre + QVector3D(static_cast<float>(kVelocityArrowScale), 0, 0));
     const std::optional<QPointF> c = toScreen(frame, centre + QVector3D(0, static_cast<float>(kVelocityArrowScale), 0));
-    if (!a || !b || !c) return;
+    if (!a || !b || !c) return nullptr;
     const double perMetrePerSecond = std::max(QLineF(*a, *b).length(), QLineF(*a, *c).length());  // pixels
     double speed = 1.0;  // m/s
     for (double candidate : {5.0, 2.0, 1.0, 0.5, 0.2, 0.1, 0.05, 0.02}) {
@@ -182,10 +254,11 @@ void paintVelocityLegend(QPainter& painter, const ViewScene& scene, const LabelF
         if (candidate * perMetrePerSecond <= 240.0) break;
     }
     const int length = static_cast<int>(std::lround(speed * perMetrePerSecond));
-    if (length < 4) return;
+    if (length < 4) return nullptr;
     const QImage& image = legendImage(cache, length, speed);
     const double h = QFontMetricsF(labelFont()).height();
-    painter.drawImage(QPointF(10.0, frame.logicalSize.height() - 2.0 * h - 14.0), image);
+    *topLeft = QPointF(10.0, frame.logicalSize.height() - 2.0 * h - 14.0);
+    return &image;
 }
 
 }  // namespace
@@ -194,8 +267,23 @@ void paintOverlayLabels(QPainter& painter, const ViewScene& scene, const LabelFr
 {
     if (!scene.result) return;
     LabelCache& cache = labelCache(painter.device()->devicePixelRatioF());
-    if (frame.overlays.test(static_cast<std::size_t>(Overlay::EventMarkers))) paintEventTimes(painter, scene, frame, cache);
-    if (frame.overlays.test(static_cast<std::size_t>(Overlay::Velocities))) paintVelocityLegend(painter, scene, frame, cache);
+    std::vector<QRectF> reserved;
+    QPointF legendAt;
+    const QImage* legend = frame.overlays.test(static_cast<std::size_t>(Overlay::Velocities))
+                               ? velocityLegend(scene, frame, cache, &legendAt)
+                               : nullptr;
+    if (legend) reserved.push_back(QRectF(legendAt, legend->deviceIndependentSize()));
+    std::vector<PendingLabel> labels;
+    collectLayerLabels(frame, cache, labels);
+    if (frame.overlays.test(static_cast<std::size_t>(Overlay::EventMarkers))) collectEventTimes(scene, frame, cache, labels);
+    std::vector<LabelRequest> requests;
+    requests.reserve(labels.size());
+    for (const PendingLabel& l : labels) requests.push_back(l.request);
+    const std::vector<std::optional<QRectF>> boxes =
+        layoutLabels(requests, QRectF(QPointF(0, 0), QSizeF(frame.logicalSize)), reserved);
+    for (std::size_t k = 0; k < labels.size(); ++k)
+        if (boxes[k]) painter.drawImage(boxes[k]->topLeft(), labels[k].image);
+    if (legend) painter.drawImage(legendAt, *legend);
 }
 
 }  // namespace cuelab

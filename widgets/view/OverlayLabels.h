@@ -1,8 +1,12 @@
 #pragma once
 // The text of the overlays, painted with QPainter over the GL image: the time of impact next to each
-// event marker and the scale legend of the velocity arrows. Works on a widget after paintGL and on a
-// rendered QImage alike; each label is drawn once into an image and reused (see OverlayLabels.cpp).
+// event marker, the labels of the view layers (ghosts, arrows, polylines, markers) and the scale
+// legend of the velocity arrows. Labels never overlap each other or the legend and stay inside the
+// view (LabelLayout); event times at the same instant close together on screen (a rack's chain) get
+// one label. Works on a widget after paintGL and on a rendered QImage alike; each label is drawn once
+// into an image and reused (see OverlayLabels.cpp).
 
+#include "ViewLayer.h"
 #include "ViewScene.h"
 
 #include <QMatrix4x4>
@@ -20,6 +24,9 @@ struct LabelFrame {
     double time = 0.0;  // s
     std::bitset<kOverlayCount> overlays;
     int highlightedEvent = -1;
+    int selectedBall = -1;
+    BallScope labelScope = BallScope::All;  // whose event times are labelled (the highlighted one always)
+    const ViewLayers* layers = nullptr;     // labels of the layers (may be null)
 };
 
 void paintOverlayLabels(QPainter& painter, const ViewScene& scene, const LabelFrame& frame);

@@ -78,13 +78,16 @@ QVector4D eventColour(EventKind kind)
     }
 }
 
+bool involves(const Event& ev, int ball) { return ball < 0 || ev.balls[0] == ball || ev.balls[1] == ball; }
+
 }  // namespace
 
-void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out)
+void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out, int onlyBall)
 {
     out.clear();
     for (std::size_t i = 0; i < result.balls.size() && i < result.timelines.size(); ++i) {
         const int index = static_cast<int>(i);
+        if (onlyBall >= 0 && index != onlyBall) continue;
         const std::vector<MotionSegment>& timeline = result.timelines[i];
         const BallLook look = ballLook(result.table.kind, result.balls[i].id);
         const QVector3D c = pathColour(look);
@@ -120,12 +123,13 @@ void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out
     }
 }
 
-void buildEventMarkers(const SimulationResult& result, int highlightedEvent, std::vector<LineVertex>& out)
+void buildEventMarkers(const SimulationResult& result, int highlightedEvent, std::vector<LineVertex>& out, int onlyBall)
 {
     out.clear();
     for (std::size_t e = 0; e < result.events.size(); ++e) {
         const Event& ev = result.events[e];
         if (!isCollision(ev.kind) && ev.kind != EventKind::BallPocket) continue;
+        if (!involves(ev, onlyBall) && static_cast<int>(e) != highlightedEvent) continue;
         const double r = ev.balls[0] >= 0 ? ballRadius(result, ev.balls[0]) : result.table.ballRadius;
         const Vec2 point = ev.kind == EventKind::BallPocket ? ev.before[0].position : ev.contactPoint;
         const QVector3D centre = at(point, r);
@@ -140,11 +144,11 @@ void buildEventMarkers(const SimulationResult& result, int highlightedEvent, std
     }
 }
 
-void buildGhostLines(const SimulationResult& result, std::vector<LineVertex>& out)
+void buildGhostLines(const SimulationResult& result, std::vector<LineVertex>& out, int onlyBall)
 {
     out.clear();
     for (const Event& ev : result.events) {
-        if (ev.kind != EventKind::BallBall) continue;
+        if (ev.kind != EventKind::BallBall || !involves(ev, onlyBall)) continue;
         const double r = ballRadius(result, ev.balls[0]);
         const Vec2 a = ev.before[0].position, b = ev.before[1].position;
         const Vec2 dir = (b - a).normalized();
@@ -158,12 +162,12 @@ void buildGhostLines(const SimulationResult& result, std::vector<LineVertex>& ou
     }
 }
 
-std::vector<GhostBall> ghostBalls(const SimulationResult& result)
+std::vector<GhostBall> ghostBalls(const SimulationResult& result, int onlyBall)
 {
     std::vector<GhostBall> ghosts;
     for (std::size_t e = 0; e < result.events.size(); ++e) {
         const Event& ev = result.events[e];
-        if (ev.kind != EventKind::BallBall) continue;
+        if (ev.kind != EventKind::BallBall || !involves(ev, onlyBall)) continue;
         const auto r = static_cast<float>(ballRadius(result, ev.balls[0]));
         ghosts.push_back({at(ev.before[0].position, r), r, static_cast<int>(e)});
     }
@@ -218,26 +222,33 @@ void appendSpinIndicators(const SimulationResult& result, const std::vector<Ball
     }
 }
 
-void appendAimLine(const SimulationResult& result, const CueStrike& shot, std::vector<LineVertex>& out)
+void appendAimLines(const SimulationResult& result, std::vector<LineVertex>& out)
 {
-    const int cue = result.ballIndex(shot.ball);
-    if (cue < 0) return;
-    const BallState& s = result.balls[static_cast<std::size_t>(cue)].state;
-    const double r = ballRadius(result, cue);
-    const double heading = shot.headingDeg * std::numbers::pi / 180.0;
-    const Vec2 d(std::cos(heading), std::sin(heading));
+    for (std::size_t i = 0; i < result.balls.size(); ++i) {
+        const int index = static_cast<int>(i);
+        // The state just after t = 0: after the cue strike, or the file's initial motion.
+        const BallState s = result.timelines.empty() ? result.balls[i].state : result.stateAt(index, 0.0);
+        if (s.motion == MotionState::Pocketed || s.velocity.norm() < 1e-6) continue;
+        appendAimLine(result, index, result.balls[i].state.position, s.velocity.normalized(), out);
+    }
+}
+
+void appendAimLine(const SimulationResult& result, int ball, const Vec2& from, const Vec2& d, std::vector<LineVertex>& out)
+{
+    if (ball < 0 || static_cast<std::size_t>(ball) >= result.balls.size()) return;
+    const double r = ballRadius(result, ball);
     // How far the ball travels straight before it meets a cushion (the rectangle its centre can
     // reach) or another ball (centre distance 2R: ray against a circle).
     double reach = std::numeric_limits<double>::infinity();
     const Table& t = result.table;
     for (int axis = 0; axis < 2; ++axis) {
         const double lo = r, hi = (axis == 0 ? t.length : t.width) - r;
-        if (std::abs(d[axis]) > 1e-12) reach = std::min(reach, ((d[axis] > 0 ? hi : lo) - s.position[axis]) / d[axis]);
+        if (std::abs(d[axis]) > 1e-12) reach = std::min(reach, ((d[axis] > 0 ? hi : lo) - from[axis]) / d[axis]);
     }
     int hit = -1;
     for (std::size_t j = 0; j < result.balls.size(); ++j) {
-        if (static_cast<int>(j) == cue) continue;
-        const Vec2 m = result.balls[j].state.position - s.position;
+        if (static_cast<int>(j) == ball) continue;
+        const Vec2 m = result.balls[j].state.position - from;
         const double contact = r + result.balls[j].radius;
         const double along = m.dot(d);
         const double offset2 = m.squaredNorm() - along * along;
@@ -252,11 +263,26 @@ void appendAimLine(const SimulationResult& result, const CueStrike& shot, std::v
     const QVector4D white(1.0f, 1.0f, 1.0f, 0.9f);
     const double dash = 0.025, gap = 0.015;
     for (double a = r; a < reach; a += dash + gap)
-        segment(out, at(s.position + a * d, r), at(s.position + std::min(a + dash, reach) * d, r), white);
+        segment(out, at(from + a * d, r), at(from + std::min(a + dash, reach) * d, r), white);
     if (hit >= 0) {
-        const QVector3D ghost = at(s.position + reach * d, r);
+        const QVector3D ghost = at(from + reach * d, r);
         arc(out, ghost, QVector3D(1, 0, 0), QVector3D(0, 1, 0), static_cast<float>(r), 0.0, 2.0 * std::numbers::pi, 32, white);
     }
+}
+
+void appendVelocityDragArrow(const SimulationResult& result, int ball, const Vec2& from, const Vec2& velocity,
+                             std::vector<LineVertex>& out)
+{
+    if (ball < 0 || static_cast<std::size_t>(ball) >= result.balls.size()) return;
+    const double r = ballRadius(result, ball);
+    const QVector3D a = at(from, r + 0.003), b = at(from + kVelocityArrowScale * velocity, r + 0.003);
+    if (velocity.norm() < 1e-6) {
+        ring(out, a, 0.35f * static_cast<float>(r), QVector4D(1.0f, 0.55f, 0.1f, 1.0f));
+        return;
+    }
+    const Vec2 d = velocity.normalized();
+    arrow(out, a, b, QVector3D(static_cast<float>(-d.y()), static_cast<float>(d.x()), 0.0f), QVector4D(1.0f, 0.55f, 0.1f, 1.0f));
+    appendAimLine(result, ball, from, d, out);
 }
 
 void appendSelectionRing(const SimulationResult& result, const std::vector<BallState>& states, int ball,

@@ -33,24 +33,35 @@ struct GhostBall {
     int event = -1;    // index into the result's events
 };
 
+// `onlyBall` below: -1 = every ball; otherwise only that ball's path, or the events it takes part in.
+
 // Every ball's path as line segments (pairs of vertices), coloured by ball, sampled every few
 // milliseconds of each motion segment (straight segments, like rolling, take two points).
-void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out);
+void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out, int onlyBall = -1);
 // A ring at the contact point of every collision and pocketing, coloured by kind; the highlighted
-// event gets a larger, yellow double ring.
-void buildEventMarkers(const SimulationResult& result, int highlightedEvent, std::vector<LineVertex>& out);
+// event (always drawn) gets a larger, yellow double ring.
+void buildEventMarkers(const SimulationResult& result, int highlightedEvent, std::vector<LineVertex>& out,
+                       int onlyBall = -1);
 // For every ball-ball event: the line of centres (extended past the object ball) and the contact
 // normal at the contact point.
-void buildGhostLines(const SimulationResult& result, std::vector<LineVertex>& out);
-std::vector<GhostBall> ghostBalls(const SimulationResult& result);
+void buildGhostLines(const SimulationResult& result, std::vector<LineVertex>& out, int onlyBall = -1);
+std::vector<GhostBall> ghostBalls(const SimulationResult& result, int onlyBall = -1);
 
 void appendVelocityArrows(const SimulationResult& result, const std::vector<BallState>& states,
                           std::vector<LineVertex>& out);
 void appendSpinIndicators(const SimulationResult& result, const std::vector<BallState>& states,
                           std::vector<LineVertex>& out);
-// The aim line from the struck ball along the heading to the first ball or cushion it would meet,
-// dashed, with the outline of the ghost ball at a ball contact.
-void appendAimLine(const SimulationResult& result, const CueStrike& shot, std::vector<LineVertex>& out);
+// An aim line from every ball that moves at the start, along the direction it really starts in (the
+// cue strike's outcome, or a file's initial velocity), to the first ball or cushion it would meet,
+// dashed, with the outline of the ghost ball at a ball contact. A sliding ball curves away from this
+// line: its future path shows where it really goes.
+void appendAimLines(const SimulationResult& result, std::vector<LineVertex>& out);
+// The same from `ball` at `from` along the unit `direction`.
+void appendAimLine(const SimulationResult& result, int ball, const Vec2& from, const Vec2& direction,
+                   std::vector<LineVertex>& out);
+// The arrow of a velocity being dragged in the view: from the ball at `from` to from + scale v.
+void appendVelocityDragArrow(const SimulationResult& result, int ball, const Vec2& from, const Vec2& velocity,
+                             std::vector<LineVertex>& out);
 void appendSelectionRing(const SimulationResult& result, const std::vector<BallState>& states, int ball,
                          std::vector<LineVertex>& out);
 

@@ -17,6 +17,12 @@ namespace cuelab {
 bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset, QSize size, QImage* out,
                         QString* error)
 {
+    return SceneImageRenderer().render(scene, time, preset, size, out, error);
+}
+
+bool SceneImageRenderer::render(const ViewScene& scene, double time, CameraPreset preset, QSize size, QImage* out,
+                                QString* error) const
+{
     auto fail = [error](const QString& message) {
         if (error) *error = message;
         return false;
@@ -59,6 +65,7 @@ bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset
                 OrbitCamera camera;
                 camera.setPose(OrbitCamera::presetPose(preset, presetFrameFor(scene, aspect)));
                 renderer.setScene(scene);
+                renderer.setLayers(layers_);
                 RenderFrame frame;
                 frame.viewProjection = camera.projection(aspect) * camera.viewMatrix();
                 frame.eye = camera.eye();
@@ -66,12 +73,15 @@ bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset
                 frame.viewportPixels = size;
                 frame.pixelAngle = pixelAngle(size.height());
                 frame.time = std::clamp(time, 0.0, std::max(scene.result->endTime, 0.0));
-                frame.overlays = defaultOverlays();
+                frame.overlays = overlays_;
+                frame.selectedBall = selectedBall_;
+                frame.pathScope = pathScope_;
                 renderer.render(frame);
                 *out = fbo.toImage().convertToFormat(QImage::Format_ARGB32_Premultiplied);
                 QPainter painter(out);
                 paintOverlayLabels(painter, scene,
-                                   LabelFrame{frame.viewProjection, size, frame.time, frame.overlays, -1});
+                                   LabelFrame{frame.viewProjection, size, frame.time, frame.overlays, -1, selectedBall_,
+                                              labelScope_, &layers_});
                 painter.end();
                 ok = true;
             } else if (error) {

@@ -2,17 +2,43 @@
 // Renders a scene to an image without a window (QOffscreenSurface + framebuffer object), for
 // `cuelab --screenshot`, documentation and tests. Needs a QGuiApplication and OpenGL 3.3 core.
 
+#include "ViewLayer.h"
 #include "ViewScene.h"
 
 #include <QImage>
 #include <QSize>
 #include <QString>
 
+#include <bitset>
+
 namespace cuelab {
 
-// Draws `scene` at `time` (s) from the camera preset, with the overlays that the view shows by
-// default, into *out (size pixels). On failure returns false and sets *error to a message a person
-// can act on.
+// The offscreen counterpart of TableView: the same renderer, layers and display switches, drawn on
+// demand into an image. Creates its OpenGL context for each render() call (a screenshot is rare).
+class SceneImageRenderer {
+public:
+    void setLayer(const QString& name, ViewLayer layer) { layers_[name] = std::move(layer); }
+    void clearLayer(const QString& name) { layers_.erase(name); }
+    const ViewLayers& layers() const { return layers_; }
+    void setOverlays(std::bitset<kOverlayCount> overlays) { overlays_ = overlays; }
+    void setSelectedBall(int index) { selectedBall_ = index; }  // -1 = none
+    void setPathScope(BallScope scope) { pathScope_ = scope; }
+    void setLabelScope(BallScope scope) { labelScope_ = scope; }
+
+    // Draws `scene` at `time` (s) from the camera preset into *out (size pixels). On failure returns
+    // false and sets *error to a message a person can act on.
+    bool render(const ViewScene& scene, double time, CameraPreset preset, QSize size, QImage* out,
+                QString* error) const;
+
+private:
+    ViewLayers layers_;
+    std::bitset<kOverlayCount> overlays_ = defaultOverlays();
+    int selectedBall_ = -1;
+    BallScope pathScope_ = BallScope::All;
+    BallScope labelScope_ = BallScope::All;
+};
+
+// A SceneImageRenderer with no layers and the overlays that the view shows by default.
 bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset, QSize size, QImage* out,
                         QString* error);
 

@@ -1,8 +1,10 @@
 #include "TableView.h"
 
-#include "BallPlacement.h"
+#include "CameraAnimator.h"
+#include "FrameRateMeter.h"
 #include "OverlayLabels.h"
 #include "SceneFraming.h"
+#include "TableInteraction.h"
 #include "TableRenderer.h"
 
 #include <QMouseEvent>
@@ -10,24 +12,29 @@
 #include <QPainter>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
-#include <QtMath>
 
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 namespace cuelab {
 
 namespace {
 
-constexpr float kOrbitDegPerPixel = 0.3f;    // degrees of orbit per pixel of mouse travel
-constexpr float kPresetTransitionS = 0.6f;   // s
-constexpr double kDragThresholdPx = 3.0;     // pixels before a press becomes a drag
-constexpr int kFpsReportIntervalMs = 500;  // ms between reports while animating
-constexpr int kIdleGapMs = 500;            // ms: frames further apart do not make an animation
-constexpr int kSettleMs = 100;             // ms after the camera stops before the antialiased frame
+constexpr float kPresetTransitionS = 0.6f;  // s
+constexpr int kSettleMs = 100;              // ms after the camera stops before the antialiased frame
+
+bool sameTable(const ViewScene& a, const ViewScene& b)
+{
+    return a.result && b.result && a.result->table.kind == b.result->table.kind &&
+           a.result->table.length == b.result->table.length && a.result->table.width == b.result->table.width;
+}
 
 }  // namespace
 
-TableView::TableView(QWidget* parent) : QOpenGLWidget(parent)
+TableView::TableView(QWidget* parent)
+    : QOpenGLWidget(parent), interaction_(std::make_unique<TableInteraction>(*this)),
+      animator_(new CameraAnimator(camera_, this)), meter_(new FrameRateMeter(this))
 {
     // OpenGL 3.3 core whatever the application's default, and single-sampled: the balls and lines
     // antialias themselves in their shaders and the renderer multisamples the table once into its
@@ -42,30 +49,29 @@ TableView::TableView(QWidget* parent) : QOpenGLWidget(parent)
     overlays_ = defaultOverlays();
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(200, 120);
-    cameraTimer_.setInterval(16);
-    connect(&cameraTimer_, &QTimer::timeout, this, &TableView::stepCameraAnimation);
+    connect(animator_, &CameraAnimator::stepped, this, qOverload<>(&QWidget::update));
+    connect(meter_, &FrameRateMeter::framesPerSecond, this, &TableView::framesPerSecond);
     settleTimer_.setSingleShot(true);
     settleTimer_.setInterval(kSettleMs);
     connect(&settleTimer_, &QTimer::timeout, this, qOverload<>(&QWidget::update));
-    idleTimer_.setSingleShot(true);
-    idleTimer_.setInterval(kIdleGapMs);
-    connect(&idleTimer_, &QTimer::timeout, this, &TableView::animationStopped);
 }
 
 TableView::~TableView() { releaseGl(); }
 
 void TableView::setScene(ViewScene scene)
 {
-    const bool tableChanged = !scene_.result || !scene.result || scene_.result->table.kind != scene.result->table.kind ||
-                              scene_.result->table.length != scene.result->table.length ||
-                              scene_.result->table.width != scene.result->table.width;
+    const bool tableChanged = !sameTable(scene_, scene);
     scene_ = std::move(scene);
     if (renderer_) renderer_->setScene(scene_);
     const double end = scene_.result ? scene_.result->endTime : 0.0;
     time_ = std::clamp(time_, 0.0, std::max(end, 0.0));
     if (selectedBall_ >= 0 && (!scene_.result || static_cast<std::size_t>(selectedBall_) >= scene_.result->balls.size()))
         selectedBall_ = -1;
-    if (cameraAutomatic_ && tableChanged) camera_.setPose(OrbitCamera::presetPose(CameraPreset::Top, presetFrameFor(scene_, aspect())));
+    if (scene_.result && setupBalls_.size() != scene_.result->balls.size()) setupBalls_.clear();
+    if (renderer_) renderer_->setSetupBalls(setupBalls_);
+    if (fittedPreset_ && tableChanged)
+        if (const std::optional<CameraPose> pose = presetPose()) camera_.setPose(*pose);
+    followBall();
     update();
 }
 
@@ -75,6 +81,7 @@ void TableView::setTime(double seconds)
     const double t = std::clamp(seconds, 0.0, end);
     if (t == time_) return;
     time_ = t;
+    followBall();
     update();
 }
 
@@ -82,6 +89,7 @@ void TableView::setSelectedBall(int index)
 {
     if (index == selectedBall_) return;
     selectedBall_ = index;
+    followBall();
     update();
 }
 
@@ -101,24 +109,133 @@ void TableView::setOverlayVisible(Overlay overlay, bool visible)
 
 bool TableView::overlayVisible(Overlay overlay) const { return overlays_.test(static_cast<std::size_t>(overlay)); }
 
+void TableView::setPathScope(BallScope scope)
+{
+    if (scope == pathScope_) return;
+    pathScope_ = scope;
+    update();
+    emit displayModesChanged();
+}
+
+void TableView::setLabelScope(BallScope scope)
+{
+    if (scope == labelScope_) return;
+    labelScope_ = scope;
+    update();
+    emit displayModesChanged();
+}
+
+std::optional<CameraPose> TableView::presetPose() const
+{
+    if (!fittedPreset_) return std::nullopt;
+    return OrbitCamera::presetPose(*fittedPreset_, presetFrameFor(scene_, aspect()));
+}
+
 void TableView::setCameraPreset(CameraPreset preset, bool animated)
 {
-    cameraAutomatic_ = preset == CameraPreset::Top && !animated;
-    const CameraPose to = OrbitCamera::presetPose(preset, presetFrameFor(scene_, aspect()));
-    if (animated) {
-        camera_.transitionTo(to, kPresetTransitionS);
-        cameraClock_.start();
-        cameraTimer_.start();
-    } else {
-        camera_.setPose(to);
-    }
+    fittedPreset_ = preset;
+    follow_ = false;
+    animator_->moveTo(*presetPose(), animated ? kPresetTransitionS : 0.0f);
     update();
 }
 
-void TableView::stepCameraAnimation()
+void TableView::cameraMovedByHand()
 {
-    const float dt = static_cast<float>(cameraClock_.restart()) / 1000.0f;
-    if (!camera_.advance(dt)) cameraTimer_.stop();
+    fittedPreset_.reset();
+    if (follow_) {
+        follow_ = false;
+        emit displayModesChanged();
+    }
+}
+
+void TableView::setFollowSelectedBall(bool follow)
+{
+    if (follow == follow_) return;
+    follow_ = follow;
+    if (follow_) fittedPreset_.reset();
+    followBall();
+    update();
+    emit displayModesChanged();
+}
+
+// Keeps the selected ball under the camera's target, at once (playback moves it every frame).
+void TableView::followBall()
+{
+    if (!follow_ || !scene_.result || selectedBall_ < 0 ||
+        static_cast<std::size_t>(selectedBall_) >= scene_.result->balls.size())
+        return;
+    const BallState s = scene_.result->timelines.empty() ? scene_.result->balls[static_cast<std::size_t>(selectedBall_)].state
+                                                         : scene_.result->stateAt(selectedBall_, time_);
+    if (s.motion == MotionState::Pocketed) return;
+    animator_->stop();
+    camera_.centreOn(QVector3D(static_cast<float>(s.position.x()), static_cast<float>(s.position.y()), 0.0f));
+}
+
+void TableView::zoomToSelection(bool animated)
+{
+    if (!scene_.result) return;
+    const SimulationResult& r = *scene_.result;
+    if (selectedBall_ < 0 || static_cast<std::size_t>(selectedBall_) >= r.balls.size()) {
+        setCameraPreset(CameraPreset::Top, animated);
+        return;
+    }
+    // The box around the ball's whole path, sampled at its segment starts and in between.
+    const auto i = static_cast<std::size_t>(selectedBall_);
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+    auto include = [&](const Vec2& p) {
+        x0 = std::min(x0, p.x());
+        x1 = std::max(x1, p.x());
+        y0 = std::min(y0, p.y());
+        y1 = std::max(y1, p.y());
+    };
+    include(r.balls[i].state.position);
+    if (i < r.timelines.size()) {
+        const double end = std::max(r.endTime, 0.0);
+        for (int k = 0; k <= 200; ++k) {
+            const BallState s = r.stateAt(selectedBall_, end * k / 200.0);
+            if (s.motion == MotionState::Pocketed) break;
+            include(s.position);
+        }
+    }
+    const double margin = 4.0 * r.balls[i].radius;
+    const double w = x1 - x0 + 2.0 * margin, h = y1 - y0 + 2.0 * margin;
+    CameraPose to = camera_.pose();
+    to.target = QVector3D(static_cast<float>((x0 + x1) / 2.0), static_cast<float>((y0 + y1) / 2.0), 0.0f);
+    // Far enough that the box fits the height and the width of the view, seen from the camera's
+    // direction (exact from straight above, close enough from an angle).
+    const double halfFov = OrbitCamera::kFieldOfViewDeg / 2.0 * std::numbers::pi / 180.0;
+    const double fit = std::max(h, w / aspect()) / (2.0 * std::tan(halfFov));
+    to.distance = static_cast<float>(std::max(fit * 1.1, 0.3));
+    fittedPreset_.reset();
+    animator_->moveTo(to, animated ? kPresetTransitionS : 0.0f);
+    update();
+}
+
+void TableView::setSetupBalls(std::vector<Ball> balls)
+{
+    setupBalls_ = std::move(balls);
+    if (renderer_) renderer_->setSetupBalls(setupBalls_);
+    update();
+}
+
+const std::vector<Ball>& TableView::setupBalls() const
+{
+    static const std::vector<Ball> none;
+    if (!scene_.result) return none;
+    return setupBalls_.size() == scene_.result->balls.size() ? setupBalls_ : scene_.result->balls;
+}
+
+void TableView::setLayer(const QString& name, ViewLayer layer)
+{
+    layers_[name] = std::move(layer);
+    if (renderer_) renderer_->setLayers(layers_);
+    update();
+}
+
+void TableView::clearLayer(const QString& name)
+{
+    if (layers_.erase(name) == 0) return;
+    if (renderer_) renderer_->setLayers(layers_);
     update();
 }
 
@@ -159,6 +276,13 @@ std::optional<QVector3D> TableView::clothPointUnder(const QPointF& widgetPos, fl
     return ray.origin + t * ray.direction;
 }
 
+std::optional<QPointF> TableView::widgetPointOf(const QVector3D& world) const
+{
+    const std::optional<QPointF> ndc = camera_.project(world, aspect());
+    if (!ndc) return std::nullopt;
+    return QPointF((ndc->x() + 1.0) / 2.0 * width(), (1.0 - ndc->y()) / 2.0 * height());
+}
+
 void TableView::initializeGL()
 {
     initializeOpenGLFunctions();
@@ -172,6 +296,8 @@ void TableView::initializeGL()
         return;
     }
     renderer_->setScene(scene_);
+    renderer_->setLayers(layers_);
+    renderer_->setSetupBalls(setupBalls_);
 }
 
 void TableView::releaseGl()
@@ -185,7 +311,9 @@ void TableView::releaseGl()
 
 void TableView::resizeGL(int, int)
 {
-    if (cameraAutomatic_) camera_.setPose(OrbitCamera::presetPose(CameraPreset::Top, presetFrameFor(scene_, aspect())));
+    // A preset the user has not moved away from stays fitted (during its transition too).
+    if (const std::optional<CameraPose> pose = presetPose())
+        animator_->moveTo(*pose, animator_->running() ? kPresetTransitionS / 2.0f : 0.0f);
 }
 
 void TableView::paintGL()
@@ -200,11 +328,14 @@ void TableView::paintGL()
     frame.eye = camera_.eye();
     frame.cameraUp = camera_.up();
     frame.viewportPixels = size() * devicePixelRatio();
+    frame.devicePixelRatio = static_cast<float>(devicePixelRatioF());
     frame.pixelAngle = pixelAngle(frame.viewportPixels.height());
     frame.time = time_;
     frame.overlays = overlays_;
     frame.selectedBall = selectedBall_;
     frame.highlightedEvent = highlightedEvent_;
+    frame.pathScope = pathScope_;
+    renderer_->setVelocityDrag(interaction_->velocityDrag());
     renderer_->render(frame);
     // While the camera moves the table is drawn without its antialiased cache; once it has been still
     // for kSettleMs, one more frame draws it antialiased.
@@ -214,143 +345,18 @@ void TableView::paintGL()
     }
 
     QPainter painter(this);
-    paintOverlayLabels(painter, scene_, LabelFrame{frame.viewProjection, size(), time_, overlays_, highlightedEvent_});
+    paintOverlayLabels(painter, scene_,
+                       LabelFrame{frame.viewProjection, size(), time_, overlays_, highlightedEvent_, selectedBall_,
+                                  labelScope_, &layers_});
     painter.end();
-    countFrame();
+    meter_->frameDrawn();
 }
 
-// A frame drawn within kIdleGapMs of the previous one continues a run of animation; the rate counts
-// only the intervals between the frames of a run, never the idle time before it.
-void TableView::countFrame()
-{
-    if (!idleTimer_.isActive() || !fpsClock_.isValid()) {
-        fpsClock_.start();
-        framesSinceReport_ = 0;
-    } else {
-        ++framesSinceReport_;
-        const qint64 elapsedMs = fpsClock_.elapsed();
-        if (elapsedMs >= kFpsReportIntervalMs) {
-            emit framesPerSecond(1000.0 * framesSinceReport_ / static_cast<double>(elapsedMs));
-            rateReported_ = true;
-            framesSinceReport_ = 0;
-            fpsClock_.restart();
-        }
-    }
-    idleTimer_.start();
-}
-
-void TableView::animationStopped()
-{
-    fpsClock_.invalidate();
-    if (!rateReported_) return;
-    rateReported_ = false;
-    emit framesPerSecond(0.0);
-}
-
-void TableView::mousePressEvent(QMouseEvent* event)
-{
-    pressPos_ = lastPos_ = event->position();
-    dragMoved_ = false;
-    dragBall_ = -1;
-    dragGrabOffset_.reset();
-    const bool panButton = event->button() == Qt::RightButton || event->button() == Qt::MiddleButton ||
-                           (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier));
-    if (panButton) {
-        dragMode_ = DragMode::Pan;
-        return;
-    }
-    if (event->button() != Qt::LeftButton) return;
-    const int ball = pickBall(event->position());
-    if (ball >= 0) {
-        emit ballClicked(ball);
-        // Balls move only where they are set up: at t = 0. Later a press on a ball selects it and
-        // a drag orbits.
-        if (time_ <= 0.0 && scene_.result) {
-            dragMode_ = DragMode::Ball;
-            dragBall_ = ball;
-            const auto r = static_cast<float>(scene_.result->balls[static_cast<std::size_t>(ball)].radius);
-            const Vec2 c = scene_.result->balls[static_cast<std::size_t>(ball)].state.position;
-            if (const std::optional<QVector3D> p = clothPointUnder(event->position(), r))
-                dragGrabOffset_ = *p - QVector3D(static_cast<float>(c.x()), static_cast<float>(c.y()), r);
-            return;
-        }
-    }
-    dragMode_ = DragMode::Orbit;
-}
-
-void TableView::mouseMoveEvent(QMouseEvent* event)
-{
-    const QPointF pos = event->position();
-    if (!dragMoved_ && QLineF(pos, pressPos_).length() < kDragThresholdPx) return;
-    dragMoved_ = true;
-    switch (dragMode_) {
-    case DragMode::None: break;
-    case DragMode::Orbit:
-        cameraAutomatic_ = false;
-        camera_.orbit(-kOrbitDegPerPixel * static_cast<float>(pos.x() - lastPos_.x()),
-                      kOrbitDegPerPixel * static_cast<float>(pos.y() - lastPos_.y()));
-        update();
-        break;
-    case DragMode::Pan:
-        cameraAutomatic_ = false;
-        camera_.pan(toNdc(lastPos_), toNdc(pos), aspect());
-        update();
-        break;
-    case DragMode::Ball: {
-        if (!scene_.result || dragBall_ < 0 || static_cast<std::size_t>(dragBall_) >= scene_.result->balls.size()) break;
-        const auto r = static_cast<float>(scene_.result->balls[static_cast<std::size_t>(dragBall_)].radius);
-        const std::optional<QVector3D> p = clothPointUnder(pos, r);
-        if (!p) break;
-        const QVector3D centre = *p - dragGrabOffset_.value_or(QVector3D());
-        if (const std::optional<Vec2> placed =
-                constrainedPlacement(*scene_.result, dragBall_, Vec2(centre.x(), centre.y())))
-            emit ballDragged(dragBall_, placed->x(), placed->y());
-        break;
-    }
-    }
-    lastPos_ = pos;
-}
-
-void TableView::mouseReleaseEvent(QMouseEvent* event)
-{
-    if (dragMode_ == DragMode::Ball && dragMoved_) emit ballDragFinished(dragBall_);
-    if (dragMode_ == DragMode::Orbit && !dragMoved_ && event->button() == Qt::LeftButton && pickBall(event->position()) < 0)
-        emit ballClicked(-1);
-    dragMode_ = DragMode::None;
-    dragBall_ = -1;
-}
-
-void TableView::mouseDoubleClickEvent(QMouseEvent* event)
-{
-    // Centre on what was double-clicked: a ball, or the cloth.
-    std::optional<QVector3D> point;
-    const int ball = pickBall(event->position());
-    if (ball >= 0 && scene_.result) {
-        const BallState s = scene_.result->stateAt(ball, time_);
-        point = QVector3D(static_cast<float>(s.position.x()), static_cast<float>(s.position.y()), 0.0f);
-    } else {
-        point = clothPointUnder(event->position(), 0.0f);
-    }
-    if (!point) return;
-    cameraAutomatic_ = false;
-    CameraPose to = camera_.pose();
-    to.target = *point;
-    camera_.transitionTo(to, 0.35f);
-    cameraClock_.start();
-    cameraTimer_.start();
-}
-
-void TableView::wheelEvent(QWheelEvent* event)
-{
-    const double steps = event->angleDelta().y() / 120.0;
-    if (steps == 0.0) return;
-    cameraAutomatic_ = false;
-    const float factor = static_cast<float>(std::pow(0.88, steps));
-    const QVector3D point = clothPointUnder(event->position(), 0.0f).value_or(camera_.target());
-    camera_.zoomTowards(point, factor);
-    update();
-    event->accept();
-}
+void TableView::mousePressEvent(QMouseEvent* event) { interaction_->press(event); }
+void TableView::mouseMoveEvent(QMouseEvent* event) { interaction_->move(event); }
+void TableView::mouseReleaseEvent(QMouseEvent* event) { interaction_->release(event); }
+void TableView::mouseDoubleClickEvent(QMouseEvent* event) { interaction_->doubleClick(event); }
+void TableView::wheelEvent(QWheelEvent* event) { interaction_->wheel(event); }
 
 float TableView::aspect() const
 {

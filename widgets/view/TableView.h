@@ -1,12 +1,17 @@
 #pragma once
 // The table view: an OpenGL 3.3 core widget that draws a simulation result at a time, with an orbit
-// camera, switchable overlays and ball picking/dragging. Drawing is delegated to TableRenderer (shared
-// with the offscreen screenshot); this class owns the interaction and the widget's state.
+// camera, switchable overlays, named layers, and ball picking, dragging and velocity setting.
+// The widget owns the state and the GL resources; its jobs are in classes of their own:
+//   TableRenderer     the drawing (shared with the offscreen SceneImageRenderer);
+//   TableInteraction  the mouse state machine (select, drag a ball, drag a velocity, orbit, pan, zoom);
+//   CameraAnimator    smooth camera moves;
+//   FrameRateMeter    the frame-rate reading.
 
 #include "OrbitCamera.h"
+#include "OverlayPass.h"
+#include "ViewLayer.h"
 #include "ViewScene.h"
 
-#include <QElapsedTimer>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLWidget>
 #include <QPointF>
@@ -15,9 +20,13 @@
 #include <bitset>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace cuelab {
 
+class CameraAnimator;
+class FrameRateMeter;
+class TableInteraction;
 class TableRenderer;
 
 class TableView : public QOpenGLWidget, protected QOpenGLExtraFunctions {
@@ -36,28 +45,68 @@ public:
     int highlightedEvent() const { return highlightedEvent_; }
     void setOverlayVisible(Overlay overlay, bool visible);
     bool overlayVisible(Overlay overlay) const;
-    void setCameraPreset(CameraPreset preset, bool animated = true);
     OrbitCamera& camera() { return camera_; }
     const OrbitCamera& camera() const { return camera_; }
 
+    // Busy shots. Whose paths, trails, event markers and ghost constructions are drawn, and whose
+    // event times are labelled: every ball's (the default), the selected ball's only, or none (the
+    // highlighted event keeps its marker and label). Each setter emits displayModesChanged() when
+    // the value changes.
+    void setPathScope(BallScope scope);
+    BallScope pathScope() const { return pathScope_; }
+    void setLabelScope(BallScope scope);
+    BallScope labelScope() const { return labelScope_; }
+
+    // Cameras. A preset (animated or not) stays fitted to the view when it is resized, until the user
+    // moves the camera. Following keeps the selected ball at the centre of the view as time runs
+    // (the camera's direction and distance kept); moving the camera by hand stops it.
+    // zoomToSelection frames the selected ball's whole path (or the table when none is selected).
+    void setCameraPreset(CameraPreset preset, bool animated = true);
+    void setFollowSelectedBall(bool follow);
+    bool followSelectedBall() const { return follow_; }
+    void zoomToSelection(bool animated = true);
+
+    // The balls of the document's current setup (t = 0), which a drag must keep clear of and the cue
+    // stick is drawn around. The last simulation result lags behind while a re-simulation is pending,
+    // so the editor tells the view the setup whenever it changes; until it does (or when the count
+    // differs from the result's), the result's balls are used.
+    void setSetupBalls(std::vector<Ball> balls);
+    const std::vector<Ball>& setupBalls() const;
+
+    // Named layers drawn over the simulation's overlays (ViewLayer.h): setLayer replaces the layer of
+    // that name, clearLayer removes it (no-op when there is none). Kept across setScene.
+    void setLayer(const QString& name, ViewLayer layer);
+    void clearLayer(const QString& name);
+    const ViewLayers& layers() const { return layers_; }
+
     // The ball under a point of the widget (ray-sphere against the balls at time()); -1 = none.
     int pickBall(const QPointF& widgetPos) const;
+    // Where a point of the widget lands on the horizontal plane at `height` (m); nullopt when the
+    // ray misses it.
+    std::optional<QVector3D> clothPointUnder(const QPointF& widgetPos, float height) const;
+    // Where a point of the table lands in the widget (logical pixels); nullopt behind the eye.
+    std::optional<QPointF> widgetPointOf(const QVector3D& world) const;
     // The first OpenGL error met while painting the last frame (GL_NO_ERROR = 0 when none).
     unsigned int lastGlError() const { return lastGlError_; }
 
 signals:
     void ballClicked(int index);                      // -1 when empty cloth was clicked
-    void ballDragged(int index, double x, double y);  // m: the ball's setup (t = 0) position while
-                                                      // dragging, on the playing surface, not
-                                                      // overlapping another ball
+    // m: the ball's setup (t = 0) position while dragging: the legal spot nearest to the cursor
+    // (BallPlacement: on the cloth, off cushions, jaws, pockets and the other setup balls).
+    void ballDragged(int index, double x, double y);
     void ballDragFinished(int index);
-    // The rate at which the view drew frames while it was redrawn continuously (playback, a camera
-    // transition, orbiting, dragging), over the last half second of that run: frames per second
-    // delivered, bounded both by the renderer and by how often frames were asked for (playback's
-    // timer), not the renderer's capacity (cuelab-viewbench measures that). A frame more than half a
-    // second after the previous one starts a new run, and a single repaint (an edit, a selection) is
-    // no run at all: an idle view reports nothing. When a run that was reported ends (no frame for
-    // half a second), 0 is emitted once: "not animating", for the status bar to clear its reading.
+    // After a drop, when the ball could not go where the cursor was (another ball, a cushion or a
+    // pocket is there) and was put on the nearest legal spot: a sentence for the status bar, e.g.
+    // "Ball "cue" placed 9 mm from the cursor, on the nearest free spot: the spot under it overlaps
+    // ball "1".".
+    void ballPlacementAdjusted(int index, const QString& message);
+    // m/s: a ball's initial (setup) velocity set by dragging its arrow at t = 0: grab the head of a
+    // velocity arrow, or Ctrl+drag from a ball (at rest or not). Emitted at every move, then
+    // ballVelocityDragFinished once. Not for the ball the shot strikes (its motion is the shot's).
+    void ballVelocityDragged(int index, double vx, double vy);
+    void ballVelocityDragFinished(int index);
+    void displayModesChanged();  // path scope, label scope or following changed
+    // See FrameRateMeter: the rate of a run of continuous redrawing; 0 once when the run ends.
     void framesPerSecond(double fps);
 
 protected:
@@ -71,41 +120,34 @@ protected:
     void wheelEvent(QWheelEvent* event) override;
 
 private:
+    friend class TableInteraction;
+
     float aspect() const;
     QPointF toNdc(const QPointF& widgetPos) const;
-    std::optional<QVector3D> clothPointUnder(const QPointF& widgetPos, float height) const;
     void releaseGl();
-    void stepCameraAnimation();
-    void countFrame();
-    void animationStopped();
+    void cameraMovedByHand();  // the user took the camera: no refitting, no following
+    void followBall();
+    std::optional<CameraPose> presetPose() const;
 
     ViewScene scene_;
     double time_ = 0.0;  // s
     int selectedBall_ = -1;
     int highlightedEvent_ = -1;
     std::bitset<kOverlayCount> overlays_;
+    BallScope pathScope_ = BallScope::All;
+    BallScope labelScope_ = BallScope::All;
+    ViewLayers layers_;
+    std::vector<Ball> setupBalls_;  // see setSetupBalls
     OrbitCamera camera_;
-    bool cameraAutomatic_ = true;  // untouched by the user: refit the top view on resize and new tables
+    std::optional<CameraPreset> fittedPreset_ = CameraPreset::Top;  // refitted on resize and new tables
+    bool follow_ = false;
 
     std::unique_ptr<TableRenderer> renderer_;
     unsigned int lastGlError_ = 0;
-
-    // Mouse interaction.
-    enum class DragMode { None, Orbit, Pan, Ball };
-    DragMode dragMode_ = DragMode::None;
-    QPointF pressPos_;
-    QPointF lastPos_;
-    int dragBall_ = -1;
-    bool dragMoved_ = false;
-    std::optional<QVector3D> dragGrabOffset_;  // m, from the ball's centre to the grabbed cloth point
-
-    QTimer cameraTimer_;         // steps preset transitions
-    QElapsedTimer cameraClock_;
-    QElapsedTimer fpsClock_;     // since the last report of the current run
-    int framesSinceReport_ = 0;
-    QTimer settleTimer_;         // single shot: repaints once the camera has stopped (see paintGL)
-    QTimer idleTimer_;           // single shot: fires when no frame followed the last one in time
-    bool rateReported_ = false;  // a rate above 0 was emitted for the current run
+    std::unique_ptr<TableInteraction> interaction_;
+    CameraAnimator* animator_;
+    FrameRateMeter* meter_;
+    QTimer settleTimer_;  // single shot: repaints once the camera has stopped (see paintGL)
 };
 
 }  // namespace cuelab

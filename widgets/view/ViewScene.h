@@ -32,6 +32,10 @@ inline constexpr int kOverlayCount = 7;
 // The overlays shown until the user switches some off: all of them.
 inline std::bitset<kOverlayCount> defaultOverlays() { return std::bitset<kOverlayCount>().set(); }
 
+// Whose paths, trails, event markers and time labels are drawn: every ball's, only the selected
+// ball's (and the events it takes part in; nothing when no ball is selected), or none.
+enum class BallScope : std::uint8_t { All, Selected, None };
+
 enum class CameraPreset : std::uint8_t {
     Top,     // straight down on the whole table, the long side horizontal
     Player,  // behind the cue ball, along the shot's heading, at a player's eye height
