@@ -188,4 +188,54 @@ double totalOf(Quantity q, const SimulationResult& result, const std::vector<Bal
     return sum;
 }
 
+namespace {
+
+// Appends a piece to the curve: joined to the last polyline when it starts where that one ended
+// (same time, same value up to rounding), else as a new polyline.
+void append(std::vector<Polyline>& curve, Polyline piece)
+{
+    if (!curve.empty() && !piece.times.empty()) {
+        Polyline& last = curve.back();
+        const double a = last.values.back();
+        const double b = piece.values.front();
+        const bool sameTime = last.times.back() == piece.times.front();
+        if (sameTime && std::abs(a - b) <= 1e-9 * std::max({std::abs(a), std::abs(b), 1e-9})) {
+            last.times.insert(last.times.end(), piece.times.begin() + 1, piece.times.end());
+            last.values.insert(last.values.end(), piece.values.begin() + 1, piece.values.end());
+            return;
+        }
+    }
+    if (piece.times.size() >= 2) curve.push_back(std::move(piece));
+}
+
+}  // namespace
+
+std::vector<Polyline> ballCurve(const SimulationResult& result, int index, Quantity q, const SamplingOptions& options)
+{
+    const double R = result.balls.at(static_cast<std::size_t>(index)).radius;
+    const double m = result.balls.at(static_cast<std::size_t>(index)).mass;
+    std::vector<Polyline> curve;
+    for (const Piece& piece : sampleBall(result, index, options)) {
+        Polyline line;
+        for (const Sample& s : piece.samples) {
+            line.times.push_back(s.time);
+            line.values.push_back(valueOf(q, s.state, R, m));
+        }
+        append(curve, std::move(line));
+    }
+    return curve;
+}
+
+std::vector<Polyline> tableCurve(const SimulationResult& result, Quantity q, const SamplingOptions& options)
+{
+    std::vector<Polyline> curve;
+    for (const TablePiece& piece : sampleTable(result, options)) {
+        Polyline line;
+        line.times = piece.times;
+        for (const std::vector<BallState>& states : piece.states) line.values.push_back(totalOf(q, result, states));
+        append(curve, std::move(line));
+    }
+    return curve;
+}
+
 }  // namespace cuelab::plots

@@ -74,6 +74,17 @@ std::vector<TablePiece> sampleTable(const SimulationResult& result, const Sampli
 // The sum over the balls of a quantity at one sample of the table (energies mainly).
 double totalOf(Quantity q, const SimulationResult& result, const std::vector<BallState>& states);
 
+// A curve ready to draw: polylines of (time, value). Consecutive pieces are joined where the value
+// is continuous across the event between them (a change of motion leaves the speed as it was), and
+// broken where it jumps (a collision), so that no line is ever drawn across a jump.
+struct Polyline {
+    std::vector<double> times;   // s
+    std::vector<double> values;  // in unit(q)
+};
+std::vector<Polyline> ballCurve(const SimulationResult& result, int index, Quantity q,
+                                const SamplingOptions& options = {});
+std::vector<Polyline> tableCurve(const SimulationResult& result, Quantity q, const SamplingOptions& options = {});
+
 // The times at which a piece from a to b is sampled (both ends included).
 std::vector<double> sampleTimes(double a, double b, const SamplingOptions& options, double end);
 

@@ -67,6 +67,7 @@ private slots:
     void stepBound();
     void pocketedCurveEnds();
     void quantities();
+    void drawnCurvesBreakAtJumps();
 };
 
 void TestCurves::samplesAreStateAt_data()
@@ -251,6 +252,44 @@ void TestCurves::quantities()
     QCOMPARE(valueOf(Quantity::KineticEnergy, s, R, m), 0.0);
     QCOMPARE(label(Quantity::SlipSpeed), std::string_view("slip speed"));
     QCOMPARE(unit(Quantity::RotationalEnergy), std::string_view("J"));
+}
+
+void TestCurves::drawnCurvesBreakAtJumps()
+{
+    // The polylines of the Plots dock: each point is the quantity of stateAt (or of the state just
+    // before the event that ends the line); a collision (speed jumps) starts a new line; a change
+    // of motion (speed continuous) does not.
+    const SimulationResult r = run(QStringLiteral("stun-shot.json"));
+    const int cue = r.ballIndex("cue");
+    const double R = r.balls[cue].radius;
+    const double m = r.balls[cue].mass;
+    const std::vector<Polyline> speed = ballCurve(r, cue, Quantity::Speed);
+    double hit = -1.0;
+    for (const Event& e : r.events)
+        if (e.kind == EventKind::BallBall) {
+            hit = e.time;
+            break;
+        }
+    QVERIFY(hit > 0.0);
+    bool brokenAtHit = false;
+    for (std::size_t k = 0; k < speed.size(); ++k) {
+        const Polyline& line = speed[k];
+        QCOMPARE(line.times.size(), line.values.size());
+        for (std::size_t i = 0; i + 1 < line.times.size(); ++i) {
+            QVERIFY(line.times[i] < line.times[i + 1]);
+            QVERIFY(!(line.times[i] < hit && hit < line.times[i + 1]));  // never across the collision
+            // Exact inside a piece; where two pieces are joined, the left limit (equal up to rounding).
+            const double exact = valueOf(Quantity::Speed, r.stateAt(cue, line.times[i]), R, m);
+            QVERIFY(std::abs(line.values[i] - exact) <= 1e-9 * std::max(1.0, exact));
+        }
+        if (line.times.back() == hit) brokenAtHit = k + 1 < speed.size() && speed[k + 1].times.front() == hit;
+    }
+    QVERIFY(brokenAtHit);
+    // Slide-to-roll and the stop do not break the speed: fewer lines than pieces.
+    QVERIFY(speed.size() < sampleBall(r, cue).size());
+    // Table total: energy lines never rise.
+    for (const Polyline& line : tableCurve(r, Quantity::KineticEnergy))
+        for (std::size_t i = 0; i + 1 < line.values.size(); ++i) QVERIFY(line.values[i + 1] <= line.values[i] * (1 + 1e-12) + 1e-15);
 }
 
 QTEST_GUILESS_MAIN(TestCurves)
