@@ -63,8 +63,11 @@ Preset presetOf(TableKind kind)
     case TableKind::Pool7ft:  // pooltool's 7-ft defaults
         return {1.9812, 0.9906, 0.028575, 0.170097, 0.64 * 2 * 0.028575,
                 {0.118, 142.0, 0.02095, 0.062}, {0.137, 104.0, 0.00795, 0.0645}};
+    // Balls: WPBSA Official Rules of the Games of Snooker and English Billiards, Section 1 (Equipment),
+    // rule 2: a diameter of 52.5 mm with a tolerance of +/- 0.05 mm, so R = 0.02625 m (pooltool's
+    // 0.02619 m is a 52.38 mm ball, outside the rule).
     case TableKind::Snooker:  // rounded snooker pockets: narrower mouths, large jaw radii
-        return {3.569, 1.778, 0.02619, 0.140, 0.64 * 2 * 0.02619,
+        return {3.569, 1.778, 0.02625, 0.140, 0.64 * 2 * 0.02625,
                 {0.086, 135.0, 0.030, 0.055}, {0.096, 100.0, 0.020, 0.058}};
     case TableKind::Carom:
         return {2.84, 1.42, 0.03075, 0.210, 0.037,

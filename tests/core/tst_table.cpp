@@ -47,7 +47,7 @@ void TestTable::presets_data()
     QTest::newRow("pool-9ft") << TableKind::Pool9ft << 2.540 << 1.270 << 0.028575 << 0.170097;
     QTest::newRow("pool-8ft") << TableKind::Pool8ft << 2.3368 << 1.1684 << 0.028575 << 0.170097;
     QTest::newRow("pool-7ft") << TableKind::Pool7ft << 1.9812 << 0.9906 << 0.028575 << 0.170097;
-    QTest::newRow("snooker") << TableKind::Snooker << 3.569 << 1.778 << 0.02619 << 0.140;
+    QTest::newRow("snooker") << TableKind::Snooker << 3.569 << 1.778 << 0.02625 << 0.140;  // WPBSA: 52.5 +/- 0.05 mm
     QTest::newRow("carom") << TableKind::Carom << 2.84 << 1.42 << 0.03075 << 0.210;
 }
 
