@@ -170,34 +170,111 @@ std::string stateJson(const SimulationResult& result, double t)
     return w.text();
 }
 
-std::string trajectoryCsv(const SimulationResult& result, double frameDt)
+namespace {
+
+// Frame times come from k, never from a running sum, so that they do not drift.
+std::vector<double> trajectoryTimes(const SimulationResult& result, double frameDt)
 {
-    // Frame times come from k, never from a running sum, so that they do not drift.
     std::vector<double> times;
     for (long long k = 0; frameTime(k, frameDt) <= result.endTime; ++k) times.push_back(frameTime(k, frameDt));
     for (const Event& e : result.events) times.push_back(e.time);
     std::sort(times.begin(), times.end());
     times.erase(std::unique(times.begin(), times.end()), times.end());
+    return times;
+}
 
+void appendStateFields(std::string& out, const BallState& s)
+{
+    out += toString(s.motion);
+    for (const double x : {s.position.x(), s.position.y(), s.velocity.x(), s.velocity.y(), s.spin.x(), s.spin.y(),
+                           s.spin.z()}) {
+        out += ',';
+        out += io::roundTripNumber(x);
+    }
+}
+
+// How often a long export asks whether to go on: every this many frames.
+constexpr std::size_t kProgressEvery = 256;
+
+}  // namespace
+
+std::string trajectoryCsv(const SimulationResult& result, double frameDt)
+{
+    return *trajectoryCsv(result, frameDt, Progress{});
+}
+
+std::optional<std::string> trajectoryCsv(const SimulationResult& result, double frameDt, const Progress& progress)
+{
+    const std::vector<double> times = trajectoryTimes(result, frameDt);
     std::vector<std::string> ids;
     for (const Ball& b : result.balls) ids.push_back(csvField(b.id));
 
     std::string out = "time,ball,state,x,y,vx,vy,wx,wy,wz\n";
-    for (const double t : times) {
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        if (progress && k % kProgressEvery == 0 && !progress(static_cast<double>(k) / static_cast<double>(times.size())))
+            return std::nullopt;
+        const double t = times[k];
         const std::string time = io::roundTripNumber(t);
         const std::vector<BallState> states = result.statesAt(t);
         for (std::size_t i = 0; i < states.size(); ++i) {
-            const BallState& s = states[i];
             out += time;
             out += ',';
             out += ids[i];
             out += ',';
-            out += toString(s.motion);
-            for (const double x : {s.position.x(), s.position.y(), s.velocity.x(), s.velocity.y(), s.spin.x(),
-                                   s.spin.y(), s.spin.z()}) {
-                out += ',';
-                out += io::roundTripNumber(x);
-            }
+            appendStateFields(out, states[i]);
+            out += '\n';
+        }
+    }
+    return out;
+}
+
+std::optional<std::string> trajectoryJson(const SimulationResult& result, double frameDt, const Progress& progress)
+{
+    const std::vector<double> times = trajectoryTimes(result, frameDt);
+    JsonWriter w;
+    w.beginObject(Layout::Block);
+    w.key("frame_dt");
+    w.value(frameDt);
+    w.key("frames");
+    w.beginArray(Layout::Block);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        if (progress && k % kProgressEvery == 0 && !progress(static_cast<double>(k) / static_cast<double>(times.size())))
+            return std::nullopt;
+        const std::vector<BallState> states = result.statesAt(times[k]);
+        w.beginObject(Layout::Line);
+        w.key("time");
+        w.value(times[k]);
+        w.key("balls");
+        w.beginArray(Layout::Line);
+        for (std::size_t i = 0; i < states.size(); ++i) writeBallState(w, result, static_cast<int>(i), states[i]);
+        w.endArray();
+        w.endObject();
+    }
+    w.endArray();
+    w.endObject();
+    return w.text();
+}
+
+std::string eventsCsv(const SimulationResult& result)
+{
+    std::string out = "index,time,type,ball,other,cushion,pocket,"
+                      "state_before,x_before,y_before,vx_before,vy_before,wx_before,wy_before,wz_before,"
+                      "state_after,x_after,y_after,vx_after,vy_after,wx_after,wy_after,wz_after\n";
+    for (std::size_t n = 0; n < result.events.size(); ++n) {
+        const Event& e = result.events[n];
+        const int agents = e.kind == EventKind::BallBall ? 2 : 1;
+        std::string cushion;
+        if (e.kind == EventKind::BallCushion) cushion = result.table.cushions.at(static_cast<std::size_t>(e.cushion)).id;
+        if (e.kind == EventKind::BallJaw) cushion = result.table.jaws.at(static_cast<std::size_t>(e.jaw)).id;
+        const std::string pocket = e.kind == EventKind::BallPocket ? pocketId(result, e.pocket) : std::string();
+        for (int a = 0; a < agents; ++a) {
+            out += std::to_string(n) + ',' + io::roundTripNumber(e.time) + ',' + std::string(toString(e.kind)) + ',';
+            out += csvField(result.balls.at(static_cast<std::size_t>(e.balls[a])).id) + ',';
+            if (agents == 2) out += csvField(result.balls.at(static_cast<std::size_t>(e.balls[1 - a])).id);
+            out += ',' + csvField(cushion) + ',' + csvField(pocket) + ',';
+            appendStateFields(out, e.before[a]);
+            out += ',';
+            appendStateFields(out, e.after[a]);
             out += '\n';
         }
     }

@@ -7,6 +7,8 @@
 #include "ShotOutcome.h"
 #include "Simulation.h"
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,5 +30,18 @@ std::string stateJson(const SimulationResult& result, double t);
 // `trajectory`: the header time,ball,state,x,y,vx,vy,wx,wy,wz, then one row per ball at every
 // frame time in [0, endTime] and at every event time (the state just after the event).
 std::string trajectoryCsv(const SimulationResult& result, double frameDt);
+
+// The same text for long exports (the window's File > Export): progress(fraction done) is called now
+// and then; when it returns false the work stops and the result is empty.
+using Progress = std::function<bool(double fraction)>;
+std::optional<std::string> trajectoryCsv(const SimulationResult& result, double frameDt, const Progress& progress);
+
+// The same frames as JSON: { "frame_dt": S, "frames": [ { "time": t, "balls": [ ...as simulate... ] } ] },
+// one frame per line.
+std::optional<std::string> trajectoryJson(const SimulationResult& result, double frameDt, const Progress& progress = {});
+
+// The event log as CSV, one row per event and agent: index,time,type,ball,other,cushion,pocket, then
+// the agent's state before and after (state,x,y,vx,vy,wx,wy,wz each).
+std::string eventsCsv(const SimulationResult& result);
 
 }  // namespace cuelab::cli
