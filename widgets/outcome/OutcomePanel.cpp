@@ -1,0 +1,125 @@
+#include "OutcomePanel.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace cuelab {
+
+namespace {
+
+constexpr int kEventRole = Qt::UserRole + 1;  // event index of a fact row, or -1
+
+QTableWidgetItem* item(const QString& text, const QString& tip = {})
+{
+    auto* it = new QTableWidgetItem(text);
+    it->setFlags(Qt::ItemIsSelectable | Qt::ItemIsEnabled);
+    if (!tip.isEmpty()) it->setToolTip(tip);
+    return it;
+}
+
+int eventIndex(const SimulationResult& r, EventKind kind, int ball, double time)
+{
+    for (int i = 0; i < static_cast<int>(r.events.size()); ++i) {
+        const Event& e = r.events[i];
+        if (e.kind == kind && e.time == time && (e.balls[0] == ball || e.balls[1] == ball)) return i;
+    }
+    return -1;
+}
+
+}  // namespace
+
+OutcomePanel::OutcomePanel(QWidget* parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("outcomePanel"));
+    header_ = new QLabel(this);
+    header_->setWordWrap(true);
+    header_->setObjectName(QStringLiteral("outcomeSummary"));
+    facts_ = new QTableWidget(0, 2, this);
+    facts_->setObjectName(QStringLiteral("outcomeFacts"));
+    facts_->setHorizontalHeaderLabels({tr("What"), tr("Outcome")});
+    facts_->horizontalHeader()->setStretchLastSection(true);
+    facts_->verticalHeader()->hide();
+    facts_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    facts_->setToolTip(tr("Double-click the first contact or a pocketing to go to that event"));
+    balls_ = new QTableWidget(0, 4, this);
+    balls_->setObjectName(QStringLiteral("outcomeBalls"));
+    balls_->setHorizontalHeaderLabels({tr("Ball"), tr("Cushions"), tr("Ends"), tr("x, y (m)")});
+    balls_->horizontalHeader()->setStretchLastSection(true);
+    balls_->verticalHeader()->hide();
+    balls_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    balls_->setToolTip(tr("Per ball: ball-cushion contacts (jaws included) and where it ends; double-click selects it"));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(header_);
+    layout->addWidget(facts_, 1);
+    layout->addWidget(balls_, 2);
+
+    connect(facts_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
+        const int event = facts_->item(row, 0)->data(kEventRole).toInt();
+        if (event >= 0) emit eventActivated(event);
+    });
+    connect(balls_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) { emit ballActivated(row); });
+    setResult(nullptr);
+}
+
+void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
+{
+    result_ = std::move(result);
+    facts_->setRowCount(0);
+    balls_->setRowCount(0);
+    if (!result_) {
+        outcome_ = {};
+        summary_.clear();
+        header_->setText(tr("No simulation yet"));
+        return;
+    }
+    const SimulationResult& r = *result_;
+    outcome_ = shotOutcome(r);
+    summary_ = QString::fromStdString(outcomeSummary(r, outcome_));
+    header_->setText(summary_);
+    auto id = [&](int ball) { return QString::fromStdString(r.balls.at(static_cast<std::size_t>(ball)).id); };
+    auto addFact = [&](const QString& what, const QString& value, int event = -1, const QString& tip = {}) {
+        const int row = facts_->rowCount();
+        facts_->insertRow(row);
+        QTableWidgetItem* w = item(what, tip);
+        w->setData(kEventRole, event);
+        facts_->setItem(row, 0, w);
+        facts_->setItem(row, 1, item(value, tip));
+    };
+    const ShotOutcome& o = outcome_;
+    addFact(tr("Struck ball"), o.struckBall >= 0 ? id(o.struckBall) : tr("none (no shot)"));
+    if (o.firstContact)
+        addFact(tr("First contact"), tr("%1 at %2 s").arg(id(o.firstContact->ball)).arg(o.firstContact->time, 0, 'f', 4),
+                eventIndex(r, EventKind::BallBall, o.struckBall, o.firstContact->time),
+                tr("The first ball the struck ball touches, and when (s)"));
+    else
+        addFact(tr("First contact"), tr("none"));
+    addFact(tr("Cushions before it"), QString::number(o.cushionsBeforeFirstContact), -1,
+            tr("Ball-cushion contacts of the struck ball before its first contact (jaws included)"));
+    if (o.pocketed.empty()) addFact(tr("Pocketed"), tr("none"));
+    for (const PocketedBall& p : o.pocketed)
+        addFact(tr("Pocketed"),
+                tr("%1 in %2 at %3 s").arg(id(p.ball), QString::fromStdString(r.table.pockets[p.pocket].id)).arg(p.time, 0, 'f', 4),
+                eventIndex(r, EventKind::BallPocket, p.ball, p.time));
+    addFact(tr("Struck ball pocketed"), o.struckBall >= 0 && o.struckBallPocketed ? tr("yes (a scratch)") : tr("no"));
+    facts_->resizeColumnToContents(0);
+
+    for (int b = 0; b < static_cast<int>(r.balls.size()); ++b) {
+        balls_->insertRow(b);
+        const BallState& s = o.finalStates[b];
+        balls_->setItem(b, 0, item(id(b)));
+        balls_->setItem(b, 1, item(QString::number(o.cushionHits[b])));
+        const QString state = s.motion == MotionState::Pocketed
+                                  ? tr("in %1").arg(QString::fromStdString(r.table.pockets[s.pocket].id))
+                                  : QString::fromUtf8(toString(s.motion).data(), static_cast<qsizetype>(toString(s.motion).size()));
+        balls_->setItem(b, 2, item(state));
+        balls_->setItem(b, 3, item(s.motion == MotionState::Pocketed ? QString()
+                                   : QStringLiteral("%1, %2").arg(s.position.x(), 0, 'f', 4).arg(s.position.y(), 0, 'f', 4),
+                                   tr("Final position in metres (table frame)")));
+    }
+    balls_->resizeColumnsToContents();
+}
+
+}  // namespace cuelab
