@@ -7,6 +7,9 @@ namespace cuelab {
 void installFeatures(MainWindow& window)
 {
     (void)window;
+    installPlots(window);
+    installOutcome(window);
+    installExport(window);
 }
 
 }  // namespace cuelab

@@ -11,4 +11,8 @@ class MainWindow;
 // Installs every feature, in a fixed order (the order of their docks in View > Panels).
 void installFeatures(MainWindow& window);
 
+void installPlots(MainWindow& window);    // issue 10: the Plots dock
+void installOutcome(MainWindow& window);  // issue 10: the Outcome dock and status line
+void installExport(MainWindow& window);   // issue 10: File > Export
+
 }  // namespace cuelab

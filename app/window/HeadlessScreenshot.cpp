@@ -1,5 +1,6 @@
 #include "HeadlessScreenshot.h"
 
+#include "export/DiagramFiles.h"
 #include "view/Screenshot.h"
 
 #include "SetupFile.h"
@@ -28,7 +29,8 @@ void printError(const QString& message) { std::fprintf(stderr, "cuelab: %s\n", q
 void addScreenshotOptions(QCommandLineParser& parser)
 {
     parser.addOption({QStringLiteral("screenshot"),
-                      QStringLiteral("Render SETUP to the PNG file <out> without opening a window, then exit."),
+                      QStringLiteral("Render SETUP to <out> without opening a window, then exit: .png the table view, "
+                                     ".svg or .pdf a print-style shot diagram (balls where they rest unless --time)."),
                       QStringLiteral("out")});
     parser.addOption({QStringLiteral("time"), QStringLiteral("With --screenshot: the time shown, in seconds (default 0)."),
                       QStringLiteral("seconds"), QStringLiteral("0")});
@@ -77,6 +79,17 @@ int takeScreenshot(const QCommandLineParser& parser, const QString& out)
     }
     ViewScene scene;
     scene.result = std::make_shared<const SimulationResult>(simulate(*setup));
+    // SVG and PDF: the print-style shot diagram (widgets/export), at --time or else at the end.
+    DiagramFormat format = DiagramFormat::Png;
+    if (diagramFormatOf(out, &format) && format != DiagramFormat::Png) {
+        const ShotDiagram diagram(scene.result, {QString::fromStdString(setup->name), QString::fromStdString(setup->notes)},
+                                  parser.isSet(QStringLiteral("time")) ? time : -1.0);
+        if (!writeDiagram(diagram, out, &error)) {
+            printError(error);
+            return kExitRefused;
+        }
+        return kExitOk;
+    }
     scene.shot = setup->shot;
     QImage image;
     if (!renderSceneToImage(scene, time, camera, QSize(w, h), &image, &error)) {

@@ -14,21 +14,42 @@
 namespace cuelab {
 
 namespace {
+
 constexpr double kMarkerPickRadius = 7.0;  // px
+
+// Ticks at 1, 2 or 5 times a power of ten, about `count` of them over the axis.
+void niceTicks(QValueAxis* axis, int count)
+{
+    const double span = axis->max() - axis->min();
+    if (!(span > 0.0)) return;
+    const double raw = span / count;
+    const double p = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = 10.0 * p;
+    for (const double m : {1.0, 2.0, 5.0})
+        if (m * p >= raw) {
+            step = m * p;
+            break;
+        }
+    axis->setTickAnchor(0.0);
+    axis->setTickInterval(step);
 }
+
+}  // namespace
 
 PlotsChartView::PlotsChartView(QWidget* parent) : QChartView(parent)
 {
     setRenderHint(QPainter::Antialiasing);
     setMouseTracking(true);
     QChart* c = chart();
-    c->legend()->setAlignment(Qt::AlignBottom);
+    c->legend()->setAlignment(Qt::AlignRight);
     c->setMargins(QMargins(4, 4, 4, 4));
     timeAxis_ = new QValueAxis(c);
     timeAxis_->setTitleText(tr("time (s)"));
-    timeAxis_->setLabelFormat(QStringLiteral("%.3g"));
+    timeAxis_->setLabelFormat(QStringLiteral("%.4g"));
+    timeAxis_->setTickType(QValueAxis::TicksDynamic);
     valueAxis_ = new QValueAxis(c);
-    valueAxis_->setLabelFormat(QStringLiteral("%.3g"));
+    valueAxis_->setLabelFormat(QStringLiteral("%.4g"));
+    valueAxis_->setTickType(QValueAxis::TicksDynamic);
     c->addAxis(timeAxis_, Qt::AlignBottom);
     c->addAxis(valueAxis_, Qt::AlignLeft);
 
@@ -63,7 +84,11 @@ PlotsChartView::PlotsChartView(QWidget* parent) : QChartView(parent)
         for (const Marker& m : markers_)
             if (m.event == event) QToolTip::showText(QCursor::pos(), m.name, this);
     });
-    connect(valueAxis_, &QValueAxis::rangeChanged, this, [this] { updateCursorLine(); });
+    connect(valueAxis_, &QValueAxis::rangeChanged, this, [this] {
+        niceTicks(valueAxis_, 5);
+        updateCursorLine();
+    });
+    connect(timeAxis_, &QValueAxis::rangeChanged, this, [this] { niceTicks(timeAxis_, 8); });
     setToolTip(tr("Drag: move the time cursor. Wheel: zoom the time axis (Ctrl: the value axis). "
                   "Shift-drag or middle-drag: pan. Double-click: show everything. Click a marker to select its event."));
 }

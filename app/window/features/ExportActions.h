@@ -1,0 +1,33 @@
+#pragma once
+// What File > Export writes, as functions of the current result (the ExportFeature's actions call
+// them, tests call them directly). Each writes atomically (QSaveFile): on failure *error names the
+// file and the reason, and a file already there is left intact. The long ones take a progress
+// callback (fraction done, 0..1) that cancels the work by returning false (then *error = "cancelled").
+
+#include "Simulation.h"
+
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+namespace cuelab::exports {
+
+using Progress = std::function<bool(double fraction)>;
+
+// The trajectory, frame step frameDt (s): the CSV equals `cuelab-cli trajectory --frame-dt S` byte
+// for byte (the same function, app/cli/ResultText.h); JSON has the same frames.
+bool trajectoryCsv(const SimulationResult& result, double frameDt, const QString& path, QString* error,
+                   const Progress& progress = {});
+bool trajectoryJson(const SimulationResult& result, double frameDt, const QString& path, QString* error,
+                    const Progress& progress = {});
+
+// The events: CSV one row per event and agent; JSON as `cuelab-cli simulate` prints it (with the outcome).
+bool eventsCsv(const SimulationResult& result, const QString& path, QString* error);
+bool eventsJson(const SimulationResult& result, const QString& path, QString* error);
+
+// The lesson report (widgets/export/LessonReport): several PDF pages.
+bool lessonReport(std::shared_ptr<const SimulationResult> result, const QString& title, const QString& notes,
+                  const QString& path, QString* error, const Progress& progress = {});
+
+}  // namespace cuelab::exports

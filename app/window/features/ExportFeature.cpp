@@ -1,0 +1,250 @@
+// File > Export: the view as PNG at a chosen size, the shot diagram as SVG or PDF, the events and the
+// trajectory as CSV or JSON, the lesson report. File work runs on a worker thread behind a progress
+// dialog with Cancel, so that the window never freezes; every file is written atomically.
+
+#include "ExportActions.h"
+#include "Features.h"
+#include "MainWindow.h"
+#include "editor/Document.h"
+#include "editor/Playback.h"
+#include "export/DiagramFiles.h"
+#include "view/Screenshot.h"
+#include "view/TableView.h"
+
+#include <QAction>
+#include <QBuffer>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QProgressDialog>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTimer>
+#include <QtConcurrent>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+
+namespace cuelab {
+
+namespace {
+
+using Work = std::function<bool(const exports::Progress& progress, QString* error)>;
+
+QString tr(const char* text) { return MainWindow::tr(text); }
+
+// Asks where to write; empty when the user cancels. Starts beside the document, named after it.
+QString askPath(MainWindow& window, const QString& title, const QString& suffix, const QString& filter)
+{
+    const Document* d = window.document();
+    const QString dir = d->filePath().isEmpty() ? QDir::homePath() : QFileInfo(d->filePath()).absolutePath();
+    QString base = QFileInfo(d->displayName()).completeBaseName();
+    if (base.isEmpty()) base = QStringLiteral("shot");
+    QString path = QFileDialog::getSaveFileName(&window, title, dir + QLatin1Char('/') + base + suffix, filter);
+    if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty()) path += suffix;
+    return path;
+}
+
+// Runs `work` on a worker thread behind a progress dialog. Cancel stops it; nothing is written then.
+void runInBackground(MainWindow& window, const QString& label, const QString& path, Work work)
+{
+    auto cancelled = std::make_shared<std::atomic_bool>(false);
+    auto permille = std::make_shared<std::atomic_int>(0);
+    auto* dialog = new QProgressDialog(label, tr("Cancel"), 0, 1000, &window);
+    dialog->setWindowTitle(tr("Export"));
+    dialog->setWindowModality(Qt::WindowModal);
+    dialog->setMinimumDuration(400);
+    dialog->setAutoClose(false);
+    dialog->setAutoReset(false);
+    dialog->setValue(0);
+    auto* timer = new QTimer(dialog);
+    QObject::connect(timer, &QTimer::timeout, dialog, [dialog, permille] { dialog->setValue(std::min(999, permille->load())); });
+    timer->start(50);
+    QObject::connect(dialog, &QProgressDialog::canceled, dialog, [cancelled] { cancelled->store(true); });
+
+    auto* watcher = new QFutureWatcher<QString>(&window);
+    QObject::connect(watcher, &QFutureWatcher<QString>::finished, &window, [&window, watcher, dialog, path] {
+        const QString error = watcher->result();
+        dialog->deleteLater();
+        watcher->deleteLater();
+        if (error.isEmpty())
+            window.statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
+        else if (error == QLatin1String("cancelled"))
+            window.statusBar()->showMessage(tr("Export cancelled: nothing was written"), 5000);
+        else
+            QMessageBox::warning(&window, tr("Export"), error);
+    });
+    watcher->setFuture(QtConcurrent::run([work = std::move(work), cancelled, permille] {
+        QString error;
+        const bool ok = work(
+            [cancelled, permille](double fraction) {
+                permille->store(static_cast<int>(fraction * 1000.0));
+                return !cancelled->load();
+            },
+            &error);
+        if (!ok && error.isEmpty()) error = QStringLiteral("the export failed");
+        return ok ? QString() : error;
+    }));
+}
+
+// The result to export, or null with a message when there is none yet.
+std::shared_ptr<const SimulationResult> currentResult(MainWindow& window)
+{
+    std::shared_ptr<const SimulationResult> r = window.document()->result();
+    if (!r) QMessageBox::information(&window, tr("Export"), tr("There is no simulation to export yet."));
+    return r;
+}
+
+void exportViewPng(MainWindow& window)
+{
+    std::shared_ptr<const SimulationResult> result = currentResult(window);
+    if (!result) return;
+    QDialog dialog(&window);
+    dialog.setWindowTitle(tr("Export the View as PNG"));
+    auto* width = new QSpinBox(&dialog);
+    auto* height = new QSpinBox(&dialog);
+    for (QSpinBox* s : {width, height}) {
+        s->setRange(16, 8192);
+        s->setSuffix(tr(" px"));
+    }
+    width->setValue(1920);
+    height->setValue(1080);
+    width->setToolTip(tr("Image width in pixels"));
+    height->setToolTip(tr("Image height in pixels"));
+    auto* camera = new QComboBox(&dialog);
+    camera->addItem(tr("Top (whole table)"), QVariant::fromValue(static_cast<int>(CameraPreset::Top)));
+    camera->addItem(tr("Player (behind the cue ball)"), QVariant::fromValue(static_cast<int>(CameraPreset::Player)));
+    camera->addItem(tr("Side"), QVariant::fromValue(static_cast<int>(CameraPreset::Side)));
+    auto* form = new QFormLayout(&dialog);
+    form->addRow(tr("Width:"), width);
+    form->addRow(tr("Height:"), height);
+    form->addRow(tr("Camera:"), camera);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+    form->addRow(buttons);
+    QObject::connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    QObject::connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const QString path = askPath(window, tr("Export the View as PNG"), QStringLiteral(".png"), tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    ViewScene scene = window.tableView()->scene();
+    QImage image;
+    QString error;
+    // The view's own renderer, offscreen, at the chosen size (an OpenGL context: the GUI thread).
+    if (!renderSceneToImage(scene, window.playback()->time(), static_cast<CameraPreset>(camera->currentData().toInt()),
+                            QSize(width->value(), height->value()), &image, &error)) {
+        QMessageBox::warning(&window, tr("Export"), error);
+        return;
+    }
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    image.save(&buffer, "PNG");
+    if (!writeFileAtomically(path, bytes, &error))
+        QMessageBox::warning(&window, tr("Export"), error);
+    else
+        window.statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
+}
+
+void exportDiagram(MainWindow& window, bool pdf)
+{
+    std::shared_ptr<const SimulationResult> result = currentResult(window);
+    if (!result) return;
+    const QString path = pdf ? askPath(window, tr("Export the Shot Diagram as PDF"), QStringLiteral(".pdf"), tr("PDF documents (*.pdf)"))
+                             : askPath(window, tr("Export the Shot Diagram as SVG"), QStringLiteral(".svg"), tr("SVG images (*.svg)"));
+    if (path.isEmpty()) return;
+    const Setup& setup = window.document()->setup();
+    const DiagramText text{QString::fromStdString(setup.name), QString::fromStdString(setup.notes)};
+    // At the transport's time, unless it stands at the start: then where the balls come to rest.
+    const double t = window.playback()->time() > 0.0 ? window.playback()->time() : -1.0;
+    runInBackground(window, tr("Drawing the shot diagram..."), path, [result, text, t, path, pdf](const exports::Progress&, QString* error) {
+        const ShotDiagram diagram(result, text, t);
+        return pdf ? writeDiagramPdf(diagram, path, error) : writeDiagramSvg(diagram, path, error);
+    });
+}
+
+bool askFrameStep(MainWindow& window, double* frameDt)
+{
+    bool ok = false;
+    const double ms = QInputDialog::getDouble(&window, tr("Export the Trajectory"), tr("Frame step (ms):"),
+                                              window.document()->setup().simulation.frameDt * 1000.0, 0.01, 10000.0, 3, &ok);
+    *frameDt = ms / 1000.0;
+    return ok;
+}
+
+}  // namespace
+
+void installExport(MainWindow& window)
+{
+    QMenu* menu = window.menu(WindowMenu::Export);
+    MainWindow* w = &window;
+
+    QAction* png = menu->addAction(tr("View as &PNG..."), w, [w] { exportViewPng(*w); });
+    png->setObjectName(QStringLiteral("exportViewPng"));
+    png->setStatusTip(tr("Render the table view at a chosen size into a PNG image"));
+    QAction* svg = menu->addAction(tr("Shot Diagram as &SVG..."), w, [w] { exportDiagram(*w, false); });
+    svg->setObjectName(QStringLiteral("exportDiagramSvg"));
+    svg->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+E")));
+    svg->setStatusTip(tr("A print-style top-down diagram: numbered balls, paths, contacts with their times, the outcome"));
+    QAction* pdf = menu->addAction(tr("Shot Diagram as P&DF..."), w, [w] { exportDiagram(*w, true); });
+    pdf->setObjectName(QStringLiteral("exportDiagramPdf"));
+    pdf->setStatusTip(tr("The shot diagram on an A4 page"));
+    QAction* report = menu->addAction(tr("Lesson &Report (PDF)..."), w, [w] {
+        std::shared_ptr<const SimulationResult> result = currentResult(*w);
+        if (!result) return;
+        const QString path = askPath(*w, tr("Export the Lesson Report"), QStringLiteral("-report.pdf"), tr("PDF documents (*.pdf)"));
+        if (path.isEmpty()) return;
+        const Setup& setup = w->document()->setup();
+        runInBackground(*w, tr("Writing the lesson report..."), path,
+                        [result, path, title = QString::fromStdString(setup.name), notes = QString::fromStdString(setup.notes)](
+                            const exports::Progress& progress, QString* error) {
+                            return exports::lessonReport(result, title, notes, path, error, progress);
+                        });
+    });
+    report->setObjectName(QStringLiteral("exportReport"));
+    report->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+R")));
+    report->setStatusTip(tr("A printable report: the diagram, the lesson's notes, the outcome, the event table, the plots"));
+    menu->addSeparator();
+
+    struct Data {
+        const char* text;
+        const char* name;
+        const char* suffix;
+        const char* filter;
+        bool trajectory;
+        bool json;
+    };
+    for (const Data& d : {Data{"&Events as CSV...", "exportEventsCsv", ".csv", "CSV files (*.csv)", false, false},
+                          Data{"Events as &JSON...", "exportEventsJson", ".json", "JSON files (*.json)", false, true},
+                          Data{"&Trajectory as CSV...", "exportTrajectoryCsv", ".csv", "CSV files (*.csv)", true, false},
+                          Data{"Trajectory as JS&ON...", "exportTrajectoryJson", ".json", "JSON files (*.json)", true, true}}) {
+        QAction* a = menu->addAction(tr(d.text), w, [w, d] {
+            std::shared_ptr<const SimulationResult> result = currentResult(*w);
+            if (!result) return;
+            double frameDt = 0.0;
+            if (d.trajectory && !askFrameStep(*w, &frameDt)) return;
+            const QString path = askPath(*w, tr("Export"), QString::fromLatin1(d.suffix), tr(d.filter));
+            if (path.isEmpty()) return;
+            runInBackground(*w, d.trajectory ? tr("Writing the trajectory...") : tr("Writing the events..."), path,
+                            [result, d, frameDt, path](const exports::Progress& progress, QString* error) {
+                                if (d.trajectory)
+                                    return d.json ? exports::trajectoryJson(*result, frameDt, path, error, progress)
+                                                  : exports::trajectoryCsv(*result, frameDt, path, error, progress);
+                                return d.json ? exports::eventsJson(*result, path, error) : exports::eventsCsv(*result, path, error);
+                            });
+        });
+        a->setObjectName(QString::fromLatin1(d.name));
+        a->setStatusTip(d.trajectory ? tr("Every ball's state at every frame (a frame step you choose) and at every event")
+                                     : tr("Every event with its agents' states before and after"));
+    }
+}
+
+}  // namespace cuelab

@@ -1,0 +1,40 @@
+// The shot's outcome in the window: a line in the status bar (first contact, cushions, pocketed
+// balls) and the Outcome panel beside the Inspector.
+
+#include "Features.h"
+#include "MainWindow.h"
+#include "editor/Document.h"
+#include "editor/Selection.h"
+#include "outcome/OutcomePanel.h"
+
+#include <QDockWidget>
+#include <QLabel>
+#include <QStatusBar>
+
+namespace cuelab {
+
+void installOutcome(MainWindow& window)
+{
+    auto* panel = new OutcomePanel;
+    window.addPanel(panel, MainWindow::tr("Outcome"), QStringLiteral("OutcomeDock"),
+                    {Qt::RightDockWidgetArea, QStringLiteral("InspectorDock")});
+    // A tab added last comes to the front: keep the Inspector in front on the first start.
+    if (auto* inspector = window.findChild<QDockWidget*>(QStringLiteral("InspectorDock"))) inspector->raise();
+    auto* line = new QLabel(&window);
+    line->setObjectName(QStringLiteral("outcomeStatus"));
+    line->setToolTip(MainWindow::tr("The shot's outcome: the first ball the struck ball touches, its cushions before "
+                                    "that, and the pocketed balls (pocket, time)"));
+    window.statusBar()->addPermanentWidget(line);
+    Document* document = window.document();
+    Selection* selection = window.selection();
+    QObject::connect(document, &Document::resultChanged, panel, [panel, line, document] {
+        panel->setResult(document->result());
+        line->setText(panel->summary());
+    });
+    QObject::connect(panel, &OutcomePanel::eventActivated, selection, &Selection::selectEvent);
+    QObject::connect(panel, &OutcomePanel::ballActivated, selection, &Selection::selectBall);
+    panel->setResult(document->result());
+    line->setText(panel->summary());
+}
+
+}  // namespace cuelab
