@@ -3,6 +3,7 @@
 
 #include "DockLayout.h"
 #include "Features.h"
+#include "FirstStartTip.h"
 #include "RecentFiles.h"
 
 #include "editor/BallsPanel.h"
@@ -66,6 +67,8 @@ MainWindow::MainWindow(QWidget* parent)
     auto* centreLayout = new QVBoxLayout(centre);
     centreLayout->setContentsMargins(0, 0, 0, 0);
     centreLayout->setSpacing(0);
+    tip_ = new FirstStartTip(centre);
+    centreLayout->addWidget(tip_);
     centreLayout->addWidget(view_, 1);
     centreLayout->addWidget(transport_);
     setCentralWidget(centre);

@@ -26,6 +26,7 @@ namespace cuelab {
 
 class BallsPanel;
 class DockLayout;
+class FirstStartTip;
 class Document;
 class EventsPanel;
 class InspectorPanel;
@@ -119,6 +120,7 @@ private:
     Playback* playback_;
     Selection* selection_;
     DockLayout* layout_;
+    FirstStartTip* tip_ = nullptr;
     TableView* view_ = nullptr;
     TransportBar* transport_ = nullptr;
     BallsPanel* balls_ = nullptr;

@@ -3,6 +3,7 @@
 #include "MainWindow.h"
 #include "MainWindowPrivate.h"
 #include "RecentFiles.h"
+#include "FirstStartTip.h"
 #include "ShortcutsDialog.h"
 
 #include "editor/BallsPanel.h"
@@ -134,6 +135,8 @@ void MainWindow::createMenus()
     keys->setObjectName(QStringLiteral("keyboardAndMouseAction"));
     keys->setShortcut(QKeySequence::HelpContents);
     keys->setToolTip(tr("Every keyboard shortcut and mouse gesture of the window"));
+    QAction* tip = help->addAction(tr("Show First-Start &Tip"), tip_, &FirstStartTip::showAgain);
+    tip->setToolTip(tr("The short tour shown above the table on the first start"));
     help->addSeparator();
     help->addAction(tr("&About CueLab"), this, &MainWindow::about);
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);

@@ -7,6 +7,7 @@
 
 #include "editor/Selection.h"
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QDockWidget>
 #include <QLabel>
@@ -156,6 +157,23 @@ private slots:
         QVERIFY(!window.dockLayout()->restore(QByteArray("not a state"), QVariantList{0.2, 0.2}));
         QVERIFY(window.dockLayout()->restore({}, QVariantList{0.2, 0.25}));
         QCOMPARE(window.dockLayout()->rightShare(), 0.25);
+    }
+
+    void firstStartTipShowsOnce()
+    {
+        QSettings().remove(QStringLiteral("help/firstStartTipSeen"));
+        {
+            MainWindow first;
+            auto* tip = first.findChild<QWidget*>(QStringLiteral("firstStartTip"));
+            QVERIFY(tip);
+            QVERIFY(tip->isVisibleTo(&first));
+            auto* close = first.findChild<QAbstractButton*>(QStringLiteral("firstStartTipClose"));
+            QVERIFY(close);
+            close->click();
+            QVERIFY(!tip->isVisibleTo(&first));
+        }
+        MainWindow second;
+        QVERIFY(!second.findChild<QWidget*>(QStringLiteral("firstStartTip"))->isVisibleTo(&second));
     }
 
     void selectionRules()

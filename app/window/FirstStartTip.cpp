@@ -1,0 +1,61 @@
+#include "FirstStartTip.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSettings>
+#include <QToolButton>
+
+namespace cuelab {
+
+namespace {
+
+const QString kSeenKey = QStringLiteral("help/firstStartTipSeen");
+
+}  // namespace
+
+FirstStartTip::FirstStartTip(QWidget* parent) : QFrame(parent)
+{
+    setObjectName(QStringLiteral("firstStartTip"));
+    setFrameShape(QFrame::StyledPanel);
+    setAutoFillBackground(true);
+    QPalette p = palette();
+    p.setColor(QPalette::Window, p.color(QPalette::ToolTipBase));
+    p.setColor(QPalette::WindowText, p.color(QPalette::ToolTipText));
+    setPalette(p);
+    auto* text = new QLabel(
+        tr("<b>New to CueLab?</b> Open a lesson from <i>File › Examples</i>. <b>Space</b> plays the shot, "
+           "<b>←/→</b> step a frame, <b>Shift+←/→</b> jump to the next event; click an event in <i>Events</i> "
+           "to read its mathematics. Drag a ball to move it; every edit can be undone (<b>Ctrl+Z</b>). "
+           "<b>F1</b> lists every shortcut and mouse gesture."),
+        this);
+    text->setWordWrap(true);
+    text->setTextFormat(Qt::RichText);
+    auto* close = new QToolButton(this);
+    close->setObjectName(QStringLiteral("firstStartTipClose"));
+    close->setText(QStringLiteral("✕"));
+    close->setToolTip(tr("Hide this tip (Help › Show First-Start Tip brings it back)"));
+    close->setAutoRaise(true);
+    connect(close, &QToolButton::clicked, this, &FirstStartTip::dismiss);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(10, 6, 6, 6);
+    layout->addWidget(text, 1);
+    layout->addWidget(close, 0, Qt::AlignTop);
+    setVisible(pending());
+    // Seen once is enough: the next start shows it no more, even if this one never closes it.
+    QSettings().setValue(kSeenKey, true);
+}
+
+bool FirstStartTip::pending() { return !QSettings().value(kSeenKey, false).toBool(); }
+
+void FirstStartTip::showAgain()
+{
+    show();
+}
+
+void FirstStartTip::dismiss()
+{
+    QSettings().setValue(kSeenKey, true);
+    hide();
+}
+
+}  // namespace cuelab
