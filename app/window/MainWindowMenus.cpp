@@ -14,6 +14,7 @@
 #include "SetupFile.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QDockWidget>
 #include <QFile>
@@ -115,6 +116,32 @@ void MainWindow::createMenus()
         QAction* a = camera->addAction(name, this, [this, p = preset] { view_->setCameraPreset(p); });
         a->setShortcut(QKeySequence(Qt::CTRL | key++));
     }
+    const std::pair<BallScope, QString> scopes[] = {{BallScope::All, tr("&All Balls")},
+                                                    {BallScope::Selected, tr("&Selected Ball Only")},
+                                                    {BallScope::None, tr("&None")}};
+    const auto scopeMenu = [&](const QString& title, const QString& tip, BallScope current, auto setter) {
+        QMenu* m = view->addMenu(title);
+        m->setToolTip(tip);
+        auto* group = new QActionGroup(m);
+        for (const auto& [scope, name] : scopes) {
+            QAction* a = m->addAction(name, this, [this, setter, sc = scope] { (view_->*setter)(sc); });
+            a->setCheckable(true);
+            a->setChecked(scope == current);
+            group->addAction(a);
+        }
+    };
+    scopeMenu(tr("Pat&hs Of"), tr("Whose paths, trails and event markers are drawn (busy shots read better with one ball)"),
+              view_->pathScope(), &TableView::setPathScope);
+    scopeMenu(tr("&Labels Of"), tr("Whose event times are labelled in the view"), view_->labelScope(),
+              &TableView::setLabelScope);
+    QAction* follow = view->addAction(tr("F&ollow Selected Ball"));
+    follow->setCheckable(true);
+    follow->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F));
+    follow->setToolTip(tr("Keep the selected ball at the centre of the view as time runs"));
+    connect(follow, &QAction::toggled, view_, &TableView::setFollowSelectedBall);
+    QAction* zoom = view->addAction(tr("&Zoom to Selection"), this, [this] { view_->zoomToSelection(); });
+    zoom->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
+    zoom->setToolTip(tr("Frame the selected ball's whole path (the table when no ball is selected)"));
     view->addSeparator();
     QAction* fullScreen = view->addAction(tr("&Full Screen"));
     fullScreen->setCheckable(true);
