@@ -8,6 +8,7 @@
 #include "LegalSetup.h"
 #include "SetupFile.h"
 #include "SetupProblem.h"
+#include "resolve/CushionModel.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -16,6 +17,8 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <string>
+#include <vector>
 
 namespace cuelab::io {
 
@@ -59,6 +62,10 @@ QString describe(const QJsonValue& v)
 class ObjectReader {
 public:
     ObjectReader(const QJsonValue& value, QString path, std::initializer_list<const char*> allowed)
+        : ObjectReader(value, std::move(path), std::vector<const char*>(allowed))
+    {
+    }
+    ObjectReader(const QJsonValue& value, QString path, const std::vector<const char*>& allowed)
         : path_(std::move(path))
     {
         if (!value.isObject()) wrongType(path_, "an object", value);
@@ -201,19 +208,37 @@ void parseBallBall(const QJsonValue& value, const QString& path, PhysicsParams& 
     }
 }
 
+// The models, their names and their own parameters come from the registry (resolve/CushionModel.h);
+// a parameter of another model than the one chosen is refused as an unknown key.
 void parseBallCushion(const QJsonValue& value, const QString& path, PhysicsParams& p)
 {
-    const ObjectReader in(value, path, {"model", "restitution", "friction"});
-    if (const auto model = in.optionalString("model")) {
-        if (*model == QLatin1String("mirror"))
-            p.ballCushionModel = BallCushionModel::Mirror;
-        else if (*model == QLatin1String("han2005"))
-            p.ballCushionModel = BallCushionModel::Han2005;
-        else
-            refuse(in.pathOf("model"), QStringLiteral("unknown model \"%1\" (expected mirror or han2005)").arg(*model));
+    if (!value.isObject()) wrongType(path, "an object", value);
+    const QJsonObject object = value.toObject();
+    const CushionModelEntry* model = &cushionModel(p.ballCushionModel);
+    if (object.contains(QLatin1String("model"))) {
+        const QJsonValue v = object.value(QLatin1String("model"));
+        if (!v.isString()) wrongType(child(path, "model"), "a string", v);
+        model = findCushionModel(v.toString().toStdString());
+        if (!model) {
+            QStringList names;
+            for (const CushionModelEntry& e : cushionModels()) names << QString::fromUtf8(e.name.data(), qsizetype(e.name.size()));
+            refuse(child(path, "model"), QStringLiteral("unknown model \"%1\" (expected one of: %2)")
+                                             .arg(v.toString(), names.join(QStringLiteral(", "))));
+        }
+        p.ballCushionModel = model->model;
     }
+    // The model's own parameters are read here; their ranges are the validator's (core/setup).
+    std::vector<std::string> keys{"model", "restitution", "friction"};
+    for (const CushionModelParameter& q : model->parameters) keys.emplace_back(q.key);
+    std::vector<const char*> allowed;
+    for (const std::string& k : keys) allowed.push_back(k.c_str());
+    const ObjectReader in(value, path, allowed);
     if (const auto e = in.optionalNumber("restitution")) p.cushionRestitution = *e;
     if (const auto mu = in.optionalNumber("friction")) p.cushionFriction = *mu;
+    for (const CushionModelParameter& q : model->parameters) {
+        const std::string key(q.key);
+        if (const auto x = in.optionalNumber(key.c_str())) p.*(q.field) = *x;
+    }
 }
 
 PhysicsParams parsePhysics(const QJsonValue& value)
@@ -255,7 +280,7 @@ std::vector<Ball> parseBalls(const QJsonValue& value, const Table& preset)
 CueStrike parseShot(const QJsonValue& value)
 {
     const ObjectReader in(value, QStringLiteral("shot"),
-                          {"ball", "speed", "heading", "elevation", "side", "height", "cue_mass"});
+                          {"ball", "speed", "heading", "elevation", "side", "height", "cue_mass", "end_mass"});
     CueStrike shot;
     shot.ball = in.string("ball").toStdString();
     shot.speed = in.number("speed");
@@ -264,6 +289,8 @@ CueStrike parseShot(const QJsonValue& value)
     shot.side = in.number("side");
     shot.height = in.number("height");
     if (const auto m = in.optionalNumber("cue_mass")) shot.cueMass = *m;
+    // Squirt only when the file asks for it with the tip's end mass (Alciatore TP A-31).
+    if (const auto m = in.optionalNumber("end_mass")) shot.endMass = *m;
     return shot;
 }
 

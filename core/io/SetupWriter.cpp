@@ -4,6 +4,7 @@
 
 #include "JsonText.h"
 #include "SetupFile.h"
+#include "resolve/CushionModel.h"
 
 #include <bit>
 #include <cstdint>
@@ -76,6 +77,11 @@ void writePhysics(JsonWriter& w, const PhysicsParams& p)
     w.value(p.cushionRestitution);
     w.key("friction");
     w.value(p.cushionFriction);
+    // The chosen model's own parameters (the parser refuses those of another model).
+    for (const CushionModelParameter& q : cushionModel(p.ballCushionModel).parameters) {
+        w.key(q.key);
+        w.value(p.*(q.field));
+    }
     w.endObject();
     w.endObject();
 }
@@ -126,6 +132,10 @@ void writeShot(JsonWriter& w, const CueStrike& shot)
     w.value(shot.height);
     w.key("cue_mass");
     w.value(shot.cueMass);
+    if (shot.endMass > 0.0) {  // absent = no squirt
+        w.key("end_mass");
+        w.value(shot.endMass);
+    }
     w.endObject();
 }
 

@@ -8,6 +8,14 @@
 
 namespace cuelab {
 
+double squirtAngle(double side, double ballMass, double endMass)
+{
+    if (!(endMass > 0.0)) return 0.0;
+    const double a = std::clamp(side, -1.0, 1.0);
+    const double c = 1.0 - a * a;
+    return std::atan(2.5 * a * std::sqrt(c) / (1.0 + ballMass / endMass + 2.5 * c));
+}
+
 CueImpactResult resolveCueStrike(const BallState& before, double radius, double mass, const CueStrike& strike,
                                  CueImpactTrace* trace)
 {
@@ -39,6 +47,15 @@ CueImpactResult resolveCueStrike(const BallState& before, double radius, double 
     r.after = before;
     r.after.velocity = before.velocity + (F * std::cos(theta) / mass) * d.head<2>();
     r.after.spin = before.spin + q.cross(r.impulse) / inertia;
+    if (strike.endMass > 0.0 && a != 0.0) {
+        // Squirt: the ball leaves off the cue line, turned away from the side of the english.
+        r.squirt = squirtAngle(a / R, mass, strike.endMass);
+        const Vec2 dv = r.after.velocity - before.velocity;
+        const double cs = std::cos(r.squirt), sn = std::sin(r.squirt);
+        r.after.velocity = before.velocity + Vec2(cs * dv.x() - sn * dv.y(), sn * dv.x() + cs * dv.y());
+        const Vec2 planar = r.impulse.head<2>();
+        r.impulse.head<2>() = Vec2(cs * planar.x() - sn * planar.y(), sn * planar.x() + cs * planar.y());
+    }
     r.after.motion = classify(r.after, R);
     r.contactPoint = before.position + q.head<2>();
     r.heading = d.head<2>();

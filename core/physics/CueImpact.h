@@ -13,7 +13,16 @@ struct CueImpactResult {
     Vec3 impulse = Vec3::Zero();       // N s, on the ball, table frame (its z part is discarded)
     Vec2 contactPoint = Vec2::Zero();  // m, the tip contact projected on the cloth plane
     Vec2 heading = Vec2::Zero();       // unit horizontal direction of the cue
+    double squirt = 0.0;               // rad, the ball's direction minus the cue's (counter-clockwise +)
 };
+
+// Squirt (Alciatore, technical proof A-31): a cue tip of end mass me striking a ball of mass m at the
+// side offset a (a fraction of R, + = right) sends the ball off the cue line, away from the side of
+// the english, by
+//     alpha = atan( (5/2) a sqrt(1 - a^2) / (1 + m/me + (5/2)(1 - a^2)) ).
+// Returns alpha in radians, positive for right english (the ball then leaves to the left of the cue
+// line, i.e. its heading turns counter-clockwise seen from above). 0 when me <= 0 (no squirt).
+double squirtAngle(double side, double ballMass, double endMass);
 
 // The intermediate numbers of resolveCueStrike, for core/explain (filled only when asked for).
 struct CueImpactTrace {
@@ -40,6 +49,9 @@ struct CueImpactTrace {
 // the ball gets v = F/m e (its vertical part discarded on the cloth) and w = Q x (F e) / I.
 // For theta = 0 this is PHYSICS.md's v = 2 V0 / (1 + m/M + 5 (a^2 + b^2) / (2 R^2)) and
 // w = (5 v / (2 R^2)) (a z + b (z x d)). Offsets beyond the ball's silhouette are clamped to it.
+// With strike.endMass > 0 the ball's horizontal velocity is then turned by squirtAngle (speed and
+// spin stay those of A-30, as in pooltool: A-31 gives the direction only); with endMass = 0 the result
+// is bit for bit the one without squirt. The trace holds the A-30 numbers, before the squirt turn.
 CueImpactResult resolveCueStrike(const BallState& before, double radius, double mass, const CueStrike& strike,
                                  CueImpactTrace* trace = nullptr);
 

@@ -14,6 +14,10 @@ struct CueStrike {
     double side = 0.0;         // tip offset / R, + = right of centre as the player sees it
     double height = 0.0;       // tip offset / R, + = above centre
     double cueMass = 0.567;    // kg
+    // kg, the cue tip's "end mass" that squirts the ball (Alciatore TP A-31; pooltool uses m/30, about
+    // 5.7 g for a pool ball). 0 = no squirt: the ball leaves along the cue line, as before squirt
+    // existed (a file asks for squirt with the shot key "end_mass").
+    double endMass = 0.0;
 };
 
 }  // namespace cuelab

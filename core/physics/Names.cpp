@@ -3,6 +3,7 @@
 #include "Ball.h"
 #include "Event.h"
 #include "Parameters.h"
+#include "resolve/CushionModel.h"
 
 #include <cmath>
 
@@ -37,10 +38,7 @@ std::string_view toString(BallBallModel m)
     return m == BallBallModel::Frictional ? "frictional" : "frictionless";
 }
 
-std::string_view toString(BallCushionModel m)
-{
-    return m == BallCushionModel::Mirror ? "mirror" : "han2005";
-}
+std::string_view toString(BallCushionModel m) { return cushionModel(m).name; }
 
 std::string_view toString(EventKind k)
 {

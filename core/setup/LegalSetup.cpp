@@ -1,6 +1,7 @@
 #include "LegalSetup.h"
 
 #include "LegalGeometry.h"
+#include "resolve/CushionModel.h"
 
 #include <cmath>
 #include <cstdio>
@@ -101,6 +102,21 @@ void checkPhysics(const PhysicsParams& p, Problems& out)
     if (p.ballBallFrictionKind == BallBallFriction::Fixed) out.nonNegative(p.ballBallFriction, "physics.ball_ball.friction");
     out.unitInterval(p.cushionRestitution, "physics.ball_cushion.restitution");
     out.nonNegative(p.cushionFriction, "physics.ball_cushion.friction");
+    // The chosen cushion model's own parameters, with the ranges its registry entry gives.
+    for (const CushionModelParameter& q : cushionModel(p.ballCushionModel).parameters) {
+        const std::string path = "physics.ball_cushion." + std::string(q.key);
+        const double x = p.*(q.field);
+        if (!out.finite(x, path)) continue;
+        const bool low = q.minExclusive ? !(x > q.min) : !(x >= q.min);
+        const bool high = q.maxExclusive ? !(x < q.max) : !(x <= q.max);
+        if (low || high)
+            out.add(SetupProblem{path, {}, -1,
+                                 "must lie between " + describeNumber(q.min) + " and " + describeNumber(q.max) +
+                                     (q.minExclusive || q.maxExclusive ? ", bounds excluded" : "") + " (found " +
+                                     describeNumber(x) + ")"});
+        else if (q.integer && std::floor(x) != x)
+            out.add(SetupProblem{path, {}, -1, "must be a whole number (found " + describeNumber(x) + ")"});
+    }
 }
 
 // The values of ball `i`; returns whether its place can be checked (finite position, usable radius).
@@ -142,6 +158,8 @@ void checkShot(const Setup& setup, Problems& out)
         out.add(SetupProblem{std::abs(shot.side) >= std::abs(shot.height) ? "shot.side" : "shot.height", {}, -1,
                              "the tip misses the ball: side and height must satisfy side² + height² < 1"});
     out.positive(shot.cueMass, "shot.cue_mass");
+    // 0 means no squirt (the key absent); a file that gives the tip's end mass gives a positive one.
+    out.nonNegative(shot.endMass, "shot.end_mass");
 }
 
 void checkSimulation(const SimulationSettings& s, Problems& out)

@@ -80,6 +80,11 @@ inline QStringList setupDifferences(const Setup& a, const Setup& b)
     d.check("physics.ballCushionModel", p.ballCushionModel, q.ballCushionModel);
     d.check("physics.cushionRestitution", p.cushionRestitution, q.cushionRestitution);
     d.check("physics.cushionFriction", p.cushionFriction, q.cushionFriction);
+    // A model's own parameters are saved with that model only.
+    if (p.ballCushionModel == BallCushionModel::Mathavan2010)
+        d.check("physics.mathavanSteps", p.mathavanSteps, q.mathavanSteps);
+    if (p.ballCushionModel == BallCushionModel::Stronge)
+        d.check("physics.strongeOmegaRatio", p.strongeOmegaRatio, q.strongeOmegaRatio);
     d.check("balls.size", a.balls.size(), b.balls.size());
     for (std::size_t i = 0; i < std::min(a.balls.size(), b.balls.size()); ++i) {
         const QString where = QStringLiteral("balls[%1].").arg(i);
@@ -98,6 +103,7 @@ inline QStringList setupDifferences(const Setup& a, const Setup& b)
         d.check("shot.side", s.side, t.side);
         d.check("shot.height", s.height, t.height);
         d.check("shot.cueMass", s.cueMass, t.cueMass);
+        d.check("shot.endMass", s.endMass, t.endMass);
     }
     d.check("simulation.frameDt", a.simulation.frameDt, b.simulation.frameDt);
     d.check("simulation.maxTime", a.simulation.maxTime, b.simulation.maxTime);

@@ -57,9 +57,11 @@ Setup randomSetup(std::mt19937_64& rng)
     p.ballBallRestitution = in(0.9, 1.0);
     p.ballBallFrictionKind = rng() % 2 ? BallBallFriction::Alciatore : BallBallFriction::Fixed;
     p.ballBallFriction = in(0.0, 0.1);
-    p.ballCushionModel = rng() % 2 ? BallCushionModel::Mirror : BallCushionModel::Han2005;
+    p.ballCushionModel = BallCushionModel(rng() % 4);  // mirror, han2005, mathavan2010, stronge
     p.cushionRestitution = in(0.6, 0.95);
     p.cushionFriction = in(0.0, 0.3);
+    if (p.ballCushionModel == BallCushionModel::Mathavan2010) p.mathavanSteps = double(10 + rng() % 5000);
+    if (p.ballCushionModel == BallCushionModel::Stronge) p.strongeOmegaRatio = in(1.01, 1.99);
 
     const Table table = makeTable(s.table);
     const int count = 1 + static_cast<int>(rng() % 6);
@@ -88,6 +90,7 @@ Setup randomSetup(std::mt19937_64& rng)
         shot.side = in(-0.4, 0.4);
         shot.height = in(-0.4, 0.4);
         shot.cueMass = in(0.5, 0.6);
+        if (rng() % 2) shot.endMass = in(0.004, 0.01);  // squirt
         s.shot = shot;
     }
     s.simulation.frameDt = in(0.005, 0.05);

@@ -135,7 +135,7 @@ void TestSetupRefusals::refused_data()
         << withMembers(R"("physics": {"ball_cushion": {"restitutoin": 0.8}})") << "physics.ball_cushion.restitutoin"
         << "unknown key";
     QTest::newRow("ball_cushion model unknown")
-        << withMembers(R"("physics": {"ball_cushion": {"model": "mathavan2010"}})") << "physics.ball_cushion.model"
+        << withMembers(R"("physics": {"ball_cushion": {"model": "mathavan_2010"}})") << "physics.ball_cushion.model"
         << "unknown model";
     QTest::newRow("ball_cushion restitution above 1")
         << withMembers(R"("physics": {"ball_cushion": {"restitution": 2}})") << "physics.ball_cushion.restitution"
