@@ -1,5 +1,8 @@
 #include "PhysicsPanel.h"
 
+#include "CushionModelParameters.h"
+#include "resolve/CushionModel.h"
+
 #include "Document.h"
 #include "Quantities.h"
 
@@ -44,9 +47,12 @@ PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent
     ballBallFrictionKind_->setToolTip(tr("Ball-ball friction: a fixed coefficient, or Alciatore's fit 0.00995 + 0.108 exp(-1.088 v) of the relative speed v in m/s"));
     ballBallFriction_ = makeSpinBox({0.0, 1.0, 3, 0.01, QString(), tr("Fixed ball-ball friction coefficient (dimensionless; 0.05)")}, this);
     cushionModel_ = new QComboBox(this);
-    cushionModel_->addItem(tr("Mirror"), static_cast<int>(BallCushionModel::Mirror));
-    cushionModel_->addItem(tr("Han 2005"), static_cast<int>(BallCushionModel::Han2005));
-    cushionModel_->setToolTip(tr("Ball-cushion model: mirror reflection scaled by restitution, or Han 2005 (contact above the equator, with friction)"));
+    // The cushion models come from their registry (core/physics/resolve/CushionModel.h).
+    for (const CushionModelEntry& m : cushionModels()) {
+        cushionModel_->addItem(toQString(m.title), static_cast<int>(m.model));
+        cushionModel_->setItemData(cushionModel_->count() - 1, toQString(m.summary), Qt::ToolTipRole);
+    }
+    cushionModel_->setToolTip(tr("Ball-cushion model: mirror, Han 2005, Mathavan 2010 or Stronge's compliant impact (docs/cushion-models.md)"));
     cushionRestitution_ = makeSpinBox({0.0, 1.0, 3, 0.01, QString(), tr("Ball-cushion coefficient of restitution (dimensionless; 0.85, range 0.6-0.9)")}, this);
     cushionFriction_ = makeSpinBox({0.0, 1.0, 3, 0.01, QString(), tr("Ball-cushion friction coefficient (dimensionless; 0.2)")}, this);
     frameDt_ = makeSpinBox({0.1, 1000.0, 3, 1.0, tr("ms"), tr("Frame timestep in milliseconds: one step of frame-by-frame playback (16.667 ms = 60 frames per second)")}, this);
@@ -75,6 +81,7 @@ PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent
     cushionForm->addRow(tr("Model"), cushionModel_);
     cushionForm->addRow(tr("Restitution"), cushionRestitution_);
     cushionForm->addRow(tr("μ cushion"), cushionFriction_);
+    cushionForm->addRow(new CushionModelParameters(document_, cushion));  // the chosen model's own parameters
     auto* time = new QGroupBox(tr("Time"), this);
     auto* timeForm = new QFormLayout(time);
     timeForm->addRow(tr("Frame step"), frameDt_);
@@ -136,7 +143,7 @@ void PhysicsPanel::refresh()
     const bool frictional = p.ballBallModel == BallBallModel::Frictional;
     ballBallFrictionKind_->setEnabled(frictional);
     ballBallFriction_->setEnabled(frictional && p.ballBallFrictionKind == BallBallFriction::Fixed);
-    cushionFriction_->setEnabled(p.ballCushionModel == BallCushionModel::Han2005);
+    cushionFriction_->setEnabled(cushionModel(p.ballCushionModel).usesFriction);
     refreshing_ = false;
 }
 

@@ -1,5 +1,7 @@
 #include "ShotPanel.h"
 
+#include "SquirtControl.h"
+
 #include "Document.h"
 #include "Quantities.h"
 #include "TipOffsetWidget.h"
@@ -64,6 +66,7 @@ ShotPanel::ShotPanel(Document* document, QWidget* parent) : QWidget(parent), doc
     tipRow->addLayout(tipNumbers);
     form->addRow(tr("Tip"), tipRow);
     form->addRow(tr("Cue mass"), cueMass_);
+    form->addRow(tr("End mass"), new SquirtControl(document_, this));  // squirt (shot.end_mass)
 
     connect(enabled_, &QCheckBox::toggled, this, [this] { commit(Enabled, enabled_->isChecked() ? tr("Add the cue strike") : tr("Remove the cue strike")); });
     connect(ball_, &QComboBox::activated, this, [this] { commit(BallField, tr("Strike ball %1").arg(ball_->currentText())); });

@@ -1,5 +1,7 @@
 #include "OverlayLines.h"
 
+#include "CueImpact.h"
+
 #include "BallAppearance.h"
 
 #include <algorithm>
@@ -267,6 +269,14 @@ void appendAimLine(const SimulationResult& result, int ball, const Vec2& from, c
     if (hit >= 0) {
         const QVector3D ghost = at(from + reach * d, r);
         arc(out, ghost, QVector3D(1, 0, 0), QVector3D(0, 1, 0), static_cast<float>(r), 0.0, 2.0 * std::numbers::pi, 32, white);
+    }
+    // Squirt (shot.end_mass, Alciatore TP A-31): the ball's own start direction, solid orange beside
+    // the dashed cue line, so the angle between them is the squirt.
+    const double squirt = squirtAngle(shot.side, result.balls[static_cast<std::size_t>(cue)].mass, shot.endMass);
+    if (squirt != 0.0) {
+        const Vec2 ds(std::cos(heading + squirt), std::sin(heading + squirt));
+        const double length = std::max(std::min(reach, 0.6), 2.0 * r);
+        segment(out, at(s.position + r * ds, r), at(s.position + length * ds, r), QVector4D(1.0f, 0.55f, 0.1f, 0.95f));
     }
 }
 
