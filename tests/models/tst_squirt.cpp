@@ -183,7 +183,7 @@ void TestSquirt::fileKey()
     QByteArray bad = json;
     bad.replace("0.0057", "-1");
     QVERIFY(!io::parseSetup(bad, QStringLiteral("s.json"), &error));
-    QVERIFY2(error.startsWith(QStringLiteral("s.json: shot.end_mass: must be greater than 0")), qPrintable(error));
+    QVERIFY2(error.startsWith(QStringLiteral("s.json: shot.end_mass: must not be negative")), qPrintable(error));
     bad = json;
     bad.replace("0.0057", "\"light\"");
     QVERIFY(!io::parseSetup(bad, QStringLiteral("s.json"), &error));

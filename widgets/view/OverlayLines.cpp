@@ -224,14 +224,24 @@ void appendSpinIndicators(const SimulationResult& result, const std::vector<Ball
     }
 }
 
-void appendAimLines(const SimulationResult& result, std::vector<LineVertex>& out)
+void appendAimLines(const SimulationResult& result, const std::optional<CueStrike>& shot, std::vector<LineVertex>& out)
 {
     for (std::size_t i = 0; i < result.balls.size(); ++i) {
         const int index = static_cast<int>(i);
         // The state just after t = 0: after the cue strike, or the file's initial motion.
         const BallState s = result.timelines.empty() ? result.balls[i].state : result.stateAt(index, 0.0);
         if (s.motion == MotionState::Pocketed || s.velocity.norm() < 1e-6) continue;
-        appendAimLine(result, index, result.balls[i].state.position, s.velocity.normalized(), out);
+        const Vec2 from = result.balls[i].state.position;
+        appendAimLine(result, index, from, s.velocity.normalized(), out);
+        // Squirt (shot.end_mass, Alciatore TP A-31): the dashed line is the ball's real start
+        // direction; the cue line (the heading) is drawn solid orange beside it, so the angle between
+        // the two is the squirt.
+        if (!shot || shot->ball != result.balls[i].id) continue;
+        if (squirtAngle(shot->side, result.balls[i].mass, shot->endMass) == 0.0) continue;
+        const double heading = shot->headingDeg * std::numbers::pi / 180.0;
+        const Vec2 cue(std::cos(heading), std::sin(heading));
+        const double r = ballRadius(result, index);
+        segment(out, at(from + r * cue, r), at(from + 0.6 * cue, r), QVector4D(1.0f, 0.55f, 0.1f, 0.95f));
     }
 }
 
@@ -269,14 +279,6 @@ void appendAimLine(const SimulationResult& result, int ball, const Vec2& from, c
     if (hit >= 0) {
         const QVector3D ghost = at(from + reach * d, r);
         arc(out, ghost, QVector3D(1, 0, 0), QVector3D(0, 1, 0), static_cast<float>(r), 0.0, 2.0 * std::numbers::pi, 32, white);
-    }
-    // Squirt (shot.end_mass, Alciatore TP A-31): the ball's own start direction, solid orange beside
-    // the dashed cue line, so the angle between them is the squirt.
-    const double squirt = squirtAngle(shot.side, result.balls[static_cast<std::size_t>(cue)].mass, shot.endMass);
-    if (squirt != 0.0) {
-        const Vec2 ds(std::cos(heading + squirt), std::sin(heading + squirt));
-        const double length = std::max(std::min(reach, 0.6), 2.0 * r);
-        segment(out, at(s.position + r * ds, r), at(s.position + length * ds, r), QVector4D(1.0f, 0.55f, 0.1f, 0.95f));
     }
 }
 

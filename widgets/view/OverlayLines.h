@@ -12,6 +12,7 @@
 #include <QVector3D>
 #include <QVector4D>
 
+#include <optional>
 #include <vector>
 
 namespace cuelab {
@@ -54,8 +55,9 @@ void appendSpinIndicators(const SimulationResult& result, const std::vector<Ball
 // An aim line from every ball that moves at the start, along the direction it really starts in (the
 // cue strike's outcome, or a file's initial velocity), to the first ball or cushion it would meet,
 // dashed, with the outline of the ghost ball at a ball contact. A sliding ball curves away from this
-// line: its future path shows where it really goes.
-void appendAimLines(const SimulationResult& result, std::vector<LineVertex>& out);
+// line: its future path shows where it really goes. With a shot whose end mass gives squirt, the cue
+// line (its heading) is drawn solid orange from the struck ball beside that dashed line.
+void appendAimLines(const SimulationResult& result, const std::optional<CueStrike>& shot, std::vector<LineVertex>& out);
 // The same from `ball` at `from` along the unit `direction`.
 void appendAimLine(const SimulationResult& result, int ball, const Vec2& from, const Vec2& direction,
                    std::vector<LineVertex>& out);

@@ -80,7 +80,7 @@ void OverlayPass::drawLines(QOpenGLShaderProgram& lineProgram, const RenderFrame
         const SimulationResult& r = *scene_.result;
         if (on(Overlay::Velocities)) appendVelocityArrows(r, states, scratch_);
         if (on(Overlay::Spin)) appendSpinIndicators(r, states, scratch_);
-        if (frame.time <= 0.0 && on(Overlay::CueAndAim) && !drag) appendAimLines(r, scratch_);
+        if (frame.time <= 0.0 && on(Overlay::CueAndAim) && !drag) appendAimLines(r, scene_.shot, scratch_);
         if (drag) appendVelocityDragArrow(r, drag->ball, drag->from, drag->velocity, scratch_);
         appendSelectionRing(r, states, frame.selectedBall, scratch_);
     }
