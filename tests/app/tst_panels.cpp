@@ -4,6 +4,7 @@
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
 #include "editor/EventTableModel.h"
+#include "editor/EventTreeModel.h"
 #include "editor/EventsPanel.h"
 #include "editor/PhysicsPanel.h"
 #include "editor/ShotPanel.h"
@@ -18,6 +19,7 @@
 #include <QStyleOptionSlider>
 #include <QTableView>
 #include <QTableWidget>
+#include <QTreeView>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QtTest>
@@ -259,9 +261,12 @@ void TestPanels::eventListWithoutChangesOfMotion()
         if (!isTransition(events[i].kind)) listed.push_back(static_cast<int>(i));
     QVERIFY(listed.size() < events.size());
 
-    QTest::mouseClick(panel.transitionsToggle(), Qt::LeftButton, {}, QPoint(8, panel.transitionsToggle()->height() / 2));
-    QVERIFY(!panel.transitionsToggle()->isChecked());
-    QTableView* table = panel.table();
+    // The kind filter, chosen with the keyboard as a user would.
+    QComboBox* kinds = panel.kindFilter();
+    kinds->setFocus();
+    QTest::keyClick(kinds, Qt::Key_Down);
+    QCOMPARE(kinds->currentData().toInt(), static_cast<int>(EventFilter::Kinds::NoChangesOfMotion));
+    QTreeView* table = panel.table();
     QCOMPARE(table->model()->rowCount(), static_cast<int>(listed.size()));
     // Clicking the last listed row selects that event by its index in the whole list.
     QSignalSpy selected(&panel, &EventsPanel::eventSelected);
@@ -271,7 +276,7 @@ void TestPanels::eventListWithoutChangesOfMotion()
     QCOMPARE(selected.front().front().toInt(), listed.back());
     QCOMPARE(panel.selectedEvent(), listed.back());
     // Showing them again keeps the selection on the same event.
-    panel.transitionsToggle()->setChecked(true);
+    kinds->setCurrentIndex(kinds->findData(static_cast<int>(EventFilter::Kinds::All)));
     QCOMPARE(table->model()->rowCount(), static_cast<int>(events.size()));
     QCOMPARE(panel.selectedEvent(), listed.back());
 }
