@@ -6,10 +6,15 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
+#include <QRegularExpression>
 #include <QStyle>
 #include <QToolButton>
+
+#include <cmath>
 
 namespace cuelab {
 
@@ -49,10 +54,19 @@ TransportBar::TransportBar(Playback* playback, QWidget* parent) : QWidget(parent
     toEnd_ = makeAction(this, QStyle::SP_MediaSkipForward, tr("&End"), tr("Go to the end, when every ball rests"), {Qt::Key_End});
 
     slider_ = new TimelineSlider(this);
-    timeLabel_ = new QLabel(this);
-    timeLabel_->setToolTip(tr("Current time and end time of the shot, in seconds"));
-    timeLabel_->setFont(QFont(QStringLiteral("monospace")));
-    timeLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    timeBox_ = new QLineEdit(this);
+    timeBox_->setObjectName(QStringLiteral("timeBox"));
+    timeBox_->setToolTip(tr("Current time in seconds. Type a time (1.25, 1.25 s, 40 ms) or an event number (#12) and press Return to go there"));
+    timeBox_->setPlaceholderText(tr("time or #event"));
+    const QFont mono(QStringLiteral("monospace"));
+    timeBox_->setFont(mono);
+    timeBox_->setAlignment(Qt::AlignRight);
+    // Room for "000.000000" and the frame: the box does not grow, the slider takes the rest.
+    timeBox_->setFixedWidth(QFontMetrics(mono).horizontalAdvance(QStringLiteral("0000.0000000")) + 12);
+    endLabel_ = new QLabel(this);
+    endLabel_->setToolTip(tr("End time of the shot, in seconds: when every ball rests"));
+    endLabel_->setFont(mono);
+    endLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     speed_ = new QComboBox(this);
     speed_->setToolTip(tr("Playback speed: 1× is real time"));
     for (double rate : Playback::speeds()) speed_->addItem(speedLabel(rate), rate);
@@ -69,13 +83,15 @@ TransportBar::TransportBar(Playback* playback, QWidget* parent) : QWidget(parent
         button->setFocusPolicy(Qt::NoFocus);
         layout->addWidget(button);
     }
-    layout->addSpacing(8);
+    layout->addSpacing(4);
     layout->addWidget(slider_, 1);
-    layout->addSpacing(8);
-    layout->addWidget(timeLabel_);
-    layout->addSpacing(8);
+    layout->addSpacing(4);
+    layout->addWidget(timeBox_);
+    layout->addWidget(endLabel_);
+    layout->addSpacing(4);
     layout->addWidget(speed_);
     slider_->setFocusPolicy(Qt::NoFocus);
+    slider_->setMinimumWidth(120);
 
     connect(toStart_, &QAction::triggered, playback_, &Playback::toStart);
     connect(previousEvent_, &QAction::triggered, playback_, &Playback::previousEvent);
@@ -87,6 +103,10 @@ TransportBar::TransportBar(Playback* playback, QWidget* parent) : QWidget(parent
     connect(slider_, &TimelineSlider::timeScrubbed, playback_, [this](double t) {
         playback_->pause();
         playback_->setTime(t);
+    });
+    connect(timeBox_, &QLineEdit::returnPressed, this, &TransportBar::goToTyped);
+    connect(timeBox_, &QLineEdit::editingFinished, this, [this] {
+        if (!timeBox_->hasFocus()) showTime(playback_->time());  // left without Return: show the time again
     });
     connect(speed_, &QComboBox::activated, this, [this] { playback_->setSpeed(speed_->currentData().toDouble()); });
     connect(playback_, &Playback::speedChanged, this, [this](double rate) { speed_->setCurrentIndex(speed_->findData(rate)); });
@@ -113,8 +133,75 @@ void TransportBar::refreshTimeline()
 void TransportBar::showTime(double seconds)
 {
     slider_->setTime(seconds);
-    // Milliseconds and below matter when stepping between close events: show microseconds.
-    timeLabel_->setText(tr("t = %1 s / %2 s").arg(formatNumber(seconds, 6), formatNumber(playback_->endTime(), 3)));
+    // Milliseconds and below matter when stepping between close events: show microseconds. A box
+    // the user is typing in keeps what they type.
+    if (!timeBox_->hasFocus() || !timeBox_->isModified()) {
+        timeBox_->setText(formatNumber(seconds, 6));
+        timeBox_->setModified(false);
+    }
+    endLabel_->setText(tr("/ %1 s").arg(formatNumber(playback_->endTime(), 3)));
+}
+
+bool TransportBar::parseTimeRequest(const QString& text, TimeRequest* request, QString* error)
+{
+    const QString t = text.trimmed();
+    static const QRegularExpression eventPattern(QStringLiteral(R"(^#\s*(\d+)$)"));
+    static const QRegularExpression timePattern(QStringLiteral(R"(^(\d+(?:[.,]\d*)?|[.,]\d+)(?:e([+-]?\d+))?\s*(s|ms)?$)"),
+                                                QRegularExpression::CaseInsensitiveOption);
+    TimeRequest r;
+    if (const QRegularExpressionMatch m = eventPattern.match(t); m.hasMatch()) {
+        bool ok = false;
+        const int n = m.captured(1).toInt(&ok);
+        if (!ok || n < 1) {
+            if (error) *error = tr("Events are numbered from 1.");
+            return false;
+        }
+        r.event = n - 1;
+    } else if (const QRegularExpressionMatch m = timePattern.match(t); m.hasMatch()) {
+        QString number = m.captured(1);
+        number.replace(QLatin1Char(','), QLatin1Char('.'));
+        if (!m.captured(2).isEmpty()) number += QLatin1Char('e') + m.captured(2);
+        bool ok = false;
+        double seconds = number.toDouble(&ok);
+        if (m.captured(3).compare(QLatin1String("ms"), Qt::CaseInsensitive) == 0) seconds *= 1e-3;
+        if (!ok || !std::isfinite(seconds)) {
+            if (error) *error = tr("\"%1\" is not a time.").arg(t);
+            return false;
+        }
+        r.seconds = seconds;
+    } else {
+        if (error) *error = tr("\"%1\" is neither a time (1.25, 1.25 s, 40 ms) nor an event number (#12).").arg(t);
+        return false;
+    }
+    if (request) *request = r;
+    return true;
+}
+
+void TransportBar::goToTyped()
+{
+    TimeRequest request;
+    QString error;
+    const int events = static_cast<int>(playback_->eventTimes().size());
+    if (parseTimeRequest(timeBox_->text(), &request, &error) && request.event >= events)
+        error = tr("There is no event #%1: the shot has %n event(s).", nullptr, events).arg(request.event + 1);
+    if (!error.isEmpty()) {
+        timeBox_->setToolTip(error);
+        timeBox_->setStyleSheet(QStringLiteral("QLineEdit { border: 2px solid #c03020; }"));
+        timeBox_->selectAll();
+        return;
+    }
+    timeBox_->setStyleSheet(QString());
+    timeBox_->setToolTip(tr("Current time in seconds. Type a time (1.25, 1.25 s, 40 ms) or an event number (#12) and press Return to go there"));
+    playback_->pause();
+    timeBox_->setModified(false);
+    if (request.event >= 0) {
+        playback_->setTime(playback_->eventTimes()[static_cast<std::size_t>(request.event)]);
+        emit eventRequested(request.event);
+    } else {
+        playback_->setTime(request.seconds);  // clamped to the shot
+    }
+    showTime(playback_->time());
+    timeBox_->selectAll();
 }
 
 }  // namespace cuelab
