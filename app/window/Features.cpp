@@ -6,7 +6,7 @@ namespace cuelab {
 
 void installFeatures(MainWindow& window)
 {
-    (void)window;
+    installEditor(window);
     installPlots(window);
     installOutcome(window);
     installExport(window);

@@ -11,6 +11,7 @@ class MainWindow;
 // Installs every feature, in a fixed order (the order of their docks in View > Panels).
 void installFeatures(MainWindow& window);
 
+void installEditor(MainWindow& window);   // undo history dock, the time box's event numbers (features/EditorFeature.cpp)
 void installPlots(MainWindow& window);    // issue 10: the Plots dock
 void installOutcome(MainWindow& window);  // issue 10: the Outcome dock and status line
 void installExport(MainWindow& window);   // issue 10: File > Export
