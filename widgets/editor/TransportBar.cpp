@@ -149,9 +149,9 @@ bool TransportBar::parseTimeRequest(const QString& text, TimeRequest* request, Q
     static const QRegularExpression timePattern(QStringLiteral(R"(^(\d+(?:[.,]\d*)?|[.,]\d+)(?:e([+-]?\d+))?\s*(s|ms)?$)"),
                                                 QRegularExpression::CaseInsensitiveOption);
     TimeRequest r;
-    if (const QRegularExpressionMatch m = eventPattern.match(t); m.hasMatch()) {
+    if (const QRegularExpressionMatch e = eventPattern.match(t); e.hasMatch()) {
         bool ok = false;
-        const int n = m.captured(1).toInt(&ok);
+        const int n = e.captured(1).toInt(&ok);
         if (!ok || n < 1) {
             if (error) *error = tr("Events are numbered from 1.");
             return false;
