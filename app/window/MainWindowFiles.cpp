@@ -119,18 +119,14 @@ bool MainWindow::openExample(const QString& resourcePath)
 
 bool MainWindow::save()
 {
-    return document_->filePath().isEmpty() ? saveAs() : saveFile(document_->filePath());
+    // A bundled example is never saved over (editor engineer's change: Document knows examples).
+    return document_->filePath().isEmpty() || document_->isBundledExample() ? saveAs() : saveFile(document_->filePath());
 }
 
 bool MainWindow::saveAs()
 {
-    QSettings settings;
-    QString suggestion = document_->filePath();
-    if (suggestion.isEmpty()) {
-        const QString dir = settings.value(QStringLiteral("files/lastDir"), QDir::homePath()).toString();
-        QString base = QFileInfo(document_->displayName()).completeBaseName();
-        suggestion = QDir(dir).filePath((base.isEmpty() ? tr("untitled") : base) + QStringLiteral(".json"));
-    }
+    // Never the bundled example itself (Document::suggestedSavePath; editor engineer's change).
+    const QString suggestion = document_->suggestedSavePath(QSettings().value(QStringLiteral("files/lastDir")).toString());
     QString path = QFileDialog::getSaveFileName(this, tr("Save Setup As"), suggestion, window::fileFilter());
     if (path.isEmpty()) return false;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");

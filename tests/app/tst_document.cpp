@@ -4,8 +4,10 @@
 
 #include "editor/Document.h"
 
+#include "LegalSetup.h"
 #include "SetupFile.h"
 
+#include <QDir>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -44,6 +46,9 @@ private slots:
     void saveAndOpenRoundTrip();
     void resultFollowsEveryEdit();
     void staleResultIsDropped();
+    void saveAsOnAnExampleProposesACopy();
+    void newBallsLandOnLegalSpots();
+    void refusalNamesTheEditedBall();
 };
 
 void TestDocument::editUndoRedo_data()
@@ -310,6 +315,74 @@ void TestDocument::staleResultIsDropped()
     QVERIFY(results.count() >= 1);
     QVERIFY(results.count() < 10);  // intermediate setups were never published
     QVERIFY((d.result()->balls[1].state.position - (start - Vec2(0.1, 0.0))).norm() < 1e-12);
+}
+
+void TestDocument::saveAsOnAnExampleProposesACopy()
+{
+    // Issue 12: Save As on an example proposed the bundled file itself.
+    const QString examples = QFileInfo(examplePath("half-ball-cut.json")).absolutePath();
+    QVERIFY(Document::isExampleFolder(examples));
+    QTemporaryDir mine;
+    QVERIFY(!Document::isExampleFolder(mine.path()));
+
+    Document d;
+    QString error;
+    QVERIFY2(d.load(examplePath("half-ball-cut.json"), &error), qPrintable(error));
+    QVERIFY(d.isBundledExample());
+    for (const QString& lastDir : {examples, QString()}) {
+        const QString proposed = d.suggestedSavePath(lastDir);
+        QCOMPARE(QFileInfo(proposed).fileName(), QStringLiteral("half-ball-cut.json"));
+        QVERIFY2(QFileInfo(proposed).absolutePath() != examples, qPrintable(proposed));
+    }
+    QCOMPARE(d.suggestedSavePath(mine.path()), QDir(mine.path()).filePath(QStringLiteral("half-ball-cut.json")));
+
+    // From the Examples menu (no file at all): the same.
+    QFile bundled(QStringLiteral(":/examples/half-ball-cut.json"));
+    QVERIFY(bundled.open(QIODevice::ReadOnly));
+    QVERIFY2(d.loadData(bundled.readAll(), QStringLiteral("half-ball-cut.json"), &error), qPrintable(error));
+    QVERIFY(d.isBundledExample());
+    QVERIFY(QFileInfo(d.suggestedSavePath(examples)).absolutePath() != examples);
+
+    // Saved as the user's own file, it is one: Save As proposes that file.
+    const QString own = mine.filePath(QStringLiteral("cut.json"));
+    QVERIFY2(d.save(own, &error), qPrintable(error));
+    QVERIFY(!d.isBundledExample());
+    QCOMPARE(d.suggestedSavePath(examples), QFileInfo(own).absoluteFilePath());
+    d.newDocument();
+    QVERIFY(!d.isBundledExample());
+}
+
+void TestDocument::newBallsLandOnLegalSpots()
+{
+    Document d;
+    QVERIFY(d.applyRack(RackPreset::NineBall));
+    for (int i = 0; i < 6; ++i) QVERIFY(d.addBall() >= 0);
+    QVERIFY(d.duplicateBall(3) >= 0);
+    QVERIFY(validateSetup(d.setup()).empty());
+    // Clear of every other ball by the editor's gap, not frozen to it.
+    const auto& balls = d.setup().balls;
+    for (std::size_t i = 0; i < balls.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (i >= 10 || j >= 10)  // a new ball against any other
+                QVERIFY((balls[i].state.position - balls[j].state.position).norm() - balls[i].radius - balls[j].radius > 0.5e-4);
+}
+
+void TestDocument::refusalNamesTheEditedBall()
+{
+    // Moving the cue ball onto the 1 ball names the cue ball (the one moved), with the other by id.
+    Document d;
+    QSignalSpy refused(&d, &Document::editRefused);
+    QVERIFY(!d.moveBall(0, ballAt(d, 1).state.position + Vec2(0.01, 0.0)));
+    QCOMPARE(refused.count(), 1);
+    const QString message = refused.front().front().toString();
+    QVERIFY2(message.startsWith(QLatin1String("Ball \"cue\" overlaps ball \"1\" by ")), qPrintable(message));
+    QVERIFY2(!message.contains(QLatin1String("balls[")), qPrintable(message));
+    // A value that is not about a ball names its field.
+    PhysicsParams p = d.setup().physics;
+    p.muRoll = 0.0;
+    QVERIFY(!d.setPhysics(p, QStringLiteral("mu"), 0));
+    QVERIFY2(refused.last().front().toString().startsWith(QLatin1String("physics.mu_roll: must be greater than 0")),
+             qPrintable(refused.last().front().toString()));
 }
 
 QTEST_MAIN(TestDocument)

@@ -1,5 +1,6 @@
 #include "BallsPanel.h"
 
+#include "BallEditor.h"
 #include "Document.h"
 #include "Quantities.h"
 
@@ -8,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QHeaderView>
 #include <QMenu>
+#include <QSplitter>
 #include <QSignalBlocker>
 #include <QStyledItemDelegate>
 #include <QTableWidget>
@@ -97,11 +99,19 @@ BallsPanel::BallsPanel(Document* document, QWidget* parent) : QWidget(parent), d
     rackButton->setPopupMode(QToolButton::InstantPopup);
     tools->addWidget(rackButton);
 
+    editor_ = new BallEditor(document_, this);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->setChildrenCollapsible(false);
+    split->addWidget(table_);
+    split->addWidget(editor_);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 0);
+
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
     layout->addWidget(tools);
-    layout->addWidget(table_);
+    layout->addWidget(split);
 
     connect(add_, &QAction::triggered, this, [this] {
         const int index = document_->addBall();
@@ -124,6 +134,7 @@ BallsPanel::BallsPanel(Document* document, QWidget* parent) : QWidget(parent), d
     });
     connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
         updateActions();
+        editor_->setBall(selectedBall());
         if (!refreshing_) emit ballSelected(selectedBall());
     });
     connect(document_, &Document::setupChanged, this, &BallsPanel::rebuild);
@@ -144,6 +155,7 @@ void BallsPanel::setSelectedBall(int index)
     if (index < 0 || index >= table_->rowCount()) table_->clearSelection();
     else table_->selectRow(index);
     refreshing_ = false;
+    editor_->setBall(selectedBall());
     updateActions();
 }
 
@@ -187,6 +199,7 @@ void BallsPanel::rebuild()
     }
     if (selected >= 0 && selected < table_->rowCount()) table_->selectRow(selected);
     refreshing_ = false;
+    editor_->setBall(selectedBall());
     refreshMotion();
     fitColumns();
     updateActions();
@@ -243,6 +256,7 @@ void BallsPanel::commitItem(int row, int column)
     } else {
         return;
     }
+    // The columns are the first BallProperty values (Id, X, Y): one merge field with the editor's.
     if (!document_->setBall(row, ball, text, column)) rebuild();  // refused: show the setup as it is
     document_->endMerge();  // a typed value is a step of its own
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The Balls dock: every ball with its set-up position (editable, in metres) and its state, position
-// and speed at the current time; add, remove, duplicate, and rack presets.
+// and speed at the current time; add, remove, duplicate, and rack presets; under the list, every
+// property of the selected ball (BallEditor).
 
 #include <QWidget>
 
@@ -10,6 +11,7 @@ class QTableWidget;
 
 namespace cuelab {
 
+class BallEditor;
 class Document;
 
 class BallsPanel : public QWidget {
@@ -24,6 +26,7 @@ public:
     QAction* removeBallAction() const { return remove_; }
     QAction* duplicateBallAction() const { return duplicate_; }
     QMenu* rackMenu() const { return rackMenu_; }
+    BallEditor* editor() const { return editor_; }
     int selectedBall() const;
 
 public slots:
@@ -42,6 +45,7 @@ private:
 
     Document* document_;
     QTableWidget* table_;
+    BallEditor* editor_;
     QAction* add_;
     QAction* remove_;
     QAction* duplicate_;

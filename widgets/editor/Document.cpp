@@ -1,10 +1,14 @@
 #include "Document.h"
 
+#include "LegalPlacement.h"
 #include "LegalSetup.h"
 #include "SetupFile.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QFile>
 #include <QFileInfo>
+#include <QStandardPaths>
 #include <QFutureWatcher>
 #include <QUndoStack>
 #include <QtConcurrent/QtConcurrentRun>
@@ -16,7 +20,9 @@ namespace cuelab {
 
 namespace {
 
-constexpr double kPlacementGap = 1e-4;  // m, the least gap between a newly placed ball and the others
+// m, the least gap between a ball the editor places (a new ball, a copy, a ball moved off a table
+// that shrank) and everything else: a visible gap, so that a new ball is not frozen to another.
+constexpr double kEditorGap = 1e-4;
 
 SimulationOutcome runSimulation(const Setup& setup, quint64 generation)
 {
@@ -46,13 +52,6 @@ Setup startingSetup()
     return s;
 }
 
-bool overlapsAny(const Setup& setup, const Vec2& p, double radius)
-{
-    for (const Ball& b : setup.balls)
-        if ((b.state.position - p).norm() < b.radius + radius + kPlacementGap) return true;
-    return false;
-}
-
 // The smallest positive integer id that is not taken ("1", "2", ...).
 std::string freeId(const Setup& setup)
 {
@@ -64,21 +63,22 @@ std::string freeId(const Setup& setup)
     }
 }
 
-// A free spot near `preferred`: tries a spiral of positions one diameter apart.
-std::optional<Vec2> freeSpot(const Setup& setup, const Table& table, const Vec2& preferred, double radius)
+// A free spot near `preferred` for a new ball of radius `radius`, clear of the others by the gap.
+std::optional<Vec2> freeSpot(const Setup& setup, const Vec2& preferred, double radius)
 {
-    const double step = 2.0 * radius + 2.0 * kPlacementGap;
-    for (int ring = 0; ring < 40; ++ring) {
-        const int count = ring == 0 ? 1 : 6 * ring;
-        for (int k = 0; k < count; ++k) {
-            const double angle = 2.0 * 3.14159265358979323846 * k / count;
-            const Vec2 p = preferred + ring * step * Vec2(std::cos(angle), std::sin(angle));
-            const bool onCloth = p.x() >= radius && p.x() <= table.length - radius && p.y() >= radius &&
-                                 p.y() <= table.width - radius;
-            if (onCloth && !overlapsAny(setup, p, radius)) return p;
-        }
-    }
-    return std::nullopt;
+    // The document's setup is always legal, so its table can be built.
+    return nearestLegalSpot(makeTable(setup.table), setup.balls, radius, preferred, kEditorGap, -1);
+}
+
+// The indices of the balls of `setup` whose place is illegal (not their values).
+std::vector<int> misplacedBalls(const Setup& setup)
+{
+    std::vector<int> out;
+    for (const SetupProblem& p : validateSetup(setup))
+        if (p.ballIndex >= 0 && p.path.size() > 9 && p.path.compare(p.path.size() - 9, 9, ".position") == 0 &&
+            (out.empty() || out.back() != p.ballIndex))
+            out.push_back(p.ballIndex);
+    return out;
 }
 
 }  // namespace
@@ -87,8 +87,10 @@ QString describeProblem(const SetupProblem& problem)
 {
     // The validator's message is a sentence that names the ball; the window shows it as one.
     QString text = QString::fromStdString(problem.message);
-    if (!text.isEmpty()) text[0] = text[0].toUpper();
-    if (!problem.ballId.empty() || problem.path.empty()) return text + QLatin1Char('.');
+    if (!problem.ballId.empty() || problem.path.empty()) {
+        if (!text.isEmpty()) text[0] = text[0].toUpper();
+        return text + QLatin1Char('.');
+    }
     return QStringLiteral("%1: %2.").arg(QString::fromStdString(problem.path), text);
 }
 
@@ -114,13 +116,18 @@ QString Document::displayName() const
 
 bool Document::isModified() const { return !undoStack_->isClean(); }
 
-void Document::newDocument() { replace(startingSetup(), QString(), tr("Untitled")); }
+void Document::newDocument()
+{
+    replace(startingSetup(), QString(), tr("Untitled"));
+    example_ = false;
+}
 
 bool Document::load(const QString& path, QString* error)
 {
     std::optional<Setup> loaded = io::loadSetup(path, error);
     if (!loaded) return false;
     replace(*loaded, QFileInfo(path).absoluteFilePath(), QString());
+    example_ = isExampleFolder(QFileInfo(path).absolutePath());
     return true;
 }
 
@@ -129,7 +136,34 @@ bool Document::loadData(const QByteArray& json, const QString& title, QString* e
     std::optional<Setup> loaded = io::parseSetup(json, title, error);
     if (!loaded) return false;
     replace(*loaded, QString(), title);
+    example_ = true;  // the Examples menu
     return true;
+}
+
+bool Document::isExampleFolder(const QString& dir)
+{
+    if (dir.startsWith(QLatin1Char(':'))) return true;
+    if (QFileInfo(dir).fileName() != QLatin1String("examples")) return false;
+    const QDir bundled(QStringLiteral(":/examples"));
+    for (const QString& name : bundled.entryList({QStringLiteral("*.json")}, QDir::Files)) {
+        QFile copy(QDir(dir).filePath(name));
+        QFile original(bundled.filePath(name));
+        if (copy.open(QIODevice::ReadOnly) && original.open(QIODevice::ReadOnly) && copy.readAll() == original.readAll())
+            return true;
+    }
+    return false;
+}
+
+QString Document::suggestedSavePath(const QString& lastDir) const
+{
+    if (!example_ && !filePath_.isEmpty()) return filePath_;
+    // An example is saved as the user's own copy: never over the bundled file, never among them.
+    QString dir = lastDir;
+    if (dir.isEmpty() || (example_ && isExampleFolder(dir)))
+        dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (dir.isEmpty()) dir = QDir::homePath();
+    const QString base = QFileInfo(displayName()).completeBaseName();
+    return QDir(dir).filePath((base.isEmpty() ? tr("untitled") : base) + QStringLiteral(".json"));
 }
 
 bool Document::save(const QString& path, QString* error)
@@ -137,6 +171,7 @@ bool Document::save(const QString& path, QString* error)
     if (!io::saveSetup(setup_, path, error)) return false;
     const QString absolute = QFileInfo(path).absoluteFilePath();
     undoStack_->setClean();
+    example_ = isExampleFolder(QFileInfo(absolute).absolutePath());  // saved elsewhere: the user's own file now
     if (absolute != filePath_) {
         filePath_ = absolute;
         emit filePathChanged(filePath_);
@@ -156,8 +191,15 @@ void Document::replace(const Setup& setup, const QString& path, const QString& t
     emit documentReplaced();
 }
 
-bool Document::validate(const Setup& setup, QString* error) const
+bool Document::validate(const Setup& setup, QString* error, int ball) const
 {
+    if (ball >= 0) {
+        const std::vector<SetupProblem> own = validateBall(setup, static_cast<std::size_t>(ball));
+        if (!own.empty()) {
+            if (error) *error = describeProblem(own.front());
+            return false;
+        }
+    }
     // The one validator of a legal setup (core/setup) is the authority, the same the loader asks:
     // an edit is accepted exactly when the setup could be saved and opened again. It checks the
     // values directly (no round trip through the file's text), and its message names the ball.
@@ -178,6 +220,17 @@ bool Document::edit(const QString& text, const Setup& after, MergeKey merge)
     return true;
 }
 
+bool Document::editBall(int index, const QString& text, const Setup& after, MergeKey merge)
+{
+    QString error;
+    if (!validate(after, &error, index)) {
+        emit editRefused(error);
+        return false;
+    }
+    undoStack_->push(new SetupCommand(this, text, setup_, after, merge, mergeSession_));
+    return true;
+}
+
 void Document::endMerge() { ++mergeSession_; }
 
 bool Document::moveBall(int index, const Vec2& position)
@@ -186,7 +239,7 @@ bool Document::moveBall(int index, const Vec2& position)
     Setup after = setup_;
     Ball& ball = after.balls[static_cast<std::size_t>(index)];
     ball.state.position = position;
-    return edit(tr("Move ball %1").arg(QString::fromStdString(ball.id)), after, {MergeKind::MoveBall, index});
+    return editBall(index, tr("Move ball %1").arg(QString::fromStdString(ball.id)), after, {MergeKind::MoveBall, index});
 }
 
 bool Document::setBall(int index, const Ball& ball, const QString& text, int field)
@@ -194,16 +247,28 @@ bool Document::setBall(int index, const Ball& ball, const QString& text, int fie
     if (index < 0 || index >= static_cast<int>(setup_.balls.size())) return false;
     Setup after = setup_;
     const std::string oldId = after.balls[static_cast<std::size_t>(index)].id;
-    after.balls[static_cast<std::size_t>(index)] = ball;
+    Ball& changed = after.balls[static_cast<std::size_t>(index)];
+    changed = ball;
+    // The motion state follows the numbers (as the loader classifies a file's ball).
+    changed.state.motion = classify(changed.state, changed.radius);
+    changed.state.pocket = -1;
     if (after.shot && after.shot->ball == oldId) after.shot->ball = ball.id;  // a rename keeps the shot
-    return edit(text, after, {MergeKind::BallField, index * 16 + field});
+    return editBall(index, text, after, {MergeKind::BallField, index * 16 + field});
+}
+
+bool Document::setBallVelocity(int index, const Vec2& velocity)
+{
+    if (index < 0 || index >= static_cast<int>(setup_.balls.size())) return false;
+    Ball ball = setup_.balls[static_cast<std::size_t>(index)];
+    ball.state.velocity = velocity;
+    return setBall(index, ball, tr("Set the velocity of ball %1").arg(QString::fromStdString(ball.id)),
+                   static_cast<int>(BallProperty::Vx));
 }
 
 int Document::addBall()
 {
     const Table table = makeTable(setup_.table);
-    const std::optional<Vec2> spot =
-        freeSpot(setup_, table, Vec2(0.5 * table.length, 0.5 * table.width), table.ballRadius);
+    const std::optional<Vec2> spot = freeSpot(setup_, Vec2(0.5 * table.length, 0.5 * table.width), table.ballRadius);
     if (!spot) {
         emit editRefused(tr("There is no free place on the table for another ball."));
         return -1;
@@ -236,9 +301,8 @@ bool Document::removeBall(int index)
 int Document::duplicateBall(int index)
 {
     if (index < 0 || index >= static_cast<int>(setup_.balls.size())) return -1;
-    const Table table = makeTable(setup_.table);
     Ball copy = setup_.balls[static_cast<std::size_t>(index)];
-    const std::optional<Vec2> spot = freeSpot(setup_, table, copy.state.position, copy.radius);
+    const std::optional<Vec2> spot = freeSpot(setup_, copy.state.position, copy.radius);
     if (!spot) {
         emit editRefused(tr("There is no free place on the table for another ball."));
         return -1;
@@ -313,6 +377,41 @@ bool Document::setTable(const TableSpec& table, const QString& text)
     Setup after = setup_;
     after.table = table;
     return edit(text, after);
+}
+
+QStringList Document::ballsOffTable(const TableSpec& table) const
+{
+    Setup after = setup_;
+    after.table = table;
+    QStringList ids;
+    for (int i : misplacedBalls(after)) ids << QString::fromStdString(after.balls[static_cast<std::size_t>(i)].id);
+    return ids;
+}
+
+bool Document::setTableMovingBalls(const TableSpec& table, const QString& text, QStringList* moved)
+{
+    Setup after = setup_;
+    after.table = table;
+    QStringList ids;
+    // Ball by ball, in the order of the list: each misplaced ball goes to the legal spot nearest to
+    // where it stood, among the balls as they stand by then (those moved before it included).
+    for (int i : misplacedBalls(after)) {
+        Ball& ball = after.balls[static_cast<std::size_t>(i)];
+        if (!validateBall(after, static_cast<std::size_t>(i)).empty()) {
+            const std::optional<Vec2> spot =
+                nearestLegalSpot(after, static_cast<std::size_t>(i), ball.state.position, kEditorGap);
+            if (!spot) {
+                emit editRefused(tr("There is no free place on the new table for ball \"%1\".").arg(QString::fromStdString(ball.id)));
+                return false;
+            }
+            ball.state.position = *spot;
+            ids << QString::fromStdString(ball.id);
+        }
+    }
+    if (moved) *moved = ids;
+    const QString step = ids.isEmpty() ? text : tr("%1, moving %n ball(s): %2", nullptr, static_cast<int>(ids.size()))
+                                                    .arg(text, ids.join(QStringLiteral(", ")));
+    return edit(step, after);
 }
 
 void Document::applySetup(const Setup& setup)

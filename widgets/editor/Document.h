@@ -12,6 +12,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <memory>
 #include <optional>
@@ -28,6 +29,10 @@ namespace cuelab {
 // A validator's problem as the window shows it: "Ball "3" is outside the playing surface (...)."; a
 // problem not about a ball names its field: "physics.mu_roll: must be greater than 0 (found 0).".
 QString describeProblem(const SetupProblem& problem);
+
+// The properties of a ball that an edit changes, as the `field` of Document::setBall (one undo step
+// per property; repeated edits of the same property of the same ball merge until endMerge()).
+enum class BallProperty : int { Id = 0, X, Y, Vx, Vy, Wx, Wy, Wz, Radius, Mass };
 
 struct SimulationOutcome {
     std::shared_ptr<const SimulationResult> result;  // null when the simulator threw
@@ -62,6 +67,16 @@ public:
     bool loadData(const QByteArray& json, const QString& title, QString* error);
     bool save(const QString& path, QString* error);
 
+    // Whether the document came from one of CueLab's bundled examples: the Examples menu
+    // (loadData), or a file of a folder of examples (an installed or source-tree copy of them).
+    bool isBundledExample() const { return example_; }
+    // Where Save As should propose to save: the document's own file; for an example never the
+    // bundled file itself (nor its folder), but `lastDir` or the user's documents folder, with the
+    // example's name.
+    QString suggestedSavePath(const QString& lastDir) const;
+    // A folder named "examples" that holds a byte-identical copy of a compiled-in example (":/examples").
+    static bool isExampleFolder(const QString& dir);
+
     // Edits. Each call is one undo step, except that consecutive edits with the same MergeKey merge
     // until endMerge(). An edit whose setup the file format would refuse (a ball off the cloth, two
     // balls overlapping, ...) is not applied: editRefused carries the validator's message.
@@ -69,7 +84,10 @@ public:
     void endMerge();  // the next edit starts a new undo step (drag released, slider let go)
 
     bool moveBall(int index, const Vec2& position);  // merges while dragging
+    // Any property of a ball (a rename keeps the shot on it); `field` is a BallProperty.
     bool setBall(int index, const Ball& ball, const QString& text, int field);
+    // The ball's velocity at t = 0 (m/s), as an arrow dragged in the view sets it: merges while dragging.
+    bool setBallVelocity(int index, const Vec2& velocity);
     int addBall();                                   // a new ball on a free spot; its index or -1
     bool removeBall(int index);
     int duplicateBall(int index);                    // the copy's index or -1
@@ -79,6 +97,12 @@ public:
     bool setShot(const std::optional<CueStrike>& shot, const QString& text, int field);
     bool setSimulationSettings(const SimulationSettings& settings, const QString& text, int field);
     bool setTable(const TableSpec& table, const QString& text);
+    // The same table change, with every ball that would lie off the new table (outside it, in a
+    // pocket, on a cushion or another ball) moved to the nearest legal spot: one undo step. Refused
+    // (false, editRefused) when some ball has no legal spot. *moved gets the ids of the moved balls.
+    bool setTableMovingBalls(const TableSpec& table, const QString& text, QStringList* moved = nullptr);
+    // The ids of the balls that would stand illegally on `table` (what setTableMovingBalls moves).
+    QStringList ballsOffTable(const TableSpec& table) const;
 
     // Blocks (processing events) until the result belongs to the current setup. For tests and for
     // callers that need the result right now; the window itself never waits.
@@ -98,7 +122,10 @@ private:
     friend class SetupCommand;
     void applySetup(const Setup& setup);  // called by commands only
     void replace(const Setup& setup, const QString& path, const QString& title);
-    bool validate(const Setup& setup, QString* error) const;
+    // `ball` >= 0: that ball's own problems are looked for first, so that the message speaks of the
+    // ball being edited ("ball "cue" overlaps ball "1"", not "ball "1" overlaps ball "cue"").
+    bool validate(const Setup& setup, QString* error, int ball = -1) const;
+    bool editBall(int index, const QString& text, const Setup& after, MergeKey merge);
     void scheduleSimulation();
     void startSimulation();
     void simulationFinished();
@@ -106,6 +133,7 @@ private:
     Setup setup_;
     QString filePath_;
     QString untitledTitle_;
+    bool example_ = false;
     QUndoStack* undoStack_;
     int mergeSession_ = 0;
 

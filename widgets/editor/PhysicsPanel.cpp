@@ -11,6 +11,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
@@ -29,7 +30,7 @@ PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent
         tableKind_->addItem(QStringLiteral("%1 (%2 × %3 m)").arg(toQString(toString(kind)), formatNumber(t.length, 3), formatNumber(t.width, 3)),
                             static_cast<int>(kind));
     }
-    tableKind_->setToolTip(tr("The table: playing surface between the cushion noses in metres, pockets and cushions of the preset. The balls keep their size and place; a ball that would lie off the cloth refuses the change."));
+    tableKind_->setToolTip(tr("The table: playing surface between the cushion noses in metres, pockets and cushions of the preset. The balls keep their size and place; balls that would lie off the new cloth can be moved to the nearest free spots."));
     pockets_ = new QCheckBox(tr("Pockets"), this);
     pockets_->setToolTip(tr("Without pockets the rails are closed all round (a carom table never has pockets)"));
     gravity_ = makeSpinBox({0.1, 30.0, 3, 0.01, tr("m/s²"), tr("Gravitational acceleration g in m/s² (9.81 on Earth)")}, this);
@@ -183,7 +184,35 @@ void PhysicsPanel::commitTable(const QString& text)
         table.kind = kind;
     }
     table.pockets = pockets_->isChecked() || kind == TableKind::Carom;
+    // Balls that would stand off the new table (a smaller table, pockets opened under them): offer to
+    // move them to the nearest legal spots rather than only refusing.
+    const QStringList off = document_->ballsOffTable(table);
+    if (!off.isEmpty()) {
+        refresh();  // the panel shows the current table until the user decides
+        if (askToMoveBalls(table, off) && document_->setTableMovingBalls(table, text)) return;
+        refresh();
+        return;
+    }
     if (!document_->setTable(table, text)) refresh();
+}
+
+bool PhysicsPanel::askToMoveBalls(const TableSpec& table, const QStringList& ids)
+{
+    const Table t = makeTable(table);
+    QStringList quoted;
+    for (const QString& id : ids) quoted << QStringLiteral("\u201c%1\u201d").arg(id);
+    QMessageBox box(QMessageBox::Question, tr("Balls Off the New Table"),
+                    tr("On the %1 table (%2 × %3 m), %n ball(s) would lie off the cloth, in a pocket or on "
+                       "another ball: %4.", nullptr, static_cast<int>(ids.size()))
+                        .arg(toQString(toString(table.kind)), formatNumber(t.length, 3), formatNumber(t.width, 3),
+                             quoted.join(QStringLiteral(", "))),
+                    QMessageBox::Cancel, this);
+    box.setObjectName(QStringLiteral("moveBallsQuestion"));
+    box.setInformativeText(tr("Move them to the nearest free spots? The table change and the moves are one undo step."));
+    QPushButton* move = box.addButton(tr("&Move Balls"), QMessageBox::AcceptRole);
+    box.setDefaultButton(move);
+    box.exec();
+    return box.clickedButton() == move;
 }
 
 void PhysicsPanel::commitSimulation(Field field, const QString& text)

@@ -11,6 +11,8 @@ class QPushButton;
 
 namespace cuelab {
 
+struct TableSpec;
+
 class Document;
 
 class PhysicsPanel : public QWidget {
@@ -27,6 +29,7 @@ private:
     void commitPhysics(Field field, const QString& text);
     void commitSimulation(Field field, const QString& text);
     void commitTable(const QString& text);
+    bool askToMoveBalls(const TableSpec& table, const QStringList& ids);  // true: move them
 
     Document* document_;
     QComboBox* tableKind_;
