@@ -238,10 +238,10 @@ void TestBallEditor::arrowDragIsOneStep()
     d.endMerge();
     QCOMPARE(d.undoStack()->count(), 1);
     QVERIFY((d.setup().balls[1].state.velocity - Vec2(1.0, -0.5)).norm() < 1e-12);
-    QCOMPARE(d.setup().balls[1].state.motion, MotionState::Sliding);  // classified like a loaded ball
+    QVERIFY(d.setup().balls[1].state.motion == MotionState::Sliding);  // classified like a loaded ball
     QVERIFY(d.setBallVelocity(1, Vec2(0.0, 0.0)));
     QCOMPARE(d.undoStack()->count(), 2);
-    QCOMPARE(d.setup().balls[1].state.motion, MotionState::Stationary);
+    QVERIFY(d.setup().balls[1].state.motion == MotionState::Stationary);
     d.undoStack()->undo();
     d.undoStack()->undo();
     QCOMPARE(d.setup().balls[1].state.velocity, Vec2(0.0, 0.0));
