@@ -8,6 +8,7 @@
 #include "editor/EventsPanel.h"
 #include "editor/PhysicsPanel.h"
 #include "editor/ShotPanel.h"
+#include "FrameTimes.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -22,6 +23,8 @@
 #include <QTreeView>
 #include <QToolButton>
 #include <QUndoStack>
+#include "FrameTimes.h"
+
 #include <QtTest>
 
 using namespace cuelab;
@@ -277,7 +280,16 @@ void TestPanels::eventListWithoutChangesOfMotion()
     QCOMPARE(panel.selectedEvent(), listed.back());
     // Showing them again keeps the selection on the same event.
     kinds->setCurrentIndex(kinds->findData(static_cast<int>(EventFilter::Kinds::All)));
-    QCOMPARE(table->model()->rowCount(), static_cast<int>(events.size()));
+    // Every event again, those at one instant (the strike and the start of sliding) in one row.
+    int instants = 0;
+    double start = 0.0;  // the time of the current instant's first event
+    for (std::size_t i = 0; i < events.size(); ++i)
+        if (i == 0 || events[i].time - start > kSameMoment) {
+            ++instants;
+            start = events[i].time;
+        }
+    QVERIFY(instants < static_cast<int>(events.size()));
+    QCOMPARE(table->model()->rowCount(), instants);
     QCOMPARE(panel.selectedEvent(), listed.back());
 }
 

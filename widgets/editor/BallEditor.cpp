@@ -93,8 +93,8 @@ BallEditor::BallEditor(Document* document, QWidget* parent) : QWidget(parent), d
     spin(BallProperty::Wx, {-1000.0, 1000.0, 2, 1.0, tr("rad/s"), tr("Angular velocity about the length axis x at t = 0, in rad/s")});
     spin(BallProperty::Wy, {-1000.0, 1000.0, 2, 1.0, tr("rad/s"), tr("Angular velocity about the width axis y at t = 0, in rad/s (rolling along +x: wy = vx / R)")});
     spin(BallProperty::Wz, {-1000.0, 1000.0, 2, 1.0, tr("rad/s"), tr("Angular velocity about the vertical axis z at t = 0, in rad/s (side spin)")});
-    spin(BallProperty::Radius, {0.0, 0.5, 5, 0.0005, tr("m"), tr("Radius of the ball in metres (pool 0.028575 m, snooker 0.02619 m, carom 0.03075 m)")});
-    spin(BallProperty::Mass, {0.0, 5.0, 4, 0.005, tr("kg"), tr("Mass of the ball in kg (pool 0.170 kg, snooker 0.140 kg, carom 0.210 kg)")});
+    spin(BallProperty::Radius, {0.0, 0.5, 6, 0.0005, tr("m"), tr("Radius of the ball in metres (pool 0.028575 m, snooker 0.02625 m, carom 0.03075 m)")});
+    spin(BallProperty::Mass, {0.0, 5.0, 6, 0.005, tr("kg"), tr("Mass of the ball in kg (pool 0.170 kg, snooker 0.140 kg, carom 0.210 kg)")});
 
     problem_ = new QLabel(this);
     problem_->setWordWrap(true);

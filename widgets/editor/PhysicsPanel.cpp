@@ -25,6 +25,7 @@ constexpr double kMsPerS = 1000.0;
 PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent), document_(document)
 {
     tableKind_ = new QComboBox(this);
+    tableKind_->setObjectName(QStringLiteral("tableKind"));
     for (TableKind kind : {TableKind::Pool9ft, TableKind::Pool8ft, TableKind::Pool7ft, TableKind::Snooker, TableKind::Carom}) {
         const Table t = makeTable(kind);
         tableKind_->addItem(QStringLiteral("%1 (%2 × %3 m)").arg(toQString(toString(kind)), formatNumber(t.length, 3), formatNumber(t.width, 3)),
