@@ -20,7 +20,7 @@ namespace cuelab {
 
 namespace {
 
-constexpr double kSameInstantPx = 90.0;  // logical pixels: equal times closer than this share a label
+constexpr double kSameInstantPx = 160.0;  // logical pixels: equal times closer than this share a label
 
 std::optional<QPointF> toScreen(const LabelFrame& frame, const QVector3D& world)
 {

@@ -339,7 +339,12 @@ std::vector<MeshVertex> buildTableMesh(const Table& table)
         for (double x : {L / 4.0, 0.75 * L}) mesh.disc(Vec2(x, W / 2.0), 0.005, spotZ, kPearl, SurfaceMaterial::Sight, 12);
     }
 
-    // Pocket pits: a wall from the surface down, and a floor. Seen only through the pocket cut.
+    // Pocket pits: a wall from the surface down, and a floor. Seen only through the pocket cut. The
+    // wall fades from the leather liner's brown at the rim to black at the bottom, so that a pocket
+    // reads as a hole (not a flat blob) in a perspective view; where the cut crosses the rail top, a
+    // leather lip frames the hole.
+    const QVector3D pitTop(0.30f, 0.20f, 0.13f), pitBottom = 0.15f * kPit, lip(0.20f, 0.12f, 0.07f);
+    constexpr double kLipWidth = 0.007;  // m
     for (const Pocket& p : table.pockets) {
         const int segments = 48;
         for (int i = 0; i < segments; ++i) {
@@ -351,12 +356,20 @@ std::vector<MeshVertex> buildTableMesh(const Table& table)
                          top1 = surfaceHeight(table, dims, footprints, p1);
             const float m = static_cast<float>(SurfaceMaterial::PocketPit);
             // Inner wall: the normal points to the pit's axis.
-            const MeshVertex b0{at(p0, -dims.pitDepth), at(-d0, 0), kPit, m}, b1{at(p1, -dims.pitDepth), at(-d1, 0), kPit, m};
-            const MeshVertex t0{at(p0, top0), at(-d0, 0), kPit, m}, t1{at(p1, top1), at(-d1, 0), kPit, m};
+            const MeshVertex b0{at(p0, -dims.pitDepth), at(-d0, 0), pitBottom, m}, b1{at(p1, -dims.pitDepth), at(-d1, 0), pitBottom, m};
+            const MeshVertex t0{at(p0, top0), at(-d0, 0), pitTop, m}, t1{at(p1, top1), at(-d1, 0), pitTop, m};
             mesh.triangle(b0, b1, t1);
             mesh.triangle(b0, t1, t0);
+            // The lip, on the rail top only (never on the cloth or a cushion).
+            const Vec2 q0 = p.centre + (p.radius + kLipWidth) * d0, q1 = p.centre + (p.radius + kLipWidth) * d1;
+            const double railTop = dims.railTop;
+            if (top0 >= railTop && top1 >= railTop && surfaceHeight(table, dims, footprints, q0) >= railTop &&
+                surfaceHeight(table, dims, footprints, q1) >= railTop) {
+                const double lz = railTop + 0.0004;
+                mesh.quad(at(p0, lz), at(q0, lz), at(q1, lz), at(p1, lz), kUp, lip, SurfaceMaterial::Sight);
+            }
         }
-        mesh.disc(p.centre, p.radius, -dims.pitDepth, 0.5f * kPit, SurfaceMaterial::PocketPit, segments);
+        mesh.disc(p.centre, p.radius, -dims.pitDepth, pitBottom, SurfaceMaterial::PocketPit, segments);
     }
     return out;
 }
