@@ -10,6 +10,7 @@ void installFeatures(MainWindow& window)
     installPlots(window);
     installOutcome(window);
     installExport(window);
+    installExplain(window);
 }
 
 }  // namespace cuelab

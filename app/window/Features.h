@@ -15,5 +15,6 @@ void installEditor(MainWindow& window);   // undo history dock, the time box's e
 void installPlots(MainWindow& window);    // issue 10: the Plots dock
 void installOutcome(MainWindow& window);  // issue 10: the Outcome dock and status line
 void installExport(MainWindow& window);   // issue 10: File > Export
+void installExplain(MainWindow& window);  // features/ExplainFeature.cpp: Explain and Lesson docks, export
 
 }  // namespace cuelab

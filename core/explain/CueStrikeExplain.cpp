@@ -37,7 +37,7 @@ void explainCueStrike(const SimulationResult& r, int index, const std::optional<
         .out("b", "b", t.b, "m")
         .out("c", "c", t.c, "m")
         .out("d", "d", t.heading, "")
-        .out("e", "e = cos θ d − sin θ z", t.axis, "")
+        .out("e", "e", t.axis, "")
         .out("Q", "Q", t.contact, "m");
     StepBuilder(e.steps, "Impulse of the tip (Alciatore TP A-30)",
                 "The cue (mass M at speed V_0) hits the ball elastically at Q along e. Momentum and energy of cue "
@@ -56,7 +56,7 @@ void explainCueStrike(const SimulationResult& r, int index, const std::optional<
                 "v′ = v + (F cos θ / m) d,   ω′ = ω + Q × (F e) / I")
         .out("v_after", "v′", res.after.velocity, "m/s")
         .out("w_after", "ω′", res.after.spin, "rad/s")
-        .out("J", "J = F e", res.impulse, "N s")
+        .out("J", "J", res.impulse, "N s")
         .out("u_after", "|u′|", slipVelocity(res.after, ball.radius).norm(), "m/s");
     e.steps.back().law += " The ball leaves " + std::string(toString(ev.after[0].motion)) + ".";
     const double cueEnergy = 0.5 * shot->cueMass * shot->speed * shot->speed;

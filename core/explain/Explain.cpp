@@ -141,8 +141,10 @@ void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball
     const double R = r.balls.at(static_cast<std::size_t>(ball)).radius;
     const Path path = pathOf(seg.state, R, r.physics);
     const BallState at = evolve(seg.state, R, r.physics, t - seg.start);
-    const std::string sub = letter.empty() ? std::string() : "_" + letter;
     const std::string key = letter.empty() ? std::string() : "_" + letter;
+    // Symbols: r_0 or r_{0,a}; r or r_a.
+    auto at0 = [&](const std::string& s) { return letter.empty() ? s + "_0" : s + "_{0," + letter + "}"; };
+    auto now = [&](const std::string& s) { return letter.empty() ? s : s + "_" + letter; };
     std::string law = "Since t_{start} " + ballName(r, ball) + " has been " + std::string(toString(seg.state.motion)) +
                       ": in closed form its centre moves on a parabola with constant acceleration ";
     switch (seg.state.motion) {
@@ -152,14 +154,14 @@ void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball
     }
     StepBuilder(steps, "Motion of " + ballName(r, ball) + " up to the event", law,
                 "r(τ) = r_0 + v_0 τ + ½ a τ^2,   v(τ) = v_0 + a τ,   τ = t − t_{start}")
-        .in("t_start" + key, "t_{start}" + sub, seg.start, "s")
-        .in("r0" + key, "r_0" + sub, seg.state.position, "m")
-        .in("v0" + key, "v_0" + sub, seg.state.velocity, "m/s")
-        .in("w0" + key, "ω_0" + sub, seg.state.spin, "rad/s")
-        .in("a" + key, "a" + sub, Vec2(2.0 * path.c2), "m/s²")
-        .out("r" + key, "r" + sub, at.position, "m")
-        .out("v" + key, "v" + sub, at.velocity, "m/s")
-        .out("w" + key, "ω" + sub, at.spin, "rad/s");
+        .in("t_start" + key, letter.empty() ? "t_{start}" : "t_{start," + letter + "}", seg.start, "s")
+        .in("r0" + key, at0("r"), seg.state.position, "m")
+        .in("v0" + key, at0("v"), seg.state.velocity, "m/s")
+        .in("w0" + key, at0("ω"), seg.state.spin, "rad/s")
+        .in("a" + key, now("a"), Vec2(2.0 * path.c2), "m/s²")
+        .out("r" + key, now("r"), at.position, "m")
+        .out("v" + key, now("v"), at.velocity, "m/s")
+        .out("w" + key, now("ω"), at.spin, "rad/s");
 }
 
 void addEnergyStep(Explanation& e, const std::string& where)

@@ -71,22 +71,27 @@ const std::map<std::string, std::string>& subscripts()
     return m;
 }
 
-// The script in Unicode when every character has a form, else `mark(...)` / `mark` + one char.
+// The script in Unicode when it is one character or only digits and every character has a form;
+// otherwise `_name` or `_(a,x)` (a mix of Unicode and plain letters reads worse than either).
 std::string unicodeScript(const std::string& inner, bool super)
 {
     const auto& table = super ? superscripts() : subscripts();
+    const std::string mark = super ? "^" : "_";
+    bool digits = true;
+    for (char c : inner) digits = digits && ((c >= '0' && c <= '9') || c == '-');
+    const bool single = !inner.empty() && charLength(inner, 0) == inner.size();
     std::string out;
-    for (std::size_t i = 0; i < inner.size();) {
+    bool mapped = super || single || digits;
+    for (std::size_t i = 0; i < inner.size() && mapped;) {
         const std::size_t n = charLength(inner, i);
         const auto it = table.find(inner.substr(i, n));
-        if (it == table.end()) {
-            const std::string mark = super ? "^" : "_";
-            return inner.size() == n ? mark + inner : mark + "(" + inner + ")";
-        }
-        out += it->second;
+        if (it == table.end()) mapped = false;
+        else out += it->second;
         i += n;
     }
-    return out;
+    if (mapped) return out;
+    const bool plain = inner.find_first_of(", +") == std::string::npos;
+    return plain ? mark + inner : mark + "(" + inner + ")";
 }
 
 std::string unitText(const std::string& unit) { return unit.empty() ? std::string() : " " + unit; }

@@ -365,6 +365,15 @@ bool Document::setShot(const std::optional<CueStrike>& shot, const QString& text
     return edit(text, after, {MergeKind::Shot, field});
 }
 
+bool Document::setLesson(const std::string& name, const std::string& notes)
+{
+    if (name == setup_.name && notes == setup_.notes) return false;
+    Setup after = setup_;
+    after.name = name;
+    after.notes = notes;
+    return edit(name != setup_.name ? tr("Rename the lesson") : tr("Edit the lesson's notes"), after);
+}
+
 bool Document::setSimulationSettings(const SimulationSettings& settings, const QString& text, int field)
 {
     Setup after = setup_;

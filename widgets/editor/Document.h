@@ -103,6 +103,9 @@ public:
     bool setTableMovingBalls(const TableSpec& table, const QString& text, QStringList* moved = nullptr);
     // The ids of the balls that would stand illegally on `table` (what setTableMovingBalls moves).
     QStringList ballsOffTable(const TableSpec& table) const;
+    // The setup's lesson (its name and notes, saved with the file): one undo step; no step when
+    // neither changes.
+    bool setLesson(const std::string& name, const std::string& notes);
 
     // Blocks (processing events) until the result belongs to the current setup. For tests and for
     // callers that need the result right now; the window itself never waits.

@@ -31,7 +31,7 @@ BallBallResult explainFrictionless(const BallBallInput& in, std::vector<Step>& s
         .out("v_b_after", "v′_b", r.b.velocity, "m/s")
         .out("w_a_after", "ω′_a", r.a.spin, "rad/s")
         .out("w_b_after", "ω′_b", r.b.spin, "rad/s")
-        .out("J", "J = −P_n n", r.impulse, "N s");
+        .out("J", "J", r.impulse, "N s");
     return r;
 }
 

@@ -1,0 +1,161 @@
+#include "ConservationWidget.h"
+
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cuelab {
+
+namespace {
+
+const QColor kBodyColours[] = {QColor(40, 110, 220), QColor(230, 130, 20)};
+
+void arrow(QPainter& p, const QPointF& from, const QPointF& to, const QColor& colour, Qt::PenStyle style = Qt::SolidLine)
+{
+    p.setPen(QPen(colour, 2.0, style, Qt::RoundCap));
+    p.drawLine(from, to);
+    const QPointF d = to - from;
+    const double len = std::hypot(d.x(), d.y());
+    if (len < 1.0) return;
+    const QPointF u = d / len;
+    const QPointF n(-u.y(), u.x());
+    const double head = std::min(8.0, 0.4 * len);
+    QPainterPath tip;
+    tip.moveTo(to);
+    tip.lineTo(to - head * u + 0.5 * head * n);
+    tip.lineTo(to - head * u - 0.5 * head * n);
+    tip.closeSubpath();
+    p.setPen(Qt::NoPen);
+    p.setBrush(colour);
+    p.drawPath(tip);
+    p.setBrush(Qt::NoBrush);
+}
+
+}  // namespace
+
+ConservationWidget::ConservationWidget(QWidget* parent) : QWidget(parent)
+{
+    setMinimumSize(240, 160);
+    setToolTip(tr("Left: each ball's momentum m·v (N s) drawn tip to tail, before and after, with their total "
+                  "(dashed). Right: kinetic energy (J) before and after, translation (solid) and rotation "
+                  "(light)."));
+}
+
+void ConservationWidget::setExplanation(const explain::Explanation* e)
+{
+    bodies_ = e ? e->bodies : std::vector<explain::Body>{};
+    cushion_ = e && (e->kind == EventKind::BallCushion || e->kind == EventKind::BallJaw);
+    cushionImpulse_ = e ? Vec2(e->impulse.head<2>()) : Vec2::Zero();
+    update();
+}
+
+void ConservationWidget::paintEvent(QPaintEvent*)
+{
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.fillRect(rect(), palette().base());
+    if (bodies_.empty()) {
+        p.setPen(palette().color(QPalette::Disabled, QPalette::Text));
+        p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, tr("Momenta and energy of the selected event"));
+        return;
+    }
+    const QRectF all = QRectF(rect()).adjusted(4, 4, -4, -4);
+    const double split = all.width() * 0.62;
+    paintMomenta(p, QRectF(all.left(), all.top(), split - 4, all.height()));
+    paintEnergy(p, QRectF(all.left() + split + 4, all.top(), all.width() - split - 4, all.height()));
+}
+
+void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
+{
+    p.setPen(palette().color(QPalette::Text));
+    p.drawText(area.adjusted(0, 0, 0, -area.height() + 16), Qt::AlignLeft, tr("Momentum (N s)"));
+    const QRectF body = area.adjusted(0, 18, 0, -14);
+    // Two panels, before and after, one scale for both: the longest chain of arrows fits.
+    double longest = 1e-9;
+    Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+    for (int phase = 0; phase < 2; ++phase) {
+        Vec2 tip = Vec2::Zero();
+        for (const explain::Body& b : bodies_) {
+            tip += phase == 0 ? b.momentumBefore() : b.momentumAfter();
+            lo = lo.cwiseMin(tip);
+            hi = hi.cwiseMax(tip);
+        }
+        longest = std::max(longest, (hi - lo).maxCoeff());
+    }
+    const double panelW = body.width() / 2.0 - 6.0;
+    const double scale = 0.8 * std::min(panelW, body.height()) / longest;  // px per N s
+    for (int phase = 0; phase < 2; ++phase) {
+        const QRectF panel(body.left() + phase * (panelW + 12.0), body.top(), panelW, body.height());
+        p.setPen(QPen(palette().color(QPalette::Mid), 1.0));
+        p.drawRect(panel);
+        p.setPen(palette().color(QPalette::Text));
+        p.drawText(QRectF(panel.left(), panel.bottom() + 1, panel.width(), 13), Qt::AlignCenter,
+                   phase == 0 ? tr("before") : tr("after"));
+        // Centre the chain's bounding box in the panel (y up on the table, down on screen).
+        const Vec2 mid = 0.5 * (lo + hi);
+        auto toScreen = [&](const Vec2& v) {
+            return QPointF(panel.center().x() + (v.x() - mid.x()) * scale, panel.center().y() - (v.y() - mid.y()) * scale);
+        };
+        Vec2 tip = Vec2::Zero();
+        for (std::size_t k = 0; k < bodies_.size(); ++k) {
+            const Vec2 pk = phase == 0 ? bodies_[k].momentumBefore() : bodies_[k].momentumAfter();
+            arrow(p, toScreen(tip), toScreen(tip + pk), kBodyColours[k % 2]);
+            p.setPen(kBodyColours[k % 2]);
+            p.drawText(toScreen(tip + 0.5 * pk) + QPointF(4, -4), QString::fromStdString(bodies_[k].id));
+            tip += pk;
+        }
+        if (bodies_.size() > 1) arrow(p, toScreen(Vec2::Zero()), toScreen(tip), palette().color(QPalette::Text), Qt::DashLine);
+        if (phase == 1 && cushion_) {
+            // The cushion's impulse closes the triangle: p' = p + J.
+            const Vec2 before = bodies_[0].momentumBefore();
+            arrow(p, toScreen(before), toScreen(before + cushionImpulse_), QColor(200, 40, 160), Qt::DotLine);
+            p.setPen(QColor(200, 40, 160));
+            p.drawText(toScreen(before + 0.5 * cushionImpulse_) + QPointF(4, 10), tr("J (cushion)"));
+            arrow(p, toScreen(Vec2::Zero()), toScreen(before), QColor(150, 150, 150), Qt::DotLine);
+        }
+        p.setPen(palette().color(QPalette::Text));
+        p.drawText(QRectF(panel.left() + 3, panel.top() + 2, panel.width() - 6, 14), Qt::AlignLeft,
+                   QStringLiteral("|P| = %1").arg(tip.norm(), 0, 'g', 4));
+    }
+}
+
+void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area) const
+{
+    p.setPen(palette().color(QPalette::Text));
+    p.drawText(area.adjusted(0, 0, 0, -area.height() + 16), Qt::AlignLeft, tr("Energy (J)"));
+    const QRectF body = area.adjusted(0, 18, 0, -28);
+    double totals[2] = {0.0, 0.0};
+    for (const explain::Body& b : bodies_) {
+        totals[0] += b.translationBefore + b.rotationBefore;
+        totals[1] += b.translationAfter + b.rotationAfter;
+    }
+    const double top = std::max({totals[0], totals[1], 1e-12});
+    const double barW = body.width() / 2.0 - 8.0;
+    for (int phase = 0; phase < 2; ++phase) {
+        const double x = body.left() + 4.0 + phase * (barW + 8.0);
+        double y = body.bottom();
+        for (std::size_t k = 0; k < bodies_.size(); ++k) {
+            const explain::Body& b = bodies_[k];
+            const double parts[2] = {phase == 0 ? b.translationBefore : b.translationAfter,
+                                     phase == 0 ? b.rotationBefore : b.rotationAfter};
+            for (int part = 0; part < 2; ++part) {
+                const double h = body.height() * parts[part] / top;
+                QColor c = kBodyColours[k % 2];
+                if (part == 1) c = c.lighter(150);
+                p.fillRect(QRectF(x, y - h, barW, h), c);
+                y -= h;
+            }
+        }
+        p.setPen(palette().color(QPalette::Text));
+        p.drawText(QRectF(x - 4, body.bottom() + 1, barW + 8, 13), Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
+        p.drawText(QRectF(x - 8, y - 14, barW + 16, 13), Qt::AlignCenter, QString::number(totals[phase], 'g', 4));
+    }
+    const double change = totals[1] - totals[0];
+    p.drawText(QRectF(area.left(), area.bottom() - 13, area.width(), 13), Qt::AlignCenter,
+               totals[0] > 0.0 ? tr("ΔE = %1 J (%2 %)").arg(change, 0, 'g', 3).arg(100.0 * change / totals[0], 0, 'f', 1)
+                               : tr("ΔE = %1 J").arg(change, 0, 'g', 3));
+}
+
+}  // namespace cuelab

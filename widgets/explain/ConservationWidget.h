@@ -1,0 +1,33 @@
+#pragma once
+// Momenta tip to tail before and after an event, with their total (PhET Collision Lab's diagram),
+// and the kinetic energy before and after as stacked bars (translation, rotation): conservation, or
+// its loss to the cloth and the cushion, at a glance. QPainter only.
+
+#include "Explanation.h"
+
+#include <QWidget>
+
+#include <optional>
+
+namespace cuelab {
+
+class ConservationWidget : public QWidget {
+    Q_OBJECT
+public:
+    explicit ConservationWidget(QWidget* parent = nullptr);
+    void setExplanation(const explain::Explanation* e);
+    QSize sizeHint() const override { return {320, 200}; }
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+
+private:
+    void paintMomenta(QPainter& p, const QRectF& area) const;
+    void paintEnergy(QPainter& p, const QRectF& area) const;
+
+    std::vector<explain::Body> bodies_;
+    Vec2 cushionImpulse_ = Vec2::Zero();  // N s, the cushion's push (ball-cushion events)
+    bool cushion_ = false;
+};
+
+}  // namespace cuelab

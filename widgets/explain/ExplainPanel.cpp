@@ -1,0 +1,101 @@
+#include "ExplainPanel.h"
+
+#include "ConservationWidget.h"
+#include "editor/Document.h"
+#include "Explain.h"
+#include "ExplainText.h"
+#include "editor/Playback.h"
+#include "ToiChart.h"
+#include "editor/Selection.h"
+
+#include <QLabel>
+#include <QSplitter>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace cuelab {
+
+ExplainPanel::ExplainPanel(Document* document, Selection* selection, Playback* playback, QWidget* parent)
+    : QWidget(parent), document_(document), selection_(selection), playback_(playback)
+{
+    placeholder_ = new QLabel(tr("Select an event (in Events, or step to one with Shift+Right) to see its "
+                                 "mathematics."),
+                              this);
+    placeholder_->setWordWrap(true);
+    text_ = new QTextBrowser(this);
+    text_->setObjectName(QStringLiteral("explainText"));
+    text_->setOpenLinks(false);
+    chart_ = new ToiChart(this);
+    chart_->setToolTip(tr("The time-of-impact polynomial f(τ) over the prediction window: its roots are marked, "
+                          "the root that gave the event in red. τ in seconds from t₀."));
+    conservation_ = new ConservationWidget(this);
+
+    auto* lower = new QSplitter(Qt::Horizontal, this);
+    lower->addWidget(chart_);
+    lower->addWidget(conservation_);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(text_);
+    split->addWidget(lower);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addWidget(placeholder_);
+    layout->addWidget(split, 1);
+
+    if (selection_)
+        connect(selection_, &Selection::eventChanged, this, [this](int index) {
+            if (index >= 0) showEvent(index);
+        });
+    if (playback_) connect(playback_, &Playback::timeChanged, this, &ExplainPanel::followTime);
+    if (document_) {
+        connect(document_, &Document::resultChanged, this, &ExplainPanel::refresh);
+        connect(document_, &Document::documentReplaced, this, [this] { showEvent(-1); });
+    }
+    showEvent(-1);
+}
+
+QString ExplainPanel::html() const { return text_->toHtml(); }
+
+void ExplainPanel::followTime(double t)
+{
+    const auto result = document_ ? document_->result() : nullptr;
+    if (!result) return;
+    // The transport lands exactly on event times (next/previous event): show that event, unless the
+    // one shown already happens then (a chain of events at one instant keeps the chosen one).
+    if (event_ >= 0 && event_ < int(result->events.size()) && result->events[std::size_t(event_)].time == t) return;
+    for (std::size_t i = 0; i < result->events.size(); ++i)
+        if (result->events[i].time == t) {
+            showEvent(int(i));
+            return;
+        }
+}
+
+void ExplainPanel::refresh()
+{
+    // A new result (an edit re-simulated): explain the same event index again if it still exists.
+    showEvent(event_);
+}
+
+void ExplainPanel::showEvent(int index)
+{
+    const auto result = document_ ? document_->result() : nullptr;
+    explanation_.reset();
+    if (result && index >= 0 && index < int(result->events.size())) {
+        explanation_ = explain::explain(*result, index, document_->setup().shot);
+        event_ = index;
+    } else {
+        event_ = -1;
+    }
+    placeholder_->setVisible(!explanation_);
+    if (explanation_) {
+        text_->setHtml(QString::fromStdString(explain::toHtml(*explanation_)));
+    } else {
+        text_->clear();
+    }
+    chart_->setExplanation(explanation_ ? &*explanation_ : nullptr);
+    conservation_->setExplanation(explanation_ ? &*explanation_ : nullptr);
+    emit explanationChanged();
+}
+
+}  // namespace cuelab

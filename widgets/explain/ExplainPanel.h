@@ -1,0 +1,54 @@
+#pragma once
+// The Explain dock: the selected event's derivation (core/explain) as rich text, the time-of-impact
+// polynomial over its prediction window with its roots (Qt Charts), and the momenta diagram and
+// kinetic energy bars of the event. It shows the event selected in the window and the event the
+// transport steps to (playback time exactly at an event).
+
+#include "Explanation.h"
+
+#include <QWidget>
+
+#include <optional>
+
+class QTextBrowser;
+class QLabel;
+
+namespace cuelab {
+
+class Document;
+class Selection;
+class Playback;
+class ToiChart;
+class ConservationWidget;
+
+class ExplainPanel : public QWidget {
+    Q_OBJECT
+public:
+    ExplainPanel(Document* document, Selection* selection, Playback* playback, QWidget* parent = nullptr);
+
+    int shownEvent() const { return event_; }  // -1 when nothing is explained
+    const std::optional<explain::Explanation>& explanation() const { return explanation_; }
+    QString html() const;                        // what the text view shows
+
+public slots:
+    void showEvent(int index);                   // -1 clears
+
+signals:
+    void explanationChanged();                   // explanation() changed (or cleared)
+
+private:
+    void followTime(double t);
+    void refresh();
+
+    Document* document_;
+    Selection* selection_;
+    Playback* playback_;
+    QLabel* placeholder_;
+    QTextBrowser* text_;
+    ToiChart* chart_;
+    ConservationWidget* conservation_;
+    int event_ = -1;
+    std::optional<explain::Explanation> explanation_;
+};
+
+}  // namespace cuelab
