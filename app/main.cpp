@@ -43,6 +43,10 @@ int main(int argc, char* argv[])
     parser.process(app);
 
     if (parser.isSet(QStringLiteral("screenshot"))) return cuelab::takeScreenshot(parser, parser.value(QStringLiteral("screenshot")));
+    if (const QString stray = cuelab::strayScreenshotOption(parser); !stray.isEmpty()) {
+        cuelab::printCommandLineError(QStringLiteral("--%1 is an option of --screenshot only").arg(stray));
+        return 2;
+    }
 
     QString problem;
     if (!cuelab::probeOpenGL(&problem)) {

@@ -1,6 +1,7 @@
 #include "Cli.h"
 
 #include "Command.h"
+#include "NumberParse.h"
 
 #include <QCommandLineParser>
 
@@ -10,6 +11,9 @@
 namespace cuelab::cli {
 
 namespace {
+
+// The largest --max-events: the event log of a run that long would not fit in memory anyway.
+constexpr long long kMaxEventsLimit = 1'000'000'000;
 
 const char* const kExitStatusHelp =
     "\n"
@@ -119,11 +123,10 @@ int run(const QStringList& arguments, QByteArray* out, QByteArray* err)
             return usage(err, QStringLiteral("%1: --%2 is not an option of this command").arg(command->name, name));
     }
     if (parser.isSet(QStringLiteral("max-events"))) {
-        bool ok = false;
-        const long long n = parser.value(QStringLiteral("max-events")).toLongLong(&ok);
-        if (!ok || n < 1)
-            return usage(err, QStringLiteral("--max-events: expected a whole number >= 1, found '%1'")
-                                  .arg(parser.value(QStringLiteral("max-events"))));
+        QString problem;
+        if (!cmdline::parseWholeNumber(QStringLiteral("max-events"), parser.value(QStringLiteral("max-events")), 1,
+                                       kMaxEventsLimit, &problem))
+            return usage(err, problem);
     }
 
     Invocation invocation(*command, parser, positional.at(1), out, err);

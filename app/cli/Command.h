@@ -64,8 +64,11 @@ public:
     int fail(const QString& message, int status) const;
 
     // The value of a time or step option, when given: a finite number of seconds >= 0 (> 0 when
-    // `strictlyPositive`). A bad value sets *problem to the usage message.
+    // `strictlyPositive`), at most cmdline::kMaxSeconds. A bad value sets *problem to the usage
+    // message. Every number of the command line goes through app/common/NumberParse.h.
     std::optional<double> seconds(const QString& option, bool strictlyPositive, QString* problem) const;
+    // The value of a whole-number option, when given, in [min, max]; as seconds() otherwise.
+    std::optional<long long> wholeNumber(const QString& option, long long min, long long max, QString* problem) const;
 
     // The setup path as given (`-` for standard input) and as messages name it.
     QString setupPath() const { return setupPath_; }

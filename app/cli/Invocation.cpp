@@ -1,6 +1,7 @@
 #include "Command.h"
 
 #include "JsonText.h"
+#include "NumberParse.h"
 #include "SetupFile.h"
 
 #include <QFile>
@@ -32,15 +33,14 @@ int Invocation::fail(const QString& message, int status) const
 std::optional<double> Invocation::seconds(const QString& option, bool strictlyPositive, QString* problem) const
 {
     if (!parser_.isSet(option)) return std::nullopt;
-    const QString text = parser_.value(option);
-    bool ok = false;
-    const double x = text.toDouble(&ok);
-    if (!ok || !std::isfinite(x) || x < 0.0 || (strictlyPositive && x == 0.0)) {
-        *problem = QStringLiteral("--%1: expected a number of seconds %2, found '%3'")
-                       .arg(option, strictlyPositive ? QStringLiteral("> 0") : QStringLiteral(">= 0"), text);
-        return std::nullopt;
-    }
-    return x;
+    return cmdline::parseSeconds(option, parser_.value(option), strictlyPositive, problem);
+}
+
+std::optional<long long> Invocation::wholeNumber(const QString& option, long long min, long long max,
+                                                 QString* problem) const
+{
+    if (!parser_.isSet(option)) return std::nullopt;
+    return cmdline::parseWholeNumber(option, parser_.value(option), min, max, problem);
 }
 
 QString Invocation::setupName() const

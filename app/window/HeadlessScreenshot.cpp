@@ -3,6 +3,8 @@
 #include "export/DiagramFiles.h"
 #include "view/Screenshot.h"
 
+#include "NumberParse.h"
+
 #include "SetupFile.h"
 #include "Simulation.h"
 
@@ -12,6 +14,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 namespace cuelab {
 
@@ -25,6 +28,16 @@ constexpr int kExitUsage = 2;
 void printError(const QString& message) { std::fprintf(stderr, "cuelab: %s\n", qPrintable(message)); }
 
 }  // namespace
+
+void printCommandLineError(const QString& message) { printError(message); }
+
+QString strayScreenshotOption(const QCommandLineParser& parser)
+{
+    if (parser.isSet(QStringLiteral("screenshot"))) return {};
+    for (const QString& name : {QStringLiteral("time"), QStringLiteral("camera"), QStringLiteral("size")})
+        if (parser.isSet(name)) return name;
+    return {};
+}
 
 void addScreenshotOptions(QCommandLineParser& parser)
 {
@@ -48,26 +61,35 @@ int takeScreenshot(const QCommandLineParser& parser, const QString& out)
         printError(QStringLiteral("--screenshot needs exactly one setup file"));
         return kExitUsage;
     }
-    bool ok = true;
-    const double time = parser.isSet(QStringLiteral("time")) ? parser.value(QStringLiteral("time")).toDouble(&ok) : 0.0;
-    if (!ok || time < 0.0) {
-        printError(QStringLiteral("--time needs a number of seconds >= 0"));
-        return kExitUsage;
+    // Numbers go through the parser cuelab-cli uses (app/common/NumberParse.h): nan, inf and absurd
+    // values are usage errors naming the option, never a time handed to the renderer.
+    QString problem;
+    double time = 0.0;
+    if (parser.isSet(QStringLiteral("time"))) {
+        const std::optional<double> t = cmdline::parseSeconds(QStringLiteral("time"), parser.value(QStringLiteral("time")),
+                                                              false, &problem);
+        if (!t) {
+            printError(problem);
+            return kExitUsage;
+        }
+        time = *t;
     }
     CameraPreset camera = CameraPreset::Top;
     const QString cameraName = parser.value(QStringLiteral("camera"));
     if (cameraName == QLatin1String("player")) camera = CameraPreset::Player;
     else if (cameraName == QLatin1String("side")) camera = CameraPreset::Side;
     else if (cameraName != QLatin1String("top")) {
-        printError(QStringLiteral("--camera must be top, player or side"));
+        printError(QStringLiteral("--camera: expected top, player or side, found '%1'").arg(cameraName));
         return kExitUsage;
     }
-    const QStringList size = parser.value(QStringLiteral("size")).split(QLatin1Char('x'));
-    bool okW = false, okH = false;
-    const int w = size.size() == 2 ? size[0].toInt(&okW) : 0;
-    const int h = size.size() == 2 ? size[1].toInt(&okH) : 0;
-    if (!okW || !okH || w < 16 || h < 16 || w > 8192 || h > 8192) {
-        printError(QStringLiteral("--size must be WIDTHxHEIGHT in pixels, 16 to 8192 each"));
+    const QString sizeText = parser.value(QStringLiteral("size"));
+    const QStringList size = sizeText.split(QLatin1Char('x'));
+    const std::optional<long long> w =
+        size.size() == 2 ? cmdline::parseWholeNumber(QStringLiteral("size"), size[0], 16, 8192, &problem) : std::nullopt;
+    const std::optional<long long> h =
+        size.size() == 2 ? cmdline::parseWholeNumber(QStringLiteral("size"), size[1], 16, 8192, &problem) : std::nullopt;
+    if (!w || !h) {
+        printError(QStringLiteral("--size: expected WIDTHxHEIGHT in pixels, 16 to 8192 each, found '%1'").arg(sizeText));
         return kExitUsage;
     }
 
@@ -92,7 +114,7 @@ int takeScreenshot(const QCommandLineParser& parser, const QString& out)
     }
     scene.shot = setup->shot;
     QImage image;
-    if (!renderSceneToImage(scene, time, camera, QSize(w, h), &image, &error)) {
+    if (!renderSceneToImage(scene, time, camera, QSize(static_cast<int>(*w), static_cast<int>(*h)), &image, &error)) {
         printError(error);
         return kExitRefused;
     }

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace cuelab {
 
@@ -410,6 +411,9 @@ void Simulator::run(const std::optional<CueStrike>& shot)
 
 BallState SimulationResult::stateAt(int index, double t) const
 {
+    // A time that is not finite has no state (NaN fails every comparison of the search below, and
+    // evolving by an infinite span gives NaN): refused like a bad index.
+    if (!std::isfinite(t)) throw std::domain_error("SimulationResult::stateAt: the time is not a finite number");
     const std::vector<MotionSegment>& timeline = timelines.at(static_cast<std::size_t>(index));
     const double R = balls.at(static_cast<std::size_t>(index)).radius;
     // The last segment starting at or before t: at an event time, the state just after it.

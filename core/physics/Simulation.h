@@ -44,6 +44,7 @@ public:
     std::string error;        // set when status == EventLimit
 
     // The exact state of ball `index` at time t (at an event time: the state just after the event).
+    // Throws std::domain_error when t is not finite, std::out_of_range for an unknown index.
     BallState stateAt(int index, double t) const;
     std::vector<BallState> statesAt(double t) const;
     int ballIndex(const std::string& id) const;  // -1 if unknown

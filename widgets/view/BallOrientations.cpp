@@ -45,6 +45,10 @@ Eigen::Quaterniond BallOrientations::at(int index, double t)
     if (!result_ || index < 0 || static_cast<std::size_t>(index) >= keys_.size())
         return Eigen::Quaterniond::Identity();
     std::vector<Eigen::Quaterniond>& keys = keys_[static_cast<std::size_t>(index)];
+    // A time that is not a number has no orientation: the start's (std::clamp would pass NaN through,
+    // and the key index of floor(NaN) is undefined; it used to grow the cache without end). +-inf
+    // clamp to the run's ends like any other time outside it.
+    if (std::isnan(t)) return keys.front();
     const double clamped = std::clamp(t, 0.0, std::max(result_->endTime, 0.0));
     const auto key = static_cast<std::size_t>(std::floor(clamped / keyInterval()));
     while (keys.size() <= key) {

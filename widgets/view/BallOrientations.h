@@ -21,7 +21,8 @@ public:
     static constexpr int kSubstepsPerKey = 16;   // a keyframe every 8 ms
 
     void reset(std::shared_ptr<const SimulationResult> result);
-    // Orientation of ball `index` at time t (s), body -> world.
+    // Orientation of ball `index` at time t (s), body -> world. Times outside the run are clamped to
+    // it (-inf to the start, +inf to the end); NaN gives the starting orientation.
     Eigen::Quaterniond at(int index, double t);
 
     // The orientation a ball starts with: its number disc tilted towards the sky, turned by a golden

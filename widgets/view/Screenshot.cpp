@@ -12,6 +12,8 @@
 #include <QPainter>
 #include <QSurfaceFormat>
 
+#include <cmath>
+
 namespace cuelab {
 
 bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset, QSize size, QImage* out,
@@ -34,6 +36,7 @@ bool SceneImageRenderer::render(const ViewScene& scene, double time, CameraPrese
                         .arg(size.width())
                         .arg(size.height()));
     if (!scene.result) return fail(QStringLiteral("There is no simulation to draw."));
+    if (!std::isfinite(time)) return fail(QStringLiteral("The time of a screenshot must be a finite number of seconds."));
 
     QSurfaceFormat format;
     format.setVersion(kGlMajor, kGlMinor);

@@ -78,6 +78,7 @@ void TableView::setScene(ViewScene scene)
 void TableView::setTime(double seconds)
 {
     const double end = scene_.result ? std::max(scene_.result->endTime, 0.0) : 0.0;
+    if (std::isnan(seconds)) return;  // no moment to show (std::clamp would keep the NaN)
     const double t = std::clamp(seconds, 0.0, end);
     if (t == time_) return;
     time_ = t;

@@ -163,22 +163,19 @@ Command compareCommand()
 
         std::vector<std::string> notes;
         const bool exact = settings.engine == EngineKind::Exact;
-        if (in.isSet(QStringLiteral("dt"))) {
-            const QString text = in.value(QStringLiteral("dt"));
-            bool ok = false;
-            const double dt = text.toDouble(&ok);
-            if (!ok || !std::isfinite(dt) || dt <= 0.0)
-                return in.usage(QStringLiteral("--dt: expected a number of seconds > 0, found '%1'").arg(text));
+        QString bad;
+        const std::optional<double> dt = in.seconds(QStringLiteral("dt"), true, &bad);
+        if (!bad.isEmpty()) return in.usage(bad);
+        if (dt) {
             if (exact) notes.push_back("--dt does not apply to the exact engine: it has no step (every event at its exact time)");
-            else settings.dt = dt;
+            else settings.dt = *dt;
         }
-        if (in.isSet(QStringLiteral("substeps"))) {
-            const QString text = in.value(QStringLiteral("substeps"));
-            bool ok = false;
-            const int n = text.toInt(&ok);
-            if (!ok || n < 1) return in.usage(QStringLiteral("--substeps: expected a whole number >= 1, found '%1'").arg(text));
+        const std::optional<long long> substeps =
+            in.wholeNumber(QStringLiteral("substeps"), 1, std::numeric_limits<int>::max(), &bad);
+        if (!bad.isEmpty()) return in.usage(bad);
+        if (substeps) {
             if (exact) notes.push_back("--substeps does not apply to the exact engine: it has no step");
-            else settings.substeps = n;
+            else settings.substeps = static_cast<int>(*substeps);
         }
         if (const auto problem = checkSettings(settings))
             return in.usage(QStringLiteral("--%1: %2").arg(QString::fromStdString(problem->setting),

@@ -6,6 +6,8 @@
 #include "ExplainText.h"
 #include "JsonText.h"
 
+#include <limits>
+
 namespace cuelab::cli {
 
 namespace {
@@ -133,16 +135,19 @@ Command explainCommand()
         const QString format = in.isSet(QStringLiteral("format")) ? in.value(QStringLiteral("format")) : QStringLiteral("json");
         if (format != QLatin1String("json") && format != QLatin1String("markdown"))
             return in.usage(QStringLiteral("explain: --format must be json or markdown, not '%1'").arg(format));
+        QString problem;
+        const std::optional<long long> event =
+            in.wholeNumber(QStringLiteral("event"), 0, std::numeric_limits<int>::max(), &problem);
+        if (!event) return in.usage(problem);
         int status = Success;
         const std::optional<Setup> setup = in.loadSetup(&status);
         if (!setup) return status;
         SimulationResult result;
         if (!in.simulate(*setup, -1.0, result)) return static_cast<int>(SimulationUnfinished);
         const qsizetype count = static_cast<qsizetype>(result.events.size());
-        bool ok = false;
         const QString text = in.value(QStringLiteral("event"));
-        const qlonglong index = text.toLongLong(&ok);
-        if (!ok || index < 0 || index >= count) {
+        const long long index = *event;
+        if (index >= count) {
             if (count == 0) return in.usage(QStringLiteral("explain: --event '%1': this shot has no events").arg(text));
             return in.usage(QStringLiteral("explain: --event '%1' is not an event of this shot: give 0 to %2 (%3 events)")
                                 .arg(text)
