@@ -4,10 +4,12 @@
 #include "HeadlessScreenshot.h"
 #include "MainWindow.h"
 #include "OpenGLProbe.h"
+#include "Translations.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QIcon>
+#include <QLocale>
 #include <QMessageBox>
 #include <QSurfaceFormat>
 #include <QTimer>
@@ -40,7 +42,24 @@ int main(int argc, char* argv[])
     parser.addPositionalArgument(QStringLiteral("setup"), QStringLiteral("A setup file (.json) to open."),
                                  QStringLiteral("[setup]"));
     cuelab::addScreenshotOptions(parser);
+    parser.addOption({QStringLiteral("language"),
+                      QStringLiteral("The language of the interface: en or hu (default: the system's, from LANGUAGE, "
+                                     "LC_ALL, LC_MESSAGES or LANG)."),
+                      QStringLiteral("code")});
     parser.process(app);
+
+    // The interface's language, before any window or picture is made (app/window/Translations.h).
+    const QString language = parser.value(QStringLiteral("language"));
+    if (parser.isSet(QStringLiteral("language"))) {
+        const QStringList known = QStringList{QStringLiteral("en")} + cuelab::translatedLanguages();
+        const QString code = QLocale::languageToCode(cuelab::interfaceLocale(language).language());
+        if (!known.contains(code) && language != QLatin1String("C")) {
+            cuelab::printCommandLineError(QStringLiteral("--language: expected one of %1, found '%2'")
+                                              .arg(known.join(QStringLiteral(", ")), language));
+            return 2;
+        }
+    }
+    cuelab::installTranslations(cuelab::interfaceLocale(language));
 
     if (parser.isSet(QStringLiteral("screenshot"))) return cuelab::takeScreenshot(parser, parser.value(QStringLiteral("screenshot")));
     if (const QString stray = cuelab::strayScreenshotOption(parser); !stray.isEmpty()) {

@@ -11,7 +11,8 @@ packages=(
   libeigen3-dev                              # Eigen 3.4 (the physics core's only dependency)
   qt6-charts-dev                             # Qt Charts: plots, error and polynomial charts
   qt6-svg-dev                                # Qt SVG: shot diagrams (QSvgGenerator) and their tests
-  qt6-l10n-tools                             # Qt Linguist tools: lupdate/lrelease for translations
+  qt6-l10n-tools qt6-tools-dev               # Qt Linguist tools: lupdate/lrelease and their CMake (Qt6LinguistTools)
+  qt6-translations-l10n                      # Qt's own translations (qtbase_hu.qm: standard buttons and dialogs)
   libbox2d-dev                               # Box2D 2.4, the comparison engine of core/compare
   clang libclang-rt-14-dev                   # libFuzzer (-fsanitize=fuzzer) for the fuzz targets
   desktop-file-utils appstream               # desktop-file-validate, appstreamcli (install checks)

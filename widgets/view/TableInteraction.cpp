@@ -19,7 +19,8 @@ constexpr float kOrbitDegPerPixel = 0.3f;  // degrees of orbit per pixel of mous
 constexpr double kDragThresholdPx = 3.0;   // pixels before a press becomes a drag
 constexpr double kArrowGrabPx = 9.0;       // pixels around a velocity arrow's head that grab it
 
-QString tr(const char* text) { return QCoreApplication::translate("cuelab::TableView", text); }
+// The context lupdate gives the tr() calls of TableInteraction's members (resources/translations).
+QString tr(const char* text) { return QCoreApplication::translate("cuelab::TableInteraction", text); }
 
 }  // namespace
 

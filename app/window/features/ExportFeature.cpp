@@ -14,6 +14,7 @@
 #include <QAction>
 #include <QBuffer>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -40,7 +41,8 @@ namespace {
 
 using Work = std::function<bool(const exports::Progress& progress, QString* error)>;
 
-QString tr(const char* text) { return MainWindow::tr(text); }
+// The context lupdate gives tr() calls in functions of namespace cuelab (resources/translations).
+QString tr(const char* text) { return QCoreApplication::translate("cuelab", text); }
 
 // Asks where to write; empty when the user cancels. Starts beside the document, named after it.
 QString askPath(MainWindow& window, const QString& title, const QString& suffix, const QString& filter)

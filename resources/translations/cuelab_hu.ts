@@ -1,0 +1,1726 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="hu_HU">
+<context>
+    <name>QObject</name>
+    <message>
+        <source>&amp;Velocities</source>
+        <translation>&amp;Sebességek</translation>
+    </message>
+    <message>
+        <source>&amp;Spin</source>
+        <translation>&amp;Pörgetés</translation>
+    </message>
+    <message>
+        <source>&amp;Trails</source>
+        <translation>&amp;Nyomvonalak</translation>
+    </message>
+    <message>
+        <source>&amp;Future Paths</source>
+        <translation>&amp;Jövőbeli pályák</translation>
+    </message>
+    <message>
+        <source>&amp;Event Markers</source>
+        <translation>&amp;Eseményjelölők</translation>
+    </message>
+    <message>
+        <source>&amp;Ghost Balls</source>
+        <translation>S&amp;zellemgolyók</translation>
+    </message>
+    <message>
+        <source>&amp;Cue and Aim Line</source>
+        <translation>&amp;Dákó és célzóvonal</translation>
+    </message>
+    <message>
+        <source>CueLab setups (*.json);;All files (*)</source>
+        <translation>CueLab-felállások (*.json);;Minden fájl (*)</translation>
+    </message>
+    <message>
+        <source>Position of the ball&apos;s centre at t = 0, in metres</source>
+        <translation>A golyó középpontjának helye t = 0-kor, méterben</translation>
+    </message>
+    <message>
+        <source>The simulation failed: %1</source>
+        <translation>A szimuláció nem sikerült: %1</translation>
+    </message>
+    <message>
+        <source>v_rel %1, |J| %2</source>
+        <translation>v_rel %1, |J| %2</translation>
+    </message>
+    <message>
+        <source>v %1</source>
+        <translation>v %1</translation>
+    </message>
+    <message>
+        <source>at %1</source>
+        <translation>%1-kor</translation>
+    </message>
+    <message>
+        <source>Cue ball and one object ball</source>
+        <translation>Fehér golyó és egy célgolyó</translation>
+    </message>
+    <message>
+        <source>9-ball diamond</source>
+        <translation>9-es rombusz</translation>
+    </message>
+    <message>
+        <source>8-ball triangle (15 balls)</source>
+        <translation>8-as háromszög (15 golyó)</translation>
+    </message>
+    <message>
+        <source>Newton&apos;s cradle (5 frozen balls)</source>
+        <translation>Newton-bölcső (5 egymáshoz simuló golyó)</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Mégse</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportálás</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>Exportálva: %1</translation>
+    </message>
+    <message>
+        <source>Export cancelled: nothing was written</source>
+        <translation>Az exportálás megszakítva: semmi sem íródott ki</translation>
+    </message>
+    <message>
+        <source>There is no simulation to export yet.</source>
+        <translation>Még nincs exportálható szimuláció.</translation>
+    </message>
+    <message>
+        <source>Export the View as PNG</source>
+        <translation>A nézet exportálása PNG-képként</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Image width in pixels</source>
+        <translation>A kép szélessége képpontban</translation>
+    </message>
+    <message>
+        <source>Image height in pixels</source>
+        <translation>A kép magassága képpontban</translation>
+    </message>
+    <message>
+        <source>Top (whole table)</source>
+        <translation>Felülről (az egész asztal)</translation>
+    </message>
+    <message>
+        <source>Player (behind the cue ball)</source>
+        <translation>Játékos (a fehér golyó mögül)</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Oldalról</translation>
+    </message>
+    <message>
+        <source>Width:</source>
+        <translation>Szélesség:</translation>
+    </message>
+    <message>
+        <source>Height:</source>
+        <translation>Magasság:</translation>
+    </message>
+    <message>
+        <source>Camera:</source>
+        <translation>Kamera:</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-képek (*.png)</translation>
+    </message>
+    <message>
+        <source>Export the Shot Diagram as PDF</source>
+        <translation>Az ütésábra exportálása PDF-ként</translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation>PDF-dokumentumok (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export the Shot Diagram as SVG</source>
+        <translation>Az ütésábra exportálása SVG-ként</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>SVG-képek (*.svg)</translation>
+    </message>
+    <message>
+        <source>Drawing the shot diagram...</source>
+        <translation>Az ütésábra rajzolása…</translation>
+    </message>
+    <message>
+        <source>Export the Trajectory</source>
+        <translation>A pálya exportálása</translation>
+    </message>
+    <message>
+        <source>Frame step (ms):</source>
+        <translation>Képkockalépés (ms):</translation>
+    </message>
+    <message>
+        <source>View as &amp;PNG...</source>
+        <translation>Nézet &amp;PNG-ként…</translation>
+    </message>
+    <message>
+        <source>Render the table view at a chosen size into a PNG image</source>
+        <translation>Az asztal nézetének kirajzolása választott méretben egy PNG-képbe</translation>
+    </message>
+    <message>
+        <source>Shot Diagram as &amp;SVG...</source>
+        <translation>Ütésábra &amp;SVG-ként…</translation>
+    </message>
+    <message>
+        <source>A print-style top-down diagram: numbered balls, paths, contacts with their times, the outcome</source>
+        <translation>Nyomtatható, felülnézeti ábra: számozott golyók, pályák, az érintkezések időpontjukkal, az eredmény</translation>
+    </message>
+    <message>
+        <source>Shot Diagram as P&amp;DF...</source>
+        <translation>Ütésábra P&amp;DF-ként…</translation>
+    </message>
+    <message>
+        <source>The shot diagram on an A4 page</source>
+        <translation>Az ütésábra egy A4-es oldalon</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;Report (PDF)...</source>
+        <translation>Óra&amp;jegyzet (PDF)…</translation>
+    </message>
+    <message>
+        <source>Export the Lesson Report</source>
+        <translation>Az órajegyzet exportálása</translation>
+    </message>
+    <message>
+        <source>Writing the lesson report...</source>
+        <translation>Az órajegyzet írása…</translation>
+    </message>
+    <message>
+        <source>A printable report: the diagram, the lesson&apos;s notes, the outcome, the event table, the plots</source>
+        <translation>Nyomtatható jegyzet: az ábra, az óra megjegyzései, az eredmény, az eseménytáblázat, a grafikonok</translation>
+    </message>
+    <message>
+        <source>Writing the trajectory...</source>
+        <translation>A pálya írása…</translation>
+    </message>
+    <message>
+        <source>Writing the events...</source>
+        <translation>Az események írása…</translation>
+    </message>
+    <message>
+        <source>Every ball&apos;s state at every frame (a frame step you choose) and at every event</source>
+        <translation>Minden golyó állapota minden képkockán (választott képkockalépéssel) és minden eseménynél</translation>
+    </message>
+    <message>
+        <source>Every event with its agents&apos; states before and after</source>
+        <translation>Minden esemény, a résztvevők előtte és utána vett állapotával</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::BallsPanel</name>
+    <message>
+        <source>Ball</source>
+        <translation>Golyó</translation>
+    </message>
+    <message>
+        <source>x₀ (m)</source>
+        <translation>x₀ (m)</translation>
+    </message>
+    <message>
+        <source>y₀ (m)</source>
+        <translation>y₀ (m)</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Állapot</translation>
+    </message>
+    <message>
+        <source>Position (m)</source>
+        <translation>Hely (m)</translation>
+    </message>
+    <message>
+        <source>|v| (m/s)</source>
+        <translation>|v| (m/s)</translation>
+    </message>
+    <message>
+        <source>Set-up position along the length, in metres (double-click to edit)</source>
+        <translation>Kiinduló hely az asztal hossza mentén, méterben (dupla kattintással szerkeszthető)</translation>
+    </message>
+    <message>
+        <source>Set-up position across the width, in metres (double-click to edit)</source>
+        <translation>Kiinduló hely az asztal szélessége mentén, méterben (dupla kattintással szerkeszthető)</translation>
+    </message>
+    <message>
+        <source>Motion state at the current time</source>
+        <translation>Mozgásállapot az aktuális időpontban</translation>
+    </message>
+    <message>
+        <source>Position at the current time, in metres</source>
+        <translation>Hely az aktuális időpontban, méterben</translation>
+    </message>
+    <message>
+        <source>Speed at the current time, in m/s</source>
+        <translation>Sebesség az aktuális időpontban, m/s-ban</translation>
+    </message>
+    <message>
+        <source>&amp;Add Ball</source>
+        <translation>Golyó &amp;hozzáadása</translation>
+    </message>
+    <message>
+        <source>Add a ball on a free spot near the centre of the table</source>
+        <translation>Golyó hozzáadása egy szabad helyre az asztal közepe közelében</translation>
+    </message>
+    <message>
+        <source>&amp;Remove Ball</source>
+        <translation>Golyó &amp;eltávolítása</translation>
+    </message>
+    <message>
+        <source>Remove the selected ball</source>
+        <translation>A kijelölt golyó eltávolítása</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate Ball</source>
+        <translation>Golyó &amp;megkettőzése</translation>
+    </message>
+    <message>
+        <source>Add a copy of the selected ball next to it</source>
+        <translation>A kijelölt golyó másolatának elhelyezése mellé</translation>
+    </message>
+    <message>
+        <source>Rac&amp;k</source>
+        <translation>&amp;Gúla</translation>
+    </message>
+    <message>
+        <source>Replace the balls by a standard rack</source>
+        <translation>A golyók lecserélése egy szabályos gúlára</translation>
+    </message>
+    <message>
+        <source>Rack</source>
+        <translation>Gúla</translation>
+    </message>
+    <message>
+        <source>Ball id (double-click to rename)</source>
+        <translation>A golyó azonosítója (dupla kattintással átnevezhető)</translation>
+    </message>
+    <message>
+        <source>Rename ball %1 to %2</source>
+        <translation>A(z) %1 golyó átnevezése erre: %2</translation>
+    </message>
+    <message>
+        <source>Move ball %1</source>
+        <translation>A(z) %1 golyó áthelyezése</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Névtelen</translation>
+    </message>
+    <message>
+        <source>Move ball %1</source>
+        <translation>A(z) %1 golyó áthelyezése</translation>
+    </message>
+    <message>
+        <source>There is no free place on the table for another ball.</source>
+        <translation>Nincs szabad hely az asztalon még egy golyónak.</translation>
+    </message>
+    <message>
+        <source>Add ball %1</source>
+        <translation>A(z) %1 golyó hozzáadása</translation>
+    </message>
+    <message>
+        <source>Remove ball %1</source>
+        <translation>A(z) %1 golyó eltávolítása</translation>
+    </message>
+    <message>
+        <source>Duplicate ball %1</source>
+        <translation>A(z) %1 golyó megkettőzése</translation>
+    </message>
+    <message>
+        <source>Rack: %1</source>
+        <translation>Gúla: %1</translation>
+    </message>
+    <message>
+        <source>Clear the table</source>
+        <translation>Az asztal letakarítása</translation>
+    </message>
+    <message>
+        <source>Place ball %1</source>
+        <translation>A(z) %1 golyó elhelyezése</translation>
+    </message>
+    <message>
+        <source>Aim at the rack</source>
+        <translation>Célzás a gúlára</translation>
+    </message>
+    <message>
+        <source>Reset physics to defaults</source>
+        <translation>A fizika visszaállítása az alapértékekre</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::EventTableModel</name>
+    <message>
+        <source>Time (s)</source>
+        <translation>Idő (s)</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Fajta</translation>
+    </message>
+    <message>
+        <source>Agents</source>
+        <translation>Résztvevők</translation>
+    </message>
+    <message>
+        <source>Δt (s)</source>
+        <translation>Δt (s)</translation>
+    </message>
+    <message>
+        <source>Key values</source>
+        <translation>Fő értékek</translation>
+    </message>
+    <message>
+        <source>Time of the event in seconds after the strike (exact: a root of a polynomial)</source>
+        <translation>Az esemény időpontja az ütés után, másodpercben (pontos: egy polinom gyöke)</translation>
+    </message>
+    <message>
+        <source>Seconds since the previous event</source>
+        <translation>Az előző esemény óta eltelt másodpercek</translation>
+    </message>
+    <message>
+        <source>Collisions: normal approach speed (m/s) and impulse (N·s); changes of motion: speed after (m/s)</source>
+        <translation>Ütközések: normális irányú közeledési sebesség (m/s) és erőlökés (N·s); mozgásváltások: az utána mért sebesség (m/s)</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::EventsPanel</name>
+    <message>
+        <source>Show changes of motion</source>
+        <translation>Mozgásváltások mutatása</translation>
+    </message>
+    <message>
+        <source>List the changes of motion too (slide to roll, roll to stop, ...), not only strikes, collisions and pockets</source>
+        <translation>A mozgásváltások listázása is (csúszásból gördülés, gördülésből megállás, …), nem csak az ütéseké, ütközéseké és lyukba eséseké</translation>
+    </message>
+    <message>
+        <source>Select an event to jump to its time and see it in the Inspector</source>
+        <translation>Válasszon ki egy eseményt: a lejátszás az időpontjára ugrik, és a Vizsgáló megmutatja</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::FirstStartTip</name>
+    <message>
+        <source>&lt;b&gt;New to CueLab?&lt;/b&gt; Open a lesson from &lt;i&gt;File › Examples&lt;/i&gt;. &lt;b&gt;Space&lt;/b&gt; plays the shot, &lt;b&gt;←/→&lt;/b&gt; step a frame, &lt;b&gt;Shift+←/→&lt;/b&gt; jump to the next event; click an event in &lt;i&gt;Events&lt;/i&gt; to read its mathematics. Drag a ball to move it; every edit can be undone (&lt;b&gt;Ctrl+Z&lt;/b&gt;). &lt;b&gt;F1&lt;/b&gt; lists every shortcut and mouse gesture.</source>
+        <translation>&lt;b&gt;Először használja a CueLabot?&lt;/b&gt; Nyisson meg egy leckét a &lt;i&gt;Fájl › Példák&lt;/i&gt; menüből. A &lt;b&gt;Szóköz&lt;/b&gt; lejátssza az ütést, a &lt;b&gt;←/→&lt;/b&gt; egy képkockát lép, a &lt;b&gt;Shift+←/→&lt;/b&gt; a következő eseményre ugrik; kattintson egy eseményre az &lt;i&gt;Események&lt;/i&gt; panelen, hogy elolvassa a matematikáját. Egy golyót húzással helyezhet át; minden szerkesztés visszavonható (&lt;b&gt;Ctrl+Z&lt;/b&gt;). Az &lt;b&gt;F1&lt;/b&gt; felsorol minden billentyűparancsot és egérmozdulatot.</translation>
+    </message>
+    <message>
+        <source>Hide this tip (Help › Show First-Start Tip brings it back)</source>
+        <translation>A tipp elrejtése (a Súgó › Kezdő tipp megjelenítése visszahozza)</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::InspectorPanel</name>
+    <message>
+        <source>Quantity</source>
+        <translation>Mennyiség</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Érték</translation>
+    </message>
+    <message>
+        <source>Select a ball or an event</source>
+        <translation>Válasszon ki egy golyót vagy egy eseményt</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Állapot</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Hely</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Sebességvektor</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Sebesség</translation>
+    </message>
+    <message>
+        <source>Spin</source>
+        <translation>Pörgetés</translation>
+    </message>
+    <message>
+        <source>Angular velocity (ωx, ωy, ωz); ωz &gt; 0 is counter-clockwise seen from above</source>
+        <translation>Szögsebesség (ωx, ωy, ωz); ωz &gt; 0 felülről nézve az óramutató járásával ellentétes</translation>
+    </message>
+    <message>
+        <source>Slip</source>
+        <translation>Csúszás</translation>
+    </message>
+    <message>
+        <source>Velocity of the contact point with the cloth, v + R (z × ω); zero when rolling</source>
+        <translation>A posztóval érintkező pont sebessége, v + R (z × ω); gördüléskor nulla</translation>
+    </message>
+    <message>
+        <source>Ball %1</source>
+        <translation>%1 golyó</translation>
+    </message>
+    <message>
+        <source>at t = %1</source>
+        <translation>t = %1 időpontban</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>Lyuk</translation>
+    </message>
+    <message>
+        <source>Momentum</source>
+        <translation>Lendület</translation>
+    </message>
+    <message>
+        <source>Kinetic energy</source>
+        <translation>Mozgási energia</translation>
+    </message>
+    <message>
+        <source>Translation plus rotation, I = 2/5 m R²</source>
+        <translation>Haladó és forgó mozgás együtt, I = 2/5 m R²</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Sugár</translation>
+    </message>
+    <message>
+        <source>Mass</source>
+        <translation>Tömeg</translation>
+    </message>
+    <message>
+        <source>Event %1</source>
+        <translation>%1. esemény</translation>
+    </message>
+    <message>
+        <source>Agents</source>
+        <translation>Résztvevők</translation>
+    </message>
+    <message>
+        <source>Time of impact</source>
+        <translation>Az ütközés időpontja</translation>
+    </message>
+    <message>
+        <source>Exact time of the event: a root of the polynomial that describes the contact</source>
+        <translation>Az esemény pontos időpontja: az érintkezést leíró polinom egy gyöke</translation>
+    </message>
+    <message>
+        <source>Since previous</source>
+        <translation>Az előző óta</translation>
+    </message>
+    <message>
+        <source>Contact point</source>
+        <translation>Érintkezési pont</translation>
+    </message>
+    <message>
+        <source>Contact normal</source>
+        <translation>Érintkezési normális</translation>
+    </message>
+    <message>
+        <source>Unit normal from the first ball towards the other body</source>
+        <translation>Egységnyi normálvektor az első golyótól a másik test felé</translation>
+    </message>
+    <message>
+        <source>Relative speed</source>
+        <translation>Relatív sebesség</translation>
+    </message>
+    <message>
+        <source>Normal approach speed just before contact</source>
+        <translation>Normális irányú közeledési sebesség közvetlenül az érintkezés előtt</translation>
+    </message>
+    <message>
+        <source>Impulse</source>
+        <translation>Erőlökés</translation>
+    </message>
+    <message>
+        <source>Impulse on the first ball, table frame</source>
+        <translation>Az első golyót érő erőlökés, az asztal koordináta-rendszerében</translation>
+    </message>
+    <message>
+        <source>|Impulse|</source>
+        <translation>|Erőlökés|</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Előtte</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Utána</translation>
+    </message>
+    <message>
+        <source>Both balls</source>
+        <translation>Mindkét golyó</translation>
+    </message>
+    <message>
+        <source>Totals</source>
+        <translation>Összesen</translation>
+    </message>
+    <message>
+        <source>Momentum before</source>
+        <translation>Lendület előtte</translation>
+    </message>
+    <message>
+        <source>Momentum after</source>
+        <translation>Lendület utána</translation>
+    </message>
+    <message>
+        <source>Kinetic energy before</source>
+        <translation>Mozgási energia előtte</translation>
+    </message>
+    <message>
+        <source>Kinetic energy after</source>
+        <translation>Mozgási energia utána</translation>
+    </message>
+    <message>
+        <source>Energy change</source>
+        <translation>Energiaváltozás</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::MainWindow</name>
+    <message>
+        <source>Set the velocity of ball %1</source>
+        <translation>A(z) %1 golyó sebességének beállítása</translation>
+    </message>
+    <message>
+        <source>Not applied: %1</source>
+        <translation>Nem alkalmazva: %1</translation>
+    </message>
+    <message>
+        <source>%1 fps</source>
+        <translation>%1 kép/s</translation>
+    </message>
+    <message>
+        <source>Balls</source>
+        <translation>Golyók</translation>
+    </message>
+    <message>
+        <source>Shot</source>
+        <translation>Ütés</translation>
+    </message>
+    <message>
+        <source>Physics</source>
+        <translation>Fizika</translation>
+    </message>
+    <message>
+        <source>Events</source>
+        <translation>Események</translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation>Vizsgáló</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportálás</translation>
+    </message>
+    <message>
+        <source>Frames per second the table view draws</source>
+        <translation>Az asztal nézetének másodpercenként kirajzolt képkockái</translation>
+    </message>
+    <message>
+        <source>Simulating the edited setup</source>
+        <translation>A szerkesztett felállás szimulálása</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n event(s), at rest at %1</source>
+        <translation>
+            <numerusform>%n esemény, nyugalomban: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n event(s), stopped at the time limit</source>
+        <translation>
+            <numerusform>%n esemény, az időkorlátnál leállítva</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cut short: %1</source>
+        <translation>Idő előtt leállt: %1</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Mentetlen változások</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them first?</source>
+        <translation>A(z) %1 mentetlen változásokat tartalmaz. Menti őket előbb?</translation>
+    </message>
+    <message>
+        <source>Open Setup</source>
+        <translation>Felállás megnyitása</translation>
+    </message>
+    <message>
+        <source>Cannot Open Setup</source>
+        <translation>A felállás nem nyitható meg</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Megnyitva: %1</translation>
+    </message>
+    <message>
+        <source>Cannot Open Example</source>
+        <translation>A példa nem nyitható meg</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Example %1: save it to keep your changes</source>
+        <translation>%1 példa: mentse el, hogy megmaradjanak a változtatásai</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>névtelen</translation>
+    </message>
+    <message>
+        <source>Save Setup As</source>
+        <translation>Felállás mentése másként</translation>
+    </message>
+    <message>
+        <source>Cannot Save Setup</source>
+        <translation>A felállás nem menthető</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Mentve: %1</translation>
+    </message>
+    <message>
+        <source>%1[*] — CueLab</source>
+        <translation>%1[*] — CueLab</translation>
+    </message>
+    <message>
+        <source>About CueLab</source>
+        <translation>A CueLab névjegye</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;CueLab %1&lt;/h3&gt;&lt;p&gt;An exact, event-based billiards simulator and shot editor: every time of impact is a root of a polynomial.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;CueLab %1&lt;/h3&gt;&lt;p&gt;Pontos, eseményalapú biliárdszimulátor és ütésszerkesztő: minden ütközés időpontja egy polinom gyöke.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fájl</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>Ú&amp;j</translation>
+    </message>
+    <message>
+        <source>A new setup: a 9-ft table with a cue ball and one object ball</source>
+        <translation>Új felállás: 9 láb hosszú asztal egy fehér golyóval és egy célgolyóval</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Megnyitás…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Legutóbbiak megnyitása</translation>
+    </message>
+    <message>
+        <source>&amp;Examples</source>
+        <translation>&amp;Példák</translation>
+    </message>
+    <message>
+        <source>Open the bundled example %1 as a new, untitled setup</source>
+        <translation>A mellékelt %1 példa megnyitása új, névtelen felállásként</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>Menté&amp;s</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Mentés má&amp;sként…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Kilépés</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>S&amp;zerkesztés</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Visszavonás</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Mégis</translation>
+    </message>
+    <message>
+        <source>Reset &amp;Physics to Defaults</source>
+        <translation>A &amp;fizika alapértékeinek visszaállítása</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Nézet</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Panelek</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>Az elrendezés &amp;visszaállítása</translation>
+    </message>
+    <message>
+        <source>Put every panel back where the first start put it, at its default width</source>
+        <translation>Minden panel visszatétele oda, ahová az első indítás tette, alapértelmezett szélességgel</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>&amp;Rétegek</translation>
+    </message>
+    <message>
+        <source>&amp;Camera</source>
+        <translation>&amp;Kamera</translation>
+    </message>
+    <message>
+        <source>&amp;Top</source>
+        <translation>&amp;Felülről</translation>
+    </message>
+    <message>
+        <source>&amp;Player</source>
+        <translation>&amp;Játékos</translation>
+    </message>
+    <message>
+        <source>&amp;Side</source>
+        <translation>&amp;Oldalról</translation>
+    </message>
+    <message>
+        <source>&amp;All Balls</source>
+        <translation>&amp;Minden golyó</translation>
+    </message>
+    <message>
+        <source>&amp;Selected Ball Only</source>
+        <translation>Csak a &amp;kijelölt golyó</translation>
+    </message>
+    <message>
+        <source>&amp;None</source>
+        <translation>&amp;Egyik sem</translation>
+    </message>
+    <message>
+        <source>Pat&amp;hs Of</source>
+        <translation>&amp;Pályák</translation>
+    </message>
+    <message>
+        <source>Whose paths, trails and event markers are drawn (busy shots read better with one ball)</source>
+        <translation>Kiknek a pályái, nyomvonalai és eseményjelölői látszanak (zsúfolt ütésnél egy golyóval áttekinthetőbb)</translation>
+    </message>
+    <message>
+        <source>&amp;Labels Of</source>
+        <translation>&amp;Feliratok</translation>
+    </message>
+    <message>
+        <source>Whose event times are labelled in the view</source>
+        <translation>Kiknek az eseményidőpontjai kapnak feliratot a nézetben</translation>
+    </message>
+    <message>
+        <source>F&amp;ollow Selected Ball</source>
+        <translation>A kijelölt golyó &amp;követése</translation>
+    </message>
+    <message>
+        <source>Keep the selected ball at the centre of the view as time runs</source>
+        <translation>A kijelölt golyó a nézet közepén marad, ahogy telik az idő</translation>
+    </message>
+    <message>
+        <source>&amp;Zoom to Selection</source>
+        <translation>&amp;Nagyítás a kijelölésre</translation>
+    </message>
+    <message>
+        <source>Frame the selected ball&apos;s whole path (the table when no ball is selected)</source>
+        <translation>A kijelölt golyó teljes pályájának bekeretezése (kijelölt golyó nélkül az asztalé)</translation>
+    </message>
+    <message>
+        <source>&amp;Full Screen</source>
+        <translation>&amp;Teljes képernyő</translation>
+    </message>
+    <message>
+        <source>&amp;Analysis</source>
+        <translation>&amp;Elemzés</translation>
+    </message>
+    <message>
+        <source>&amp;Playback</source>
+        <translation>&amp;Lejátszás</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Súgó</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard and Mouse…</source>
+        <translation>&amp;Billentyűzet és egér…</translation>
+    </message>
+    <message>
+        <source>Every keyboard shortcut and mouse gesture of the window</source>
+        <translation>Az ablak minden billentyűparancsa és egérmozdulata</translation>
+    </message>
+    <message>
+        <source>Show First-Start &amp;Tip</source>
+        <translation>Kezdő &amp;tipp megjelenítése</translation>
+    </message>
+    <message>
+        <source>The short tour shown above the table on the first start</source>
+        <translation>A rövid bemutató, amely az első indításkor az asztal fölött látszik</translation>
+    </message>
+    <message>
+        <source>&amp;About CueLab</source>
+        <translation>A CueLab &amp;névjegye</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>A &amp;Qt névjegye</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Eredmény</translation>
+    </message>
+    <message>
+        <source>The shot&apos;s outcome: the first ball the struck ball touches, its cushions before that, and the pocketed balls (pocket, time)</source>
+        <translation>Az ütés eredménye: az első golyó, amelyet a megütött golyó eltalál, az előtte érintett mantinelek és a lyukba esett golyók (lyuk, időpont)</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Grafikonok</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::OutcomePanel</name>
+    <message>
+        <source>What</source>
+        <translation>Mi</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Eredmény</translation>
+    </message>
+    <message>
+        <source>Double-click the first contact or a pocketing to go to that event</source>
+        <translation>Dupla kattintás az első érintkezésre vagy egy lyukba esésre: ugrás arra az eseményre</translation>
+    </message>
+    <message>
+        <source>Ball</source>
+        <translation>Golyó</translation>
+    </message>
+    <message>
+        <source>Cushions</source>
+        <translation>Mantinelek</translation>
+    </message>
+    <message>
+        <source>Ends</source>
+        <translation>Végül</translation>
+    </message>
+    <message>
+        <source>x, y (m)</source>
+        <translation>x, y (m)</translation>
+    </message>
+    <message>
+        <source>Per ball: ball-cushion contacts (jaws included) and where it ends; double-click selects it</source>
+        <translation>Golyónként: golyó–mantinel érintkezések (a lyukpofákkal együtt) és hová kerül végül; dupla kattintással kijelölhető</translation>
+    </message>
+    <message>
+        <source>No simulation yet</source>
+        <translation>Még nincs szimuláció</translation>
+    </message>
+    <message>
+        <source>Struck ball</source>
+        <translation>Megütött golyó</translation>
+    </message>
+    <message>
+        <source>none (no shot)</source>
+        <translation>nincs (nincs ütés)</translation>
+    </message>
+    <message>
+        <source>First contact</source>
+        <translation>Első érintkezés</translation>
+    </message>
+    <message>
+        <source>%1 at %2 s</source>
+        <translation>%1, %2 s-nál</translation>
+    </message>
+    <message>
+        <source>The first ball the struck ball touches, and when (s)</source>
+        <translation>Az első golyó, amelyet a megütött golyó eltalál, és mikor (s)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nincs</translation>
+    </message>
+    <message>
+        <source>Cushions before it</source>
+        <translation>Mantinelek előtte</translation>
+    </message>
+    <message>
+        <source>Ball-cushion contacts of the struck ball before its first contact (jaws included)</source>
+        <translation>A megütött golyó mantinelérintései az első érintkezése előtt (a lyukpofákkal együtt)</translation>
+    </message>
+    <message>
+        <source>Pocketed</source>
+        <translation>Lyukba esett</translation>
+    </message>
+    <message>
+        <source>%1 in %2 at %3 s</source>
+        <translation>%1 a(z) %2 lyukban, %3 s-nál</translation>
+    </message>
+    <message>
+        <source>Struck ball pocketed</source>
+        <translation>A megütött golyó lyukba esett</translation>
+    </message>
+    <message>
+        <source>yes (a scratch)</source>
+        <translation>igen (hiba: a megütött golyó beesett)</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nem</translation>
+    </message>
+    <message>
+        <source>in %1</source>
+        <translation>a(z) %1 lyukban</translation>
+    </message>
+    <message>
+        <source>Final position in metres (table frame)</source>
+        <translation>Végső hely méterben (az asztal koordináta-rendszerében)</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::PhysicsPanel</name>
+    <message>
+        <source>The table: playing surface between the cushion noses in metres, pockets and cushions of the preset. The balls keep their size and place; a ball that would lie off the cloth refuses the change.</source>
+        <translation>Az asztal: a játékfelület a mantinelek élei között, méterben, az előbeállítás lyukaival és mantineljeivel. A golyók megtartják méretüket és helyüket; ha egy golyó a posztón kívülre kerülne, a változtatás elmarad.</translation>
+    </message>
+    <message>
+        <source>Pockets</source>
+        <translation>Lyukak</translation>
+    </message>
+    <message>
+        <source>Without pockets the rails are closed all round (a carom table never has pockets)</source>
+        <translation>Lyukak nélkül a mantinel körben zárt (a karambolasztalon sosincs lyuk)</translation>
+    </message>
+    <message>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <source>Gravitational acceleration g in m/s² (9.81 on Earth)</source>
+        <translation>A nehézségi gyorsulás, g, m/s²-ben (a Földön 9,81)</translation>
+    </message>
+    <message>
+        <source>Sliding friction between ball and cloth (dimensionless; 0.2, range 0.15-0.4, Alciatore)</source>
+        <translation>Csúszási súrlódás a golyó és a posztó között (dimenzió nélküli; 0,2, tartomány 0,15–0,4, Alciatore)</translation>
+    </message>
+    <message>
+        <source>Rolling resistance of the cloth (dimensionless; 0.01, range 0.005-0.015)</source>
+        <translation>A posztó gördülési ellenállása (dimenzió nélküli; 0,01, tartomány 0,005–0,015)</translation>
+    </message>
+    <message>
+        <source>Spin friction about the vertical axis (dimensionless; 0.0127 slows side spin by about 10.9 rad/s²)</source>
+        <translation>Pörgési súrlódás a függőleges tengely körül (dimenzió nélküli; a 0,0127 kb. 10,9 rad/s²-tel lassítja az oldalpörgetést)</translation>
+    </message>
+    <message>
+        <source>Frictionless</source>
+        <translation>Súrlódásmentes</translation>
+    </message>
+    <message>
+        <source>Frictional (throw)</source>
+        <translation>Súrlódásos (elvitellel)</translation>
+    </message>
+    <message>
+        <source>Ball-ball collision model: frictionless (spins unchanged) or with a Coulomb-limited tangential impulse that throws the object ball</source>
+        <translation>A golyó–golyó ütközés modellje: súrlódásmentes (a pörgetések nem változnak) vagy Coulomb-korlátos érintőleges erőlökéssel, amely eltéríti (elviszi) a célgolyót</translation>
+    </message>
+    <message>
+        <source>Ball-ball coefficient of restitution (dimensionless; 0.95, range 0.92-0.98)</source>
+        <translation>A golyó–golyó ütközési tényező (restitúció; dimenzió nélküli; 0,95, tartomány 0,92–0,98)</translation>
+    </message>
+    <message>
+        <source>Fixed</source>
+        <translation>Állandó</translation>
+    </message>
+    <message>
+        <source>Speed-dependent (Alciatore)</source>
+        <translation>Sebességfüggő (Alciatore)</translation>
+    </message>
+    <message>
+        <source>Ball-ball friction: a fixed coefficient, or Alciatore&apos;s fit 0.00995 + 0.108 exp(-1.088 v) of the relative speed v in m/s</source>
+        <translation>Golyó–golyó súrlódás: állandó együttható, vagy Alciatore illesztése, 0,00995 + 0,108 exp(−1,088 v), ahol v a relatív sebesség m/s-ban</translation>
+    </message>
+    <message>
+        <source>Fixed ball-ball friction coefficient (dimensionless; 0.05)</source>
+        <translation>Állandó golyó–golyó súrlódási együttható (dimenzió nélküli; 0,05)</translation>
+    </message>
+    <message>
+        <source>Mirror</source>
+        <translation>Tükrözés</translation>
+    </message>
+    <message>
+        <source>Han 2005</source>
+        <translation>Han 2005</translation>
+    </message>
+    <message>
+        <source>Ball-cushion model: mirror reflection scaled by restitution, or Han 2005 (contact above the equator, with friction)</source>
+        <translation>A golyó–mantinel modell: a restitúcióval skálázott tükrözés, vagy Han 2005 (érintkezés az egyenlítő fölött, súrlódással)</translation>
+    </message>
+    <message>
+        <source>Ball-cushion coefficient of restitution (dimensionless; 0.85, range 0.6-0.9)</source>
+        <translation>A golyó–mantinel ütközési tényező (restitúció; dimenzió nélküli; 0,85, tartomány 0,6–0,9)</translation>
+    </message>
+    <message>
+        <source>Ball-cushion friction coefficient (dimensionless; 0.2)</source>
+        <translation>A golyó–mantinel súrlódási együttható (dimenzió nélküli; 0,2)</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Frame timestep in milliseconds: one step of frame-by-frame playback (16.667 ms = 60 frames per second)</source>
+        <translation>Képkockalépés milliszekundumban: a kockánkénti lejátszás egy lépése (16,667 ms = 60 kép másodpercenként)</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <source>The simulation stops at this time in seconds at the latest</source>
+        <translation>A szimuláció legkésőbb ennél az időpontnál (másodpercben) leáll</translation>
+    </message>
+    <message>
+        <source>Reset to Defaults</source>
+        <translation>Alapértékek visszaállítása</translation>
+    </message>
+    <message>
+        <source>Set friction, restitution, models and gravity back to the defaults of the physics reference</source>
+        <translation>A súrlódás, a restitúció, a modellek és a nehézségi gyorsulás visszaállítása a fizikai leírás alapértékeire</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Asztal</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Fajta</translation>
+    </message>
+    <message>
+        <source>Cloth</source>
+        <translation>Posztó</translation>
+    </message>
+    <message>
+        <source>μ slide</source>
+        <translation>μ csúszás</translation>
+    </message>
+    <message>
+        <source>μ roll</source>
+        <translation>μ gördülés</translation>
+    </message>
+    <message>
+        <source>μ spin</source>
+        <translation>μ pörgés</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Nehézségi gyorsulás</translation>
+    </message>
+    <message>
+        <source>Ball-ball</source>
+        <translation>Golyó–golyó</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Restitution</source>
+        <translation>Restitúció</translation>
+    </message>
+    <message>
+        <source>Friction</source>
+        <translation>Súrlódás</translation>
+    </message>
+    <message>
+        <source>μ ball</source>
+        <translation>μ golyó</translation>
+    </message>
+    <message>
+        <source>Ball-cushion</source>
+        <translation>Golyó–mantinel</translation>
+    </message>
+    <message>
+        <source>μ cushion</source>
+        <translation>μ mantinel</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Idő</translation>
+    </message>
+    <message>
+        <source>Frame step</source>
+        <translation>Képkockalépés</translation>
+    </message>
+    <message>
+        <source>Stop at</source>
+        <translation>Leállás</translation>
+    </message>
+    <message>
+        <source>Change gravity</source>
+        <translation>A nehézségi gyorsulás módosítása</translation>
+    </message>
+    <message>
+        <source>Change μ slide</source>
+        <translation>A csúszási μ módosítása</translation>
+    </message>
+    <message>
+        <source>Change μ roll</source>
+        <translation>A gördülési μ módosítása</translation>
+    </message>
+    <message>
+        <source>Change μ spin</source>
+        <translation>A pörgési μ módosítása</translation>
+    </message>
+    <message>
+        <source>Change ball-ball restitution</source>
+        <translation>A golyó–golyó restitúció módosítása</translation>
+    </message>
+    <message>
+        <source>Change ball-ball friction</source>
+        <translation>A golyó–golyó súrlódás módosítása</translation>
+    </message>
+    <message>
+        <source>Change cushion restitution</source>
+        <translation>A mantinel restitúciójának módosítása</translation>
+    </message>
+    <message>
+        <source>Change cushion friction</source>
+        <translation>A mantinel súrlódásának módosítása</translation>
+    </message>
+    <message>
+        <source>Change the ball-ball model</source>
+        <translation>A golyó–golyó modell módosítása</translation>
+    </message>
+    <message>
+        <source>Change the ball-ball friction law</source>
+        <translation>A golyó–golyó súrlódási törvény módosítása</translation>
+    </message>
+    <message>
+        <source>Change the cushion model</source>
+        <translation>A mantinelmodell módosítása</translation>
+    </message>
+    <message>
+        <source>Change the frame step</source>
+        <translation>A képkockalépés módosítása</translation>
+    </message>
+    <message>
+        <source>Change the time limit</source>
+        <translation>Az időkorlát módosítása</translation>
+    </message>
+    <message>
+        <source>Change the table</source>
+        <translation>Az asztal módosítása</translation>
+    </message>
+    <message>
+        <source>Open the pockets</source>
+        <translation>A lyukak megnyitása</translation>
+    </message>
+    <message>
+        <source>Close the pockets</source>
+        <translation>A lyukak lezárása</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::PlotsChartView</name>
+    <message>
+        <source>time (s)</source>
+        <translation>idő (s)</translation>
+    </message>
+    <message>
+        <source>events</source>
+        <translation>események</translation>
+    </message>
+    <message>
+        <source>selected event</source>
+        <translation>kijelölt esemény</translation>
+    </message>
+    <message>
+        <source>cursor</source>
+        <translation>kurzor</translation>
+    </message>
+    <message>
+        <source>Drag: move the time cursor. Wheel: zoom the time axis (Ctrl: the value axis). Shift-drag or middle-drag: pan. Double-click: show everything. Click a marker to select its event.</source>
+        <translation>Húzás: az időkurzor mozgatása. Görgő: az időtengely nagyítása (Ctrl: az értéktengelyé). Shift+húzás vagy középső gombos húzás: eltolás. Dupla kattintás: minden látszik. Egy jelölőre kattintva kijelölhető az eseménye.</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::PlotsPanel</name>
+    <message>
+        <source>Speed (m/s)</source>
+        <translation>Sebesség (m/s)</translation>
+    </message>
+    <message>
+        <source>Slip speed (m/s)</source>
+        <translation>Csúszási sebesség (m/s)</translation>
+    </message>
+    <message>
+        <source>Spin wx, wy, wz (rad/s)</source>
+        <translation>Pörgetés wx, wy, wz (rad/s)</translation>
+    </message>
+    <message>
+        <source>Kinetic energy (J)</source>
+        <translation>Mozgási energia (J)</translation>
+    </message>
+    <message>
+        <source>What to plot against time (s). Slip speed: the speed of the ball&apos;s contact point on the cloth (m/s), zero while it rolls. Energy: translational, rotational and total (J).</source>
+        <translation>Mit ábrázoljon az idő (s) függvényében. Csúszási sebesség: a golyó posztóval érintkező pontjának sebessége (m/s), gördülés közben nulla. Energia: haladó, forgó és teljes (J).</translation>
+    </message>
+    <message>
+        <source>Selected ball</source>
+        <translation>Kijelölt golyó</translation>
+    </message>
+    <message>
+        <source>All balls</source>
+        <translation>Minden golyó</translation>
+    </message>
+    <message>
+        <source>The selected ball (the struck ball when none is selected) or every ball</source>
+        <translation>A kijelölt golyó (ha nincs kijelölve, a megütött golyó) vagy minden golyó</translation>
+    </message>
+    <message>
+        <source>Show all</source>
+        <translation>Minden mutatása</translation>
+    </message>
+    <message>
+        <source>Zoom out to the whole shot (double-click the chart)</source>
+        <translation>Kicsinyítés a teljes ütésre (dupla kattintás a grafikonon)</translation>
+    </message>
+    <message>
+        <source>No balls</source>
+        <translation>Nincs golyó</translation>
+    </message>
+    <message>
+        <source>No simulation yet</source>
+        <translation>Még nincs szimuláció</translation>
+    </message>
+    <message>
+        <source> speed</source>
+        <translation> sebesség</translation>
+    </message>
+    <message>
+        <source> slip</source>
+        <translation> csúszás</translation>
+    </message>
+    <message>
+        <source> wx</source>
+        <translation> wx</translation>
+    </message>
+    <message>
+        <source> wy</source>
+        <translation> wy</translation>
+    </message>
+    <message>
+        <source> wz</source>
+        <translation> wz</translation>
+    </message>
+    <message>
+        <source> wz (side)</source>
+        <translation> wz (oldalpörgetés)</translation>
+    </message>
+    <message>
+        <source> translation</source>
+        <translation> haladó</translation>
+    </message>
+    <message>
+        <source> rotation</source>
+        <translation> forgó</translation>
+    </message>
+    <message>
+        <source> total</source>
+        <translation> teljes</translation>
+    </message>
+    <message>
+        <source>table total</source>
+        <translation>az asztal összesen</translation>
+    </message>
+    <message>
+        <source>Event %1: %2 (%3) at %4 s</source>
+        <translation>%1. esemény: %2 (%3), %4 s-nál</translation>
+    </message>
+    <message>
+        <source>Ball %1</source>
+        <translation>%1 golyó</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n event(s)</source>
+        <translation>
+            <numerusform>%n esemény</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::RecentFiles</name>
+    <message>
+        <source>&amp;Clear List</source>
+        <translation>A lista &amp;törlése</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::ShortcutsDialog</name>
+    <message>
+        <source>Table view</source>
+        <translation>Asztalnézet</translation>
+    </message>
+    <message>
+        <source>Panels</source>
+        <translation>Panelek</translation>
+    </message>
+    <message>
+        <source>Select a ball</source>
+        <translation>Golyó kijelölése</translation>
+    </message>
+    <message>
+        <source>Click the ball</source>
+        <translation>Kattintás a golyóra</translation>
+    </message>
+    <message>
+        <source>Move a ball (at t = 0)</source>
+        <translation>Golyó áthelyezése (t = 0-kor)</translation>
+    </message>
+    <message>
+        <source>Drag the ball; it lands on the nearest free spot</source>
+        <translation>A golyó húzása; a legközelebbi szabad helyre kerül</translation>
+    </message>
+    <message>
+        <source>Orbit the camera</source>
+        <translation>A kamera körbeforgatása</translation>
+    </message>
+    <message>
+        <source>Drag on the cloth or the background</source>
+        <translation>Húzás a posztón vagy a háttéren</translation>
+    </message>
+    <message>
+        <source>Pan the camera</source>
+        <translation>A kamera eltolása</translation>
+    </message>
+    <message>
+        <source>Right or middle drag, or Shift + drag</source>
+        <translation>Jobb vagy középső gombos húzás, vagy Shift + húzás</translation>
+    </message>
+    <message>
+        <source>Zoom towards the cursor</source>
+        <translation>Nagyítás a kurzor felé</translation>
+    </message>
+    <message>
+        <source>Mouse wheel</source>
+        <translation>Egérgörgő</translation>
+    </message>
+    <message>
+        <source>Centre the camera on a point</source>
+        <translation>A kamera ráirányítása egy pontra</translation>
+    </message>
+    <message>
+        <source>Double-click</source>
+        <translation>Dupla kattintás</translation>
+    </message>
+    <message>
+        <source>Edit a value</source>
+        <translation>Érték szerkesztése</translation>
+    </message>
+    <message>
+        <source>Double-click a cell, type, Enter</source>
+        <translation>Dupla kattintás egy cellára, gépelés, Enter</translation>
+    </message>
+    <message>
+        <source>Place the cue tip</source>
+        <translation>A dákóvég elhelyezése</translation>
+    </message>
+    <message>
+        <source>Click or drag on the ball face in Shot</source>
+        <translation>Kattintás vagy húzás a golyó lapján az Ütés panelen</translation>
+    </message>
+    <message>
+        <source>Jump to an event</source>
+        <translation>Ugrás egy eseményre</translation>
+    </message>
+    <message>
+        <source>Click its row in Events</source>
+        <translation>Kattintás a sorára az Események panelen</translation>
+    </message>
+    <message>
+        <source>Scrub time</source>
+        <translation>Léptetés az időben</translation>
+    </message>
+    <message>
+        <source>Drag the time slider; ticks mark events</source>
+        <translation>Az idő csúszkájának húzása; a jelek az eseményeket mutatják</translation>
+    </message>
+    <message>
+        <source>Open a setup</source>
+        <translation>Felállás megnyitása</translation>
+    </message>
+    <message>
+        <source>Drop a .json file on the window</source>
+        <translation>Egy .json fájl ráejtése az ablakra</translation>
+    </message>
+    <message>
+        <source>Keyboard and Mouse</source>
+        <translation>Billentyűzet és egér</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Művelet</translation>
+    </message>
+    <message>
+        <source>Keys or gesture</source>
+        <translation>Billentyűk vagy mozdulat</translation>
+    </message>
+    <message>
+        <source>Keyboard</source>
+        <translation>Billentyűzet</translation>
+    </message>
+    <message>
+        <source>Mouse</source>
+        <translation>Egér</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::ShotPanel</name>
+    <message>
+        <source>Strike a ball at t = 0</source>
+        <translation>Egy golyó megütése t = 0-kor</translation>
+    </message>
+    <message>
+        <source>Without a strike the balls move only with the velocities and spins they are set up with.</source>
+        <translation>Ütés nélkül a golyók csak a beállított sebességükkel és pörgetésükkel mozognak.</translation>
+    </message>
+    <message>
+        <source>The ball the cue strikes</source>
+        <translation>A golyó, amelyet a dákó megüt</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>Cue speed V0 in m/s just before the tip meets the ball</source>
+        <translation>A dákó sebessége, V0, m/s-ban, közvetlenül mielőtt a dákóvég eléri a golyót</translation>
+    </message>
+    <message>
+        <source>Heading of the cue in degrees: 0 = along +x (towards the foot rail), counter-clockwise positive</source>
+        <translation>A dákó iránya fokban: 0 = a +x mentén (az alsó mantinel felé), az óramutató járásával ellentétesen pozitív</translation>
+    </message>
+    <message>
+        <source>Elevation of the cue above the cloth in degrees (masse and jump shots)</source>
+        <translation>A dákó emelése a posztó fölé, fokban (massé és ugratás)</translation>
+    </message>
+    <message>
+        <source>Side offset of the tip as a fraction of the ball radius R: + = right of centre (right english)</source>
+        <translation>A dákóvég oldalirányú eltolása a golyó R sugarának arányában: + = a középtől jobbra (jobb oldalpörgetés)</translation>
+    </message>
+    <message>
+        <source>Height offset of the tip as a fraction of the ball radius R: + = above centre (follow), 0.4 R = natural roll</source>
+        <translation>A dákóvég magassági eltolása a golyó R sugarának arányában: + = a közép fölött (felső, utánfutó ütés), 0,4 R = természetes gördülés</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <source>Mass of the cue in kg (a typical cue: 0.567 kg, 20 oz)</source>
+        <translation>A dákó tömege kg-ban (egy szokásos dákó: 0,567 kg, 20 uncia)</translation>
+    </message>
+    <message>
+        <source>Ball</source>
+        <translation>Golyó</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Sebesség</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Irány</translation>
+    </message>
+    <message>
+        <source>Elevation</source>
+        <translation>Emelés</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Oldal</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Magasság</translation>
+    </message>
+    <message>
+        <source>Tip</source>
+        <translation>Dákóvég</translation>
+    </message>
+    <message>
+        <source>Cue mass</source>
+        <translation>Dákótömeg</translation>
+    </message>
+    <message>
+        <source>Add the cue strike</source>
+        <translation>A dákóütés hozzáadása</translation>
+    </message>
+    <message>
+        <source>Remove the cue strike</source>
+        <translation>A dákóütés eltávolítása</translation>
+    </message>
+    <message>
+        <source>Strike ball %1</source>
+        <translation>A(z) %1 golyó megütése</translation>
+    </message>
+    <message>
+        <source>Change the cue speed</source>
+        <translation>A dákó sebességének módosítása</translation>
+    </message>
+    <message>
+        <source>Change the heading</source>
+        <translation>Az irány módosítása</translation>
+    </message>
+    <message>
+        <source>Change the cue elevation</source>
+        <translation>A dákó emelésének módosítása</translation>
+    </message>
+    <message>
+        <source>Move the cue tip</source>
+        <translation>A dákóvég áthelyezése</translation>
+    </message>
+    <message>
+        <source>Change the cue mass</source>
+        <translation>A dákó tömegének módosítása</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::TableInteraction</name>
+    <message>
+        <source>the spot under it is off the cloth, on a cushion or in a pocket</source>
+        <translation>az alatta lévő hely a posztón kívül, mantinelen vagy lyukban van</translation>
+    </message>
+    <message>
+        <source>the spot under it overlaps ball &quot;%1&quot;</source>
+        <translation>az alatta lévő hely átfed a(z) „%1” golyóval</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>Ball &quot;%1&quot; placed %2 from the cursor, on the nearest free spot: %3.</source>
+        <translation>A(z) „%1” golyó a kurzortól %2 távolságra, a legközelebbi szabad helyre került: %3.</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::TimelineSlider</name>
+    <message>
+        <source>Time since the strike; a tick marks every event</source>
+        <translation>Az ütés óta eltelt idő; minden eseményt egy jel mutat</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::TipOffsetWidget</name>
+    <message>
+        <source>Cue tip offset on the ball&apos;s face, as the player sees it. Click or drag to place the tip; the dashed circle is the miscue limit (half the radius).</source>
+        <translation>A dákóvég eltolása a golyó lapján, ahogy a játékos látja. Kattintással vagy húzással helyezhető el; a szaggatott kör a lecsúszás határa (a sugár fele).</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::TransportBar</name>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Eleje</translation>
+    </message>
+    <message>
+        <source>Go to the start, t = 0</source>
+        <translation>Ugrás az elejére, t = 0</translation>
+    </message>
+    <message>
+        <source>&amp;Previous Event</source>
+        <translation>Elő&amp;ző esemény</translation>
+    </message>
+    <message>
+        <source>Go to the previous event</source>
+        <translation>Ugrás az előző eseményre</translation>
+    </message>
+    <message>
+        <source>Frame &amp;Back</source>
+        <translation>Egy kockát &amp;vissza</translation>
+    </message>
+    <message>
+        <source>One frame back (the frame step is set in Physics)</source>
+        <translation>Egy képkocka vissza (a képkockalépés a Fizika panelen állítható)</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>&amp;Lejátszás</translation>
+    </message>
+    <message>
+        <source>Play or pause</source>
+        <translation>Lejátszás vagy szünet</translation>
+    </message>
+    <message>
+        <source>Frame &amp;Forward</source>
+        <translation>Egy kockát &amp;előre</translation>
+    </message>
+    <message>
+        <source>One frame forward</source>
+        <translation>Egy képkocka előre</translation>
+    </message>
+    <message>
+        <source>&amp;Next Event</source>
+        <translation>&amp;Következő esemény</translation>
+    </message>
+    <message>
+        <source>Go to the next event</source>
+        <translation>Ugrás a következő eseményre</translation>
+    </message>
+    <message>
+        <source>&amp;End</source>
+        <translation>&amp;Vége</translation>
+    </message>
+    <message>
+        <source>Go to the end, when every ball rests</source>
+        <translation>Ugrás a végére, amikor minden golyó nyugalomban van</translation>
+    </message>
+    <message>
+        <source>Current time and end time of the shot, in seconds</source>
+        <translation>Az ütés aktuális és befejező időpontja, másodpercben</translation>
+    </message>
+    <message>
+        <source>Playback speed: 1× is real time</source>
+        <translation>Lejátszási sebesség: az 1× a valós idő</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Szünet</translation>
+    </message>
+    <message>
+        <source>t = %1 s / %2 s</source>
+        <translation>t = %1 s / %2 s</translation>
+    </message>
+</context>
+</TS>
