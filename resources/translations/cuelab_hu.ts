@@ -319,6 +319,69 @@
     </message>
 </context>
 <context>
+    <name>cuelab::DisplayNames</name>
+    <message>
+        <source>stationary</source>
+        <translation>áll</translation>
+    </message>
+    <message>
+        <source>spinning</source>
+        <translation>helyben pörög</translation>
+    </message>
+    <message>
+        <source>sliding</source>
+        <translation>csúszik</translation>
+    </message>
+    <message>
+        <source>rolling</source>
+        <translation>gördül</translation>
+    </message>
+    <message>
+        <source>pocketed</source>
+        <translation>lyukban</translation>
+    </message>
+    <message>
+        <source>cue-strike</source>
+        <translation>dákóütés</translation>
+    </message>
+    <message>
+        <source>ball-ball</source>
+        <translation>golyó–golyó</translation>
+    </message>
+    <message>
+        <source>ball-cushion</source>
+        <translation>golyó–mantinel</translation>
+    </message>
+    <message>
+        <source>ball-pocket</source>
+        <translation>lyukba esés</translation>
+    </message>
+    <message>
+        <source>slide-to-roll</source>
+        <translation>csúszásból gördülés</translation>
+    </message>
+    <message>
+        <source>slide-to-spin</source>
+        <translation>csúszásból helyben pörgés</translation>
+    </message>
+    <message>
+        <source>slide-to-stop</source>
+        <translation>csúszásból megállás</translation>
+    </message>
+    <message>
+        <source>roll-to-spin</source>
+        <translation>gördülésből helyben pörgés</translation>
+    </message>
+    <message>
+        <source>roll-to-stop</source>
+        <translation>gördülésből megállás</translation>
+    </message>
+    <message>
+        <source>spin-to-stop</source>
+        <translation>pörgésből megállás</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::Document</name>
     <message>
         <source>Untitled</source>

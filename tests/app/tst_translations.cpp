@@ -5,6 +5,7 @@
 
 #include "MainWindow.h"
 #include "Translations.h"
+#include "i18n/DisplayNames.h"
 
 #include <QAction>
 #include <QDir>
@@ -100,6 +101,10 @@ void TestTranslations::hungarianWindow()
     QCOMPARE(QCoreApplication::translate("cuelab::ShotPanel", "Mass of the cue in kg (a typical cue: 0.567 kg, 20 oz)"),
              QStringLiteral("A dákó tömege kg-ban (egy szokásos dákó: 0,567 kg, 20 uncia)"));
     QCOMPARE(QCoreApplication::translate("cuelab", "Export"), QStringLiteral("Exportálás"));
+    // The core's names of states and events, as the panels show them.
+    QCOMPARE(displayName(MotionState::Rolling), QStringLiteral("gördül"));
+    QCOMPARE(displayName(EventKind::BallCushion), QStringLiteral("golyó–mantinel"));
+    QCOMPARE(displayName(EventKind::SlideToRoll), QStringLiteral("csúszásból gördülés"));
 }
 
 void TestTranslations::englishWindow_data()
@@ -120,6 +125,8 @@ void TestTranslations::englishWindow()
     QVERIFY2(menus.contains(QStringLiteral("&File")), qPrintable(menus.join(QLatin1Char(' '))));
     QVERIFY(menus.contains(QStringLiteral("&Help")));
     QCOMPARE(dockTitle(window, "BallsDock"), QStringLiteral("Balls"));
+    QCOMPARE(displayName(MotionState::Rolling), QStringLiteral("rolling"));  // CONTRACT.md's names
+    QCOMPARE(displayName(EventKind::BallBall), QStringLiteral("ball-ball"));
 }
 
 void TestTranslations::systemLocaleChooses_data()

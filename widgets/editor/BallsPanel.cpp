@@ -1,6 +1,7 @@
 #include "BallsPanel.h"
 
 #include "BallEditor.h"
+#include "i18n/DisplayNames.h"
 #include "Document.h"
 #include "Quantities.h"
 
@@ -232,7 +233,7 @@ void BallsPanel::refreshMotion()
             continue;
         }
         const BallState s = result->stateAt(row, time_);
-        table_->item(row, StateColumn)->setText(toQString(toString(s.motion)));
+        table_->item(row, StateColumn)->setText(displayName(s.motion));
         const bool onTable = s.motion != MotionState::Pocketed;
         table_->item(row, PositionColumn)->setText(onTable ? formatVector(s.position, QString(), 3).trimmed() : QStringLiteral("–"));
         table_->item(row, SpeedColumn)->setText(onTable ? formatNumber(s.velocity.norm(), 3) : QStringLiteral("–"));

@@ -1,5 +1,6 @@
 #include "EventTableModel.h"
 
+#include "i18n/DisplayNames.h"
 #include "Quantities.h"
 
 #include <QBrush>
@@ -86,7 +87,7 @@ QVariant EventTableModel::data(const QModelIndex& index, int role) const
         switch (index.column()) {
         case IndexColumn: return index.row() + 1;
         case TimeColumn: return formatNumber(e.time, kTimeDecimals);
-        case KindColumn: return toQString(toString(e.kind));
+        case KindColumn: return displayName(e.kind);
         case AgentsColumn: return agents(*result_, e);
         case GapColumn: return row == 0 ? QStringLiteral("–") : formatNumber(e.time - result_->events[row - 1].time, kTimeDecimals);
         case DetailsColumn: return details(*result_, e);

@@ -1,5 +1,6 @@
 #include "InspectorPanel.h"
 
+#include "i18n/DisplayNames.h"
 #include "EventTableModel.h"
 #include "Quantities.h"
 
@@ -60,7 +61,7 @@ void InspectorPanel::showNothing()
 
 void InspectorPanel::addState(QTreeWidgetItem* parent, const BallState& s, double radius)
 {
-    add(parent, tr("State"), toQString(toString(s.motion)));
+    add(parent, tr("State"), displayName(s.motion));
     if (s.motion == MotionState::Pocketed) return;
     add(parent, tr("Position"), formatVector(s.position, QStringLiteral("m"), 4));
     add(parent, tr("Velocity"), formatVector(s.velocity, QStringLiteral("m/s"), 4));
@@ -118,7 +119,7 @@ void InspectorPanel::showEventDetails(const SimulationResult& result, int index)
     if (index < 0 || index >= static_cast<int>(result.events.size())) return showNothing();
     const std::size_t i = static_cast<std::size_t>(index);
     const Event& e = result.events[i];
-    auto* top = add(nullptr, tr("Event %1").arg(index + 1), toQString(toString(e.kind)));
+    auto* top = add(nullptr, tr("Event %1").arg(index + 1), displayName(e.kind));
     add(top, tr("Agents"), EventTableModel::agents(result, e));
     add(top, tr("Time of impact"), formatQuantity(e.time, QStringLiteral("s"), 9),
         tr("Exact time of the event: a root of the polynomial that describes the contact"));

@@ -1,5 +1,7 @@
 #include "OutcomePanel.h"
 
+#include "i18n/DisplayNames.h"
+
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -113,7 +115,7 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
         balls_->setItem(b, 1, item(QString::number(o.cushionHits[b])));
         const QString state = s.motion == MotionState::Pocketed
                                   ? tr("in %1").arg(QString::fromStdString(r.table.pockets[s.pocket].id))
-                                  : QString::fromUtf8(toString(s.motion).data(), static_cast<qsizetype>(toString(s.motion).size()));
+                                  : displayName(s.motion);
         balls_->setItem(b, 2, item(state));
         balls_->setItem(b, 3, item(s.motion == MotionState::Pocketed ? QString()
                                    : QStringLiteral("%1, %2").arg(s.position.x(), 0, 'f', 4).arg(s.position.y(), 0, 'f', 4),

@@ -1,5 +1,6 @@
 #include "PlotsPanel.h"
 
+#include "i18n/DisplayNames.h"
 #include "PlotsChartView.h"
 #include "view/BallAppearance.h"
 
@@ -258,7 +259,7 @@ void PlotsPanel::rebuild()
             if (e.kind == EventKind::BallCushion) agents += QStringLiteral(", ") + QString::fromStdString(r.table.cushions[e.cushion].id);
             if (e.kind == EventKind::BallJaw) agents += QStringLiteral(", ") + QString::fromStdString(r.table.jaws[e.jaw].id);
             if (e.kind == EventKind::BallPocket) agents += QStringLiteral(", ") + QString::fromStdString(r.table.pockets[e.pocket].id);
-            m.name = tr("Event %1: %2 (%3) at %4 s").arg(i).arg(QString::fromUtf8(toString(e.kind).data(), static_cast<qsizetype>(toString(e.kind).size())), agents)
+            m.name = tr("Event %1: %2 (%3) at %4 s").arg(i).arg(displayName(e.kind), agents)
                          .arg(e.time, 0, 'f', 4);
             markers.push_back(m);
             break;  // one marker per event

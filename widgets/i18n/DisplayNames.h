@@ -1,0 +1,16 @@
+#pragma once
+// The core's names of motion states and event kinds ("rolling", "ball-ball": CONTRACT.md's names,
+// which the CLI and the files keep) as the window shows them: the same words in English, translated
+// in the other languages (resources/translations). A name without a translation shows as it is.
+
+#include "Ball.h"
+#include "Event.h"
+
+#include <QString>
+
+namespace cuelab {
+
+QString displayName(MotionState state);
+QString displayName(EventKind kind);
+
+}  // namespace cuelab
