@@ -11,6 +11,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QLibraryInfo>
 #include <QMenuBar>
 #include <QProcess>
 #include <QTest>
@@ -43,6 +44,7 @@ private slots:
     void embedded();
     void committedTranslationIsComplete();
     void hungarianWindow();
+    void qtOwnStrings();
     void englishWindow_data();
     void englishWindow();
     void systemLocaleChooses_data();
@@ -105,6 +107,19 @@ void TestTranslations::hungarianWindow()
     QCOMPARE(displayName(MotionState::Rolling), QStringLiteral("gördül"));
     QCOMPARE(displayName(EventKind::BallCushion), QStringLiteral("golyó–mantinel"));
     QCOMPARE(displayName(EventKind::SlideToRoll), QStringLiteral("csúszásból gördülés"));
+}
+
+// Qt's own strings (standard buttons) follow, from qtbase_hu.qm, when the system has it.
+void TestTranslations::qtOwnStrings()
+{
+    const QString qtbase = QLibraryInfo::path(QLibraryInfo::TranslationsPath) + QStringLiteral("/qtbase_hu.qm");
+    if (!QFile::exists(qtbase)) QSKIP("no qtbase_hu.qm on this system (Debian: qt6-translations-l10n)");
+    const QString english = QCoreApplication::translate("QPlatformTheme", "Cancel");
+    installTranslations(QLocale(QStringLiteral("hu_HU")));
+    const QString hungarian = QCoreApplication::translate("QPlatformTheme", "Cancel");
+    QVERIFY2(hungarian != english && !hungarian.isEmpty(), qPrintable(hungarian));
+    installTranslations(QLocale::c());
+    QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), english);
 }
 
 void TestTranslations::englishWindow_data()
