@@ -413,7 +413,7 @@
     </message>
     <message>
         <source>Clear the table</source>
-        <translation>Az asztal letakarítása</translation>
+        <translation>Az asztal kiürítése</translation>
     </message>
     <message>
         <source>Place ball %1</source>
@@ -884,7 +884,7 @@
     </message>
     <message>
         <source>Pat&amp;hs Of</source>
-        <translation>&amp;Pályák</translation>
+        <translation>&amp;Pályák mutatása</translation>
     </message>
     <message>
         <source>Whose paths, trails and event markers are drawn (busy shots read better with one ball)</source>
@@ -892,7 +892,7 @@
     </message>
     <message>
         <source>&amp;Labels Of</source>
-        <translation>&amp;Feliratok</translation>
+        <translation>Fel&amp;iratok mutatása</translation>
     </message>
     <message>
         <source>Whose event times are labelled in the view</source>
@@ -971,7 +971,7 @@
     <name>cuelab::OutcomePanel</name>
     <message>
         <source>What</source>
-        <translation>Mi</translation>
+        <translation>Tétel</translation>
     </message>
     <message>
         <source>Outcome</source>
@@ -991,7 +991,7 @@
     </message>
     <message>
         <source>Ends</source>
-        <translation>Végül</translation>
+        <translation>Végső hely</translation>
     </message>
     <message>
         <source>x, y (m)</source>
