@@ -164,6 +164,7 @@ private slots:
     void windowOptions();
     void windowOptionsWithoutScreenshot();
     void rendererAndSimulatorGuards();
+    void longRunOrientations();
 };
 
 void TestNumericOptions::parser_data()
@@ -361,6 +362,30 @@ void TestNumericOptions::rendererAndSimulatorGuards()
         QVERIFY_THROWS_EXCEPTION(std::domain_error, result->statesAt(t));
     }
     QVERIFY(std::isfinite(result->stateAt(0, 1e300).position.x()));  // finite times past the end are fine
+}
+
+// A run far longer than any shot (no friction, a max_time of 10^6 s, the longest time an option
+// takes): the orientations at its end are bounded work (before, 2 * 10^9 substeps and 4 GB of keys).
+void TestNumericOptions::longRunOrientations()
+{
+    Setup setup;
+    setup.table.pockets = false;
+    setup.physics.muSlide = setup.physics.muRoll = setup.physics.muSpin = 0.0;
+    Ball ball;
+    ball.id = "cue";
+    ball.state.position = Vec2(1.0, 0.6);
+    ball.state.velocity = Vec2(0.01, 0.003);
+    ball.state.spin = Vec3(0.0, 0.0, 3.0);
+    setup.balls.push_back(ball);
+    setup.simulation.maxTime = cmdline::kMaxSeconds;
+    auto result = std::make_shared<const SimulationResult>(simulate(setup));
+    QVERIFY2(result->endTime > 1e5, qPrintable(QString::number(result->endTime)));
+    BallOrientations orientations;
+    orientations.reset(result);
+    const Eigen::Quaterniond end = orientations.at(0, result->endTime);
+    QVERIFY(std::isfinite(end.w()) && std::abs(end.norm() - 1.0) < 1e-9);
+    QVERIFY(orientations.at(0, 1e300).isApprox(end));
+    QVERIFY(orientations.at(0, 0.5 * result->endTime).coeffs().allFinite());
 }
 
 QTEST_GUILESS_MAIN(TestNumericOptions)

@@ -26,7 +26,8 @@ Eigen::Quaterniond BallOrientations::initial(int index)
 Eigen::Quaterniond BallOrientations::integrate(int index, Eigen::Quaterniond q, double from, double to) const
 {
     if (to <= from) return q;
-    const int steps = std::max(1, static_cast<int>(std::ceil((to - from) / kSubstep - 1e-9)));
+    const double wanted = std::ceil((to - from) / kSubstep - 1e-9);
+    const int steps = wanted >= kMaxSubsteps ? kMaxSubsteps : std::max(1, static_cast<int>(wanted));
     const double h = (to - from) / steps;
     for (int s = 0; s < steps; ++s) {
         const BallState state = result_->stateAt(index, from + (s + 0.5) * h);
@@ -49,8 +50,11 @@ Eigen::Quaterniond BallOrientations::at(int index, double t)
     // and the key index of floor(NaN) is undefined; it used to grow the cache without end). +-inf
     // clamp to the run's ends like any other time outside it.
     if (std::isnan(t)) return keys.front();
-    const double clamped = std::clamp(t, 0.0, std::max(result_->endTime, 0.0));
-    const auto key = static_cast<std::size_t>(std::floor(clamped / keyInterval()));
+    const double end = std::isfinite(result_->endTime) ? std::max(result_->endTime, 0.0) : 0.0;
+    const double clamped = std::clamp(t, 0.0, end);
+    // Clamped as a double first: the cast of a double beyond size_t's range is undefined.
+    const auto key = static_cast<std::size_t>(
+        std::min(std::floor(clamped / keyInterval()), static_cast<double>(kMaxKeys - 1)));
     while (keys.size() <= key) {
         const double start = static_cast<double>(keys.size() - 1) * keyInterval();
         keys.push_back(integrate(index, keys.back(), start, start + keyInterval()));

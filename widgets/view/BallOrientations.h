@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cstddef>
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,11 @@ class BallOrientations {
 public:
     static constexpr double kSubstep = 0.5e-3;   // s: a ball at 40 rad/s turns 1.1 deg per substep
     static constexpr int kSubstepsPerKey = 16;   // a keyframe every 8 ms
+    // Bounds for runs far longer than a shot (a frictionless setup with a huge max_time): keys are
+    // kept for the first kMaxKeys intervals (about 17 minutes, 4 MB a ball), and one integration
+    // takes at most kMaxSubsteps substeps (coarser beyond), so that no time costs more than a moment.
+    static constexpr std::size_t kMaxKeys = std::size_t{1} << 17;
+    static constexpr int kMaxSubsteps = 1 << 16;
 
     void reset(std::shared_ptr<const SimulationResult> result);
     // Orientation of ball `index` at time t (s), body -> world. Times outside the run are clamped to
