@@ -319,6 +319,13 @@
     </message>
 </context>
 <context>
+    <name>cuelab::CushionModelParameters</name>
+    <message>
+        <source>Change %1</source>
+        <translation>%1 módosítása</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::DisplayNames</name>
     <message>
         <source>stationary</source>
@@ -1133,18 +1140,6 @@
         <translation>Állandó golyó–golyó súrlódási együttható (dimenzió nélküli; 0,05)</translation>
     </message>
     <message>
-        <source>Mirror</source>
-        <translation>Tükrözés</translation>
-    </message>
-    <message>
-        <source>Han 2005</source>
-        <translation>Han 2005</translation>
-    </message>
-    <message>
-        <source>Ball-cushion model: mirror reflection scaled by restitution, or Han 2005 (contact above the equator, with friction)</source>
-        <translation>A golyó–mantinel modell: a restitúcióval skálázott tükrözés, vagy Han 2005 (érintkezés az egyenlítő fölött, súrlódással)</translation>
-    </message>
-    <message>
         <source>Ball-cushion coefficient of restitution (dimensionless; 0.85, range 0.6-0.9)</source>
         <translation>A golyó–mantinel ütközési tényező (restitúció; dimenzió nélküli; 0,85, tartomány 0,6–0,9)</translation>
     </message>
@@ -1307,6 +1302,10 @@
     <message>
         <source>Close the pockets</source>
         <translation>A lyukak lezárása</translation>
+    </message>
+    <message>
+        <source>Ball-cushion model: mirror, Han 2005, Mathavan 2010 or Stronge&apos;s compliant impact (docs/cushion-models.md)</source>
+        <translation>A golyó–mantinel modell: tükrözés, Han 2005, Mathavan 2010 vagy Stronge rugalmas ütközése (docs/cushion-models.md)</translation>
     </message>
 </context>
 <context>
@@ -1672,6 +1671,41 @@
     <message>
         <source>Change the cue mass</source>
         <translation>A dákó tömegének módosítása</translation>
+    </message>
+    <message>
+        <source>End mass</source>
+        <translation>Végtömeg</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::SquirtControl</name>
+    <message>
+        <source>Squirt</source>
+        <translation>Elcsúszás</translation>
+    </message>
+    <message>
+        <source>Squirt: side english sends the cue ball off the cue line, away from the side of the english, by an angle that grows as the tip&apos;s end mass grows (Alciatore TP A-31). Off: the ball leaves along the cue line.</source>
+        <translation>Elcsúszás (squirt): az oldalpörgetés a dákó vonalától elviszi a fehér golyót, a pörgetéssel ellentétes oldalra, annál nagyobb szögben, minél nagyobb a dákóvég tömege (Alciatore TP A-31). Kikapcsolva: a golyó a dákó vonalában indul.</translation>
+    </message>
+    <message>
+        <source>g</source>
+        <translation>g</translation>
+    </message>
+    <message>
+        <source>End mass of the cue tip in grams, the part of the shaft that moves with the tip during the hit (about 5.7 g for a pool cue, a thirtieth of the ball; low-squirt shafts are lighter)</source>
+        <translation>A dákóvég végtömege grammban: a szár azon része, amely az ütés alatt a dákóvéggel együtt mozog (pooldákónál kb. 5,7 g, a golyó harmincad része; a kis elcsúszású szárak könnyebbek)</translation>
+    </message>
+    <message>
+        <source>Turn squirt on</source>
+        <translation>Az elcsúszás bekapcsolása</translation>
+    </message>
+    <message>
+        <source>Turn squirt off</source>
+        <translation>Az elcsúszás kikapcsolása</translation>
+    </message>
+    <message>
+        <source>Change the end mass</source>
+        <translation>A végtömeg módosítása</translation>
     </message>
 </context>
 <context>
