@@ -71,6 +71,30 @@
         <source>Newton&apos;s cradle (5 frozen balls)</source>
         <translation>Newton-bölcső (5 egymáshoz simuló golyó)</translation>
     </message>
+    <message>
+        <source>Move ball %1</source>
+        <translation>A(z) %1 golyó áthelyezése</translation>
+    </message>
+    <message>
+        <source>Set the velocity of ball %1</source>
+        <translation>A(z) %1 golyó sebességének beállítása</translation>
+    </message>
+    <message>
+        <source>Set the spin of ball %1</source>
+        <translation>A(z) %1 golyó pörgetésének beállítása</translation>
+    </message>
+    <message>
+        <source>Set the radius of ball %1</source>
+        <translation>A(z) %1 golyó sugarának beállítása</translation>
+    </message>
+    <message>
+        <source>Set the mass of ball %1</source>
+        <translation>A(z) %1 golyó tömegének beállítása</translation>
+    </message>
+    <message>
+        <source>Rename ball %1</source>
+        <translation>A(z) %1 golyó átnevezése</translation>
+    </message>
 </context>
 <context>
     <name>cuelab</name>
@@ -221,6 +245,101 @@
     <message>
         <source>Every event with its agents&apos; states before and after</source>
         <translation>Minden esemény, a résztvevők előtte és utána vett állapotával</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::BallEditor</name>
+    <message>
+        <source>The ball&apos;s id: unique, not empty; the shot, the events and the command line name the ball by it</source>
+        <translation>A golyó azonosítója: egyedi, nem üres; az ütés, az események és a parancssor ezzel nevezik meg a golyót</translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>Position of the centre along the length at t = 0, in metres</source>
+        <translation>A középpont helye a hosszúság mentén t = 0-kor, méterben</translation>
+    </message>
+    <message>
+        <source>Position of the centre across the width at t = 0, in metres</source>
+        <translation>A középpont helye a szélesség mentén t = 0-kor, méterben</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>Velocity along the length at t = 0, in m/s (before any cue strike)</source>
+        <translation>Sebesség a hosszúság mentén t = 0-kor, m/s-ban (minden dákóütés előtt)</translation>
+    </message>
+    <message>
+        <source>Velocity across the width at t = 0, in m/s (before any cue strike)</source>
+        <translation>Sebesség a szélesség mentén t = 0-kor, m/s-ban (minden dákóütés előtt)</translation>
+    </message>
+    <message>
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <source>Angular velocity about the length axis x at t = 0, in rad/s</source>
+        <translation>Szögsebesség a hossztengely (x) körül t = 0-kor, rad/s-ban</translation>
+    </message>
+    <message>
+        <source>Angular velocity about the width axis y at t = 0, in rad/s (rolling along +x: wy = vx / R)</source>
+        <translation>Szögsebesség a keresztirányú tengely (y) körül t = 0-kor, rad/s-ban (gördülés +x irányban: wy = vx / R)</translation>
+    </message>
+    <message>
+        <source>Angular velocity about the vertical axis z at t = 0, in rad/s (side spin)</source>
+        <translation>Szögsebesség a függőleges tengely (z) körül t = 0-kor, rad/s-ban (oldalpörgetés)</translation>
+    </message>
+    <message>
+        <source>Radius of the ball in metres (pool 0.028575 m, snooker 0.02625 m, carom 0.03075 m)</source>
+        <translation>A golyó sugara méterben (pool 0,028575 m, snooker 0,02625 m, karambol 0,03075 m)</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <source>Mass of the ball in kg (pool 0.170 kg, snooker 0.140 kg, carom 0.210 kg)</source>
+        <translation>A golyó tömege kg-ban (pool 0,170 kg, snooker 0,140 kg, karambol 0,210 kg)</translation>
+    </message>
+    <message>
+        <source>&amp;Id</source>
+        <translation>&amp;Azonosító</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Hely</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Sebességvektor</translation>
+    </message>
+    <message>
+        <source>Spin</source>
+        <translation>Pörgetés</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Sugár</translation>
+    </message>
+    <message>
+        <source>Mass</source>
+        <translation>Tömeg</translation>
+    </message>
+    <message>
+        <source>Ball %1 at t = 0</source>
+        <translation>%1 golyó t = 0-kor</translation>
+    </message>
+    <message>
+        <source>No ball selected</source>
+        <translation>Nincs kijelölt golyó</translation>
+    </message>
+    <message>
+        <source>Rename ball %1 to %2</source>
+        <translation>A(z) %1 golyó átnevezése erre: %2</translation>
     </message>
 </context>
 <context>
@@ -434,6 +553,24 @@
         <source>Reset physics to defaults</source>
         <translation>A fizika visszaállítása az alapértékekre</translation>
     </message>
+    <message>
+        <source>untitled</source>
+        <translation>névtelen</translation>
+    </message>
+    <message>
+        <source>Set the velocity of ball %1</source>
+        <translation>A(z) %1 golyó sebességének beállítása</translation>
+    </message>
+    <message>
+        <source>There is no free place on the new table for ball &quot;%1&quot;.</source>
+        <translation>Az új asztalon nincs szabad hely a(z) „%1” golyónak.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, moving %n ball(s): %2</source>
+        <translation>
+            <numerusform>%1, %n golyó áthelyezésével: %2</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>cuelab::EventTableModel</name>
@@ -471,18 +608,99 @@
     </message>
 </context>
 <context>
+    <name>cuelab::EventTreeModel</name>
+    <message numerus="yes">
+        <source>%n ball(s): %1</source>
+        <translation>
+            <numerusform>%n golyó: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n events at one instant</source>
+        <translation>
+            <numerusform>%n esemény egy pillanatban</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>, fastest v_rel %1</source>
+        <translation>, leggyorsabb v_rel %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n events at the same instant (expand to see each)</source>
+        <translation>
+            <numerusform>%n esemény ugyanabban a pillanatban (nyissa ki, hogy mindet lássa)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>cuelab::EventsPanel</name>
     <message>
-        <source>Show changes of motion</source>
-        <translation>Mozgásváltások mutatása</translation>
+        <source>m/s</source>
+        <translation>m/s</translation>
     </message>
     <message>
-        <source>List the changes of motion too (slide to roll, roll to stop, ...), not only strikes, collisions and pockets</source>
-        <translation>A mozgásváltások listázása is (csúszásból gördülés, gördülésből megállás, …), nem csak az ütéseké, ütközéseké és lyukba eséseké</translation>
+        <source>Hide collisions whose normal approach speed is below this, in m/s (0 = show every collision)</source>
+        <translation>Az ennél kisebb normális irányú közeledési sebességű ütközések elrejtése, m/s-ban (0 = minden ütközés látszik)</translation>
     </message>
     <message>
-        <source>Select an event to jump to its time and see it in the Inspector</source>
-        <translation>Válasszon ki egy eseményt: a lejátszás az időpontjára ugrik, és a Vizsgáló megmutatja</translation>
+        <source>All events</source>
+        <translation>Minden esemény</translation>
+    </message>
+    <message>
+        <source>No changes of motion</source>
+        <translation>Mozgásváltások nélkül</translation>
+    </message>
+    <message>
+        <source>Collisions</source>
+        <translation>Ütközések</translation>
+    </message>
+    <message>
+        <source>Ball–ball</source>
+        <translation>Golyó–golyó</translation>
+    </message>
+    <message>
+        <source>Cushions and jaws</source>
+        <translation>Mantinelek és lyukpofák</translation>
+    </message>
+    <message>
+        <source>Pockets</source>
+        <translation>Lyukak</translation>
+    </message>
+    <message>
+        <source>Cue strikes</source>
+        <translation>Dákóütések</translation>
+    </message>
+    <message>
+        <source>Changes of motion</source>
+        <translation>Mozgásváltások</translation>
+    </message>
+    <message>
+        <source>Which kinds of event to list: changes of motion are slide to roll, roll to stop, ...; a break has many more of them than collisions</source>
+        <translation>Milyen fajta eseményeket listázzon: mozgásváltás a csúszásból gördülés, a gördülésből megállás, …; egy kezdőlökésben sokkal több van belőlük, mint ütközésből</translation>
+    </message>
+    <message>
+        <source>List only the events this ball takes part in</source>
+        <translation>Csak azoknak az eseményeknek a listázása, amelyekben ez a golyó részt vesz</translation>
+    </message>
+    <message>
+        <source>any speed</source>
+        <translation>bármilyen sebesség</translation>
+    </message>
+    <message>
+        <source>Select an event to jump to its time and see it in the Inspector; a row of events at one instant expands</source>
+        <translation>Válasszon ki egy eseményt: a lejátszás az időpontjára ugrik, és a Vizsgáló megmutatja; az egy pillanatban történt események sora kinyitható</translation>
+    </message>
+    <message>
+        <source>v_rel</source>
+        <translation>v_rel</translation>
+    </message>
+    <message>
+        <source>Every ball</source>
+        <translation>Minden golyó</translation>
+    </message>
+    <message>
+        <source>Ball %1</source>
+        <translation>%1 golyó</translation>
     </message>
 </context>
 <context>
@@ -758,10 +976,6 @@
         <translation>%1 példa: mentse el, hogy megmaradjanak a változtatásai</translation>
     </message>
     <message>
-        <source>untitled</source>
-        <translation>névtelen</translation>
-    </message>
-    <message>
         <source>Save Setup As</source>
         <translation>Felállás mentése másként</translation>
     </message>
@@ -973,6 +1187,10 @@
         <source>Plots</source>
         <translation>Grafikonok</translation>
     </message>
+    <message>
+        <source>Undo History</source>
+        <translation>Visszavonási előzmények</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::OutcomePanel</name>
@@ -1075,10 +1293,6 @@
 </context>
 <context>
     <name>cuelab::PhysicsPanel</name>
-    <message>
-        <source>The table: playing surface between the cushion noses in metres, pockets and cushions of the preset. The balls keep their size and place; a ball that would lie off the cloth refuses the change.</source>
-        <translation>Az asztal: a játékfelület a mantinelek élei között, méterben, az előbeállítás lyukaival és mantineljeivel. A golyók megtartják méretüket és helyüket; ha egy golyó a posztón kívülre kerülne, a változtatás elmarad.</translation>
-    </message>
     <message>
         <source>Pockets</source>
         <translation>Lyukak</translation>
@@ -1306,6 +1520,28 @@
     <message>
         <source>Ball-cushion model: mirror, Han 2005, Mathavan 2010 or Stronge&apos;s compliant impact (docs/cushion-models.md)</source>
         <translation>A golyó–mantinel modell: tükrözés, Han 2005, Mathavan 2010 vagy Stronge rugalmas ütközése (docs/cushion-models.md)</translation>
+    </message>
+    <message>
+        <source>The table: playing surface between the cushion noses in metres, pockets and cushions of the preset. The balls keep their size and place; balls that would lie off the new cloth can be moved to the nearest free spots.</source>
+        <translation>Az asztal: a játékfelület a mantinelek élei között, méterben, az előbeállítás lyukaival és mantineljeivel. A golyók megtartják méretüket és helyüket; az új posztón kívülre kerülő golyók áthelyezhetők a legközelebbi szabad helyekre.</translation>
+    </message>
+    <message>
+        <source>Balls Off the New Table</source>
+        <translation>Golyók az új asztalon kívül</translation>
+    </message>
+    <message numerus="yes">
+        <source>On the %1 table (%2 × %3 m), %n ball(s) would lie off the cloth, in a pocket or on another ball: %4.</source>
+        <translation>
+            <numerusform>A(z) %1 asztalon (%2 × %3 m) %n golyó a posztón kívül, lyukban vagy egy másik golyón lenne: %4.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Move them to the nearest free spots? The table change and the moves are one undo step.</source>
+        <translation>Áthelyezi őket a legközelebbi szabad helyekre? Az asztal módosítása és az áthelyezések egy visszavonási lépést alkotnak.</translation>
+    </message>
+    <message>
+        <source>&amp;Move Balls</source>
+        <translation>A golyók át&amp;helyezése</translation>
     </message>
 </context>
 <context>
@@ -1804,10 +2040,6 @@
         <translation>Ugrás a végére, amikor minden golyó nyugalomban van</translation>
     </message>
     <message>
-        <source>Current time and end time of the shot, in seconds</source>
-        <translation>Az ütés aktuális és befejező időpontja, másodpercben</translation>
-    </message>
-    <message>
         <source>Playback speed: 1× is real time</source>
         <translation>Lejátszási sebesség: az 1× a valós idő</translation>
     </message>
@@ -1816,8 +2048,49 @@
         <translation>&amp;Szünet</translation>
     </message>
     <message>
-        <source>t = %1 s / %2 s</source>
-        <translation>t = %1 s / %2 s</translation>
+        <source>Current time in seconds. Type a time (1.25, 1.25 s, 40 ms) or an event number (#12) and press Return to go there</source>
+        <translation>Az aktuális időpont másodpercben. Írjon be egy időpontot (1.25, 1.25 s, 40 ms) vagy egy eseményszámot (#12), és Enterrel odaugrik</translation>
+    </message>
+    <message>
+        <source>time or #event</source>
+        <translation>idő vagy #esemény</translation>
+    </message>
+    <message>
+        <source>End time of the shot, in seconds: when every ball rests</source>
+        <translation>Az ütés befejező időpontja másodpercben: amikor minden golyó nyugalomban van</translation>
+    </message>
+    <message>
+        <source>/ %1 s</source>
+        <translation>/ %1 s</translation>
+    </message>
+    <message>
+        <source>Events are numbered from 1.</source>
+        <translation>Az események számozása 1-gyel kezdődik.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a time.</source>
+        <translation>„%1” nem időpont.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is neither a time (1.25, 1.25 s, 40 ms) nor an event number (#12).</source>
+        <translation>„%1” se nem időpont (1.25, 1.25 s, 40 ms), se nem eseményszám (#12).</translation>
+    </message>
+    <message numerus="yes">
+        <source>There is no event #%1: the shot has %n event(s).</source>
+        <translation>
+            <numerusform>Nincs #%1 esemény: az ütésnek %n eseménye van.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::UndoHistoryPanel</name>
+    <message>
+        <source>Every edit since the setup was opened; click one to go back (or forward) to it</source>
+        <translation>Minden szerkesztés a felállás megnyitása óta; egyre kattintva visszatér (vagy előreugrik) hozzá</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Megnyitva: %1</translation>
     </message>
 </context>
 </TS>

@@ -15,7 +15,7 @@ class QLineEdit;
 namespace cuelab {
 
 class Document;
-enum class BallProperty : int;
+enum class BallProperty;  // (int, as in Document.h; written without ": int" so that lupdate can read this file)
 
 class BallEditor : public QWidget {
     Q_OBJECT

@@ -2,6 +2,7 @@
 
 #include "FrameTimes.h"
 #include "Quantities.h"
+#include "i18n/DisplayNames.h"
 
 #include <QFont>
 
@@ -212,7 +213,7 @@ QVariant EventTreeModel::groupData(const std::vector<int>& group, int column, in
                 else ++it->second;
             }
             QStringList parts;
-            for (const auto& [kind, n] : counts) parts << QStringLiteral("%1 × %2").arg(n).arg(toQString(toString(kind)));
+            for (const auto& [kind, n] : counts) parts << QStringLiteral("%1 × %2").arg(n).arg(displayName(kind));
             return parts.join(QStringLiteral(", "));
         }
         case Column::AgentsColumn: {
