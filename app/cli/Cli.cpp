@@ -48,6 +48,10 @@ QList<QCommandLineOption> parserOptions()
         description += QStringLiteral(" (%1).").arg(users.join(QStringLiteral(", ")));
         options << QCommandLineOption(spec.name, description, spec.valueName);
     }
+    options << QCommandLineOption(QStringLiteral("set"),
+                                  QStringLiteral("Override one value of the setup, e.g. shot.speed=2.5; repeatable "
+                                                 "(every command; keys in docs/analysis.md)."),
+                                  QStringLiteral("KEY=VALUE"));
     options << QCommandLineOption(QStringLiteral("max-events"),
                                   QStringLiteral("Stop with exit status 3 after <N> events (default 200000)."),
                                   QStringLiteral("N"));
@@ -118,7 +122,9 @@ int run(const QStringList& arguments, QByteArray* out, QByteArray* err)
     for (const QCommandLineOption& o : options) {
         const QString name = o.names().first();
         if (!parser.isSet(name)) continue;
-        const bool takes = name == QLatin1String("max-events") ? command->takesMaxEvents : takesOption(*command, name);
+        const bool takes = name == QLatin1String("set") ? true
+                           : name == QLatin1String("max-events") ? command->takesMaxEvents
+                                                                 : takesOption(*command, name);
         if (!takes)
             return usage(err, QStringLiteral("%1: --%2 is not an option of this command").arg(command->name, name));
     }
@@ -136,7 +142,9 @@ int run(const QStringList& arguments, QByteArray* out, QByteArray* err)
 int run(const QStringList& arguments)
 {
     QByteArray out, err;
+    setStreamingOutput(true);
     const int status = run(arguments, &out, &err);
+    setStreamingOutput(false);
     std::fwrite(out.constData(), 1, static_cast<std::size_t>(out.size()), stdout);
     std::fwrite(err.constData(), 1, static_cast<std::size_t>(err.size()), stderr);
     std::fflush(stdout);

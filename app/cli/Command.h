@@ -41,6 +41,9 @@ struct Command {
     std::function<int(Invocation&)> run;
 };
 
+// run(arguments) prints to stdout: Invocation::flush may write ahead (set by Cli.cpp).
+void setStreamingOutput(bool on);
+
 // Every subcommand, in the order of the help text (Commands.cpp).
 const QList<Command>& commands();
 
@@ -78,6 +81,10 @@ public:
     // overrides. On refusal prints the loader's message and sets *status to SetupRefused (or
     // UsageError for a bad override) and returns nullopt.
     std::optional<Setup> loadSetup(int* status) const;
+
+    // Hands what was printed so far to the process's stdout, when cuelab-cli runs as a program, so
+    // that a long sweep streams its lines; a no-op when the caller collects the output.
+    void flush() const;
 
     // Simulates up to `until` (< 0: until rest or max_time), honouring --max-events. Returns false,
     // with the reason on stderr, when the run could not finish: the event cap was hit, or max_time

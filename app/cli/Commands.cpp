@@ -11,6 +11,7 @@ Command stateCommand();
 Command trajectoryCommand();
 Command explainCommand();
 Command compareCommand();
+Command sweepCommand();
 
 const QList<Command>& commands()
 {
@@ -21,6 +22,7 @@ const QList<Command>& commands()
         trajectoryCommand(),
         explainCommand(),
         compareCommand(),
+        sweepCommand(),
     };
     return all;
 }

@@ -1,7 +1,10 @@
 #include "Command.h"
 
 #include "JsonText.h"
+#include "LegalSetup.h"
 #include "NumberParse.h"
+#include "Override.h"
+#include "Refusal.h"
 #include "SetupFile.h"
 
 #include <QFile>
@@ -66,8 +69,42 @@ std::optional<Setup> Invocation::loadSetup(int* status) const
         *status = fail(error, SetupRefused);
         return std::nullopt;
     }
-    // --set KEY=VALUE overrides (CONTRACT.md, Extensions) are applied here, then checked again.
+    // --set KEY=VALUE overrides (CONTRACT.md, Extensions), in the order given, by the one override
+    // function of core/analysis; then the setup is checked again as a file would be.
+    const QStringList overrides = parser_.values(QStringLiteral("set"));
+    for (const QString& text : overrides) {
+        const auto assignment = analysis::parseAssignment(text.toStdString());
+        if (!assignment) {
+            *status = usage(QStringLiteral("--set: expected KEY=VALUE, found '%1'").arg(text));
+            return std::nullopt;
+        }
+        if (const auto problem = analysis::applyOverride(*setup, assignment->key, assignment->value)) {
+            *status = usage(QStringLiteral("--set: ") + QString::fromStdString(problem->message));
+            return std::nullopt;
+        }
+    }
+    if (!overrides.isEmpty()) {
+        if (const auto problem = firstSetupProblem(*setup)) {
+            *status = fail(QString::fromStdString(analysis::refusalMessage(setupName().toStdString(), *problem)),
+                           SetupRefused);
+            return std::nullopt;
+        }
+    }
     return setup;
+}
+
+namespace {
+bool streamingOutput = false;  // set by run(arguments) when the output goes to the process's stdout
+}
+
+void setStreamingOutput(bool on) { streamingOutput = on; }
+
+void Invocation::flush() const
+{
+    if (!streamingOutput || out_->isEmpty()) return;
+    std::fwrite(out_->constData(), 1, static_cast<std::size_t>(out_->size()), stdout);
+    std::fflush(stdout);
+    out_->clear();
 }
 
 bool Invocation::simulate(const Setup& setup, double until, SimulationResult& result) const

@@ -141,7 +141,7 @@ std::variant<Parameter, OverrideError> Parameter::resolve(const Setup& setup, st
             if (name == k.name) return Parameter(std::string(key), k.field, index);
         return unknownKey(key, "a ball has x, y, vx, vy, wx, wy, wz, radius and mass");
     }
-    return unknownKey(key, "expected shot.*, physics.*, table.*, balls.<id>.* or simulation.*; see docs/cli.md");
+    return unknownKey(key, "expected shot.*, physics.*, table.*, balls.<id>.* or simulation.*; see docs/analysis.md");
 }
 
 Parameter::Type Parameter::type() const { return infoOf(field_).type; }
