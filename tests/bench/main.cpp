@@ -1,16 +1,61 @@
 // cuelab-bench: prints one JSON object with the simulator's and the quartic solver's figures
-// (issue 3): {"break": {...}, "quartic": {...}, "scaling": [...]}, and the engines of core/compare
-// on the break at their default steps (issue 9): "compare": [{"engine": ..., "ms_median": ..., ...}].
+// (issue 3): {"break": {...}, "quartic": {...}, "scaling": [...]}, the engines of core/compare
+// on the break at their default steps (issue 9): "compare": [{"engine": ..., "ms_median": ..., ...}],
+// and the sweep engine's (issue 11): "sweep": {"map_100x100": [{"threads": 1, ...}, ...], "million": {...}}.
+//   cuelab-bench               everything but the 10^6-shot sweep
+//   cuelab-bench --sweep       only the sweep figures, with the 10^6-shot sweep (about a minute)
 
+#include "AnalysisBench.h"
 #include "CompareBench.h"
 #include "QuarticBench.h"
 #include "SimulationBench.h"
 
 #include <cstdio>
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
 
-int main()
+namespace {
+
+std::string sweepJson(bool million)
 {
     using namespace cuelab::bench;
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<int> counts{1};
+    for (int t = 2; t <= std::max(2, cores); ++t) counts.push_back(t);
+    if (cores > 1) counts.push_back(2 * cores);  // oversubscribed: shows what hyperthreads or none add
+    std::string out = "\"sweep\": {\"cores\": " + std::to_string(cores) + ", \"map_100x100\": [";
+    const std::vector<SweepPoint> points = runMapBench(counts, 3);
+    char buffer[256];
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const SweepPoint& p = points[i];
+        std::snprintf(buffer, sizeof buffer, "%s{\"threads\": %d, \"shots\": %lld, \"seconds\": %.4g, "
+                      "\"cpu_seconds\": %.4g, \"shots_per_s\": %.6g, \"speed_up\": %.3g}", i ? ", " : "", p.threads,
+                      p.shots, p.seconds, p.cpuSeconds, p.shotsPerSecond, p.speedUp);
+        out += buffer;
+    }
+    out += "]";
+    if (million) {
+        const SweepPoint m = runMillionBench();
+        std::snprintf(buffer, sizeof buffer, ", \"million\": {\"threads\": %d, \"shots\": %lld, \"seconds\": %.4g, "
+                      "\"cpu_seconds\": %.4g, \"shots_per_s\": %.6g}", m.threads, m.shots, m.seconds, m.cpuSeconds,
+                      m.shotsPerSecond);
+        out += buffer;
+    }
+    return out + "}";
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    using namespace cuelab::bench;
+    if (argc > 1 && std::strcmp(argv[1], "--sweep") == 0) {
+        std::printf("{%s}\n", sweepJson(true).c_str());
+        return 0;
+    }
     const BreakFigures b = runBreakBench(200);
     const QuarticFigures q = runQuarticBench();
     const ScalingPoint s16 = runScalingBench(16);
@@ -19,9 +64,9 @@ int main()
     std::printf("{\"break\": {\"ms_median\": %.6g, \"ms_min\": %.6g, \"events\": %lld, \"runs\": %d}, "
                 "\"quartic\": {\"ns_median\": %.6g, \"max_rel_error_random\": %.6g, \"max_rel_error_hard\": %.6g}, "
                 "\"scaling\": [{\"balls\": %d, \"events_per_s\": %.6g}, {\"balls\": %d, \"events_per_s\": %.6g}, "
-                "{\"balls\": %d, \"events_per_s\": %.6g}], \"compare\": %s}\n",
+                "{\"balls\": %d, \"events_per_s\": %.6g}], \"compare\": %s, %s}\n",
                 b.msMedian, b.msMin, b.events, b.runs, q.nsMedian, q.maxRelErrorRandom, q.maxRelErrorHard,
                 s16.balls, s16.eventsPerSecond, s64.balls, s64.eventsPerSecond, s256.balls, s256.eventsPerSecond,
-                compareFiguresJson(runCompareBench(20)).c_str());
+                compareFiguresJson(runCompareBench(20)).c_str(), sweepJson(false).c_str());
     return 0;
 }
