@@ -11,6 +11,8 @@ void installFeatures(MainWindow& window)
     installOutcome(window);
     installExport(window);
     installExplain(window);
+    (void)window;
+    installAnalysis(window);
 }
 
 }  // namespace cuelab

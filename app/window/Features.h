@@ -16,5 +16,6 @@ void installPlots(MainWindow& window);    // issue 10: the Plots dock
 void installOutcome(MainWindow& window);  // issue 10: the Outcome dock and status line
 void installExport(MainWindow& window);   // issue 10: File > Export
 void installExplain(MainWindow& window);  // features/ExplainFeature.cpp: Explain and Lesson docks, export
+void installAnalysis(MainWindow& window);  // features/AnalysisFeature.cpp: the Analysis dock and menu
 
 }  // namespace cuelab
