@@ -19,6 +19,7 @@ void installAnalysis(MainWindow& window)
     PanelPlacement placement;
     placement.area = Qt::RightDockWidgetArea;
     placement.scroll = true;
+    placement.tabifyWith = QStringLiteral("InspectorDock");  // the full height of the right column when raised
     placement.visible = false;  // opened from the Analysis menu; the layout remembers it afterwards
     QDockWidget* dock = window.addPanel(panel, QObject::tr("Analysis"), QStringLiteral("AnalysisDock"), placement);
 
