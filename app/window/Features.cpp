@@ -11,7 +11,6 @@ void installFeatures(MainWindow& window)
     installOutcome(window);
     installExport(window);
     installExplain(window);
-    (void)window;
     installAnalysis(window);
 }
 
