@@ -12,6 +12,7 @@ void installFeatures(MainWindow& window)
     installExport(window);
     installExplain(window);
     installAnalysis(window);
+    installCompare(window);
 }
 
 }  // namespace cuelab

@@ -17,5 +17,6 @@ void installOutcome(MainWindow& window);  // issue 10: the Outcome dock and stat
 void installExport(MainWindow& window);   // issue 10: File > Export
 void installExplain(MainWindow& window);  // features/ExplainFeature.cpp: Explain and Lesson docks, export
 void installAnalysis(MainWindow& window);  // features/AnalysisFeature.cpp: the Analysis dock and menu
+void installCompare(MainWindow& window);  // features/CompareFeature.cpp
 
 }  // namespace cuelab

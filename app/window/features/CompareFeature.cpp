@@ -1,0 +1,52 @@
+// The Compare feature (issue 9): a dock with the Compare panel, the chart's cursor on the transport,
+// and an Analysis menu entry that opens it. (The ghosts in the table view wait for its layer API.)
+
+#include "MainWindow.h"
+
+#include "compare/ComparePanel.h"
+#include "editor/Document.h"
+#include "editor/Playback.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QMenu>
+
+namespace cuelab {
+
+void installCompare(MainWindow& window)
+{
+    auto* panel = new ComparePanel;
+    PanelPlacement placement;
+    placement.area = Qt::BottomDockWidgetArea;
+    placement.visible = false;
+    QDockWidget* dock = window.addPanel(panel, QObject::tr("Compare"), QStringLiteral("CompareDock"), placement);
+    Document* document = window.document();
+    Playback* playback = window.playback();
+
+    // The panel works only while it is shown: a hidden dock runs nothing in the background.
+    const auto feed = [panel, dock, document] {
+        if (dock->isVisible()) panel->setSetup(document->setup());
+    };
+    QObject::connect(document, &Document::setupChanged, panel, feed);
+    QObject::connect(document, &Document::documentReplaced, panel, feed);
+    QObject::connect(playback, &Playback::timeChanged, panel, &ComparePanel::setTime);
+    QObject::connect(panel, &ComparePanel::timeRequested, playback, &Playback::setTime);
+
+    QObject::connect(dock, &QDockWidget::visibilityChanged, panel, [=](bool visible) {
+        if (visible) {
+            panel->setTime(playback->time());
+            feed();
+        }
+    });
+
+    QAction* open = window.menu(WindowMenu::Analysis)->addAction(QObject::tr("Compare &Methods…"));
+    open->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+M")));
+    open->setToolTip(QObject::tr("Run the shot with the 2011 discrete method or Box2D and measure it against the exact "
+                                 "simulation"));
+    QObject::connect(open, &QAction::triggered, dock, [dock] {
+        dock->show();
+        dock->raise();
+    });
+}
+
+}  // namespace cuelab
