@@ -8,7 +8,7 @@ namespace {
 
 enum Column { Index, ExactTime, ExactWhat, EngineTime, EngineWhat, Difference, ColumnCount };
 
-QTableWidgetItem* item(const QString& text, const QVariant& time = {})
+QTableWidgetItem* makeItem(const QString& text, const QVariant& time = {})
 {
     auto* i = new QTableWidgetItem(text);
     i->setFlags(Qt::ItemIsSelectable | Qt::ItemIsEnabled);
@@ -67,23 +67,23 @@ void CollisionTable::setComparison(const compare::Comparison& c)
     const int first = c.divergence.firstSequenceDifference.value_or(-1);
     for (int r = 0; r < rows; ++r) {
         const std::size_t k = static_cast<std::size_t>(r);
-        setItem(r, Index, item(QString::number(r)));
+        setItem(r, Index, makeItem(QString::number(r)));
         if (k < a.size()) {
-            setItem(r, ExactTime, item(QString::number(a[k].time, 'f', 4), a[k].time));
-            setItem(r, ExactWhat, item(describe(a[k], c.exact.ids)));
+            setItem(r, ExactTime, makeItem(QString::number(a[k].time, 'f', 4), a[k].time));
+            setItem(r, ExactWhat, makeItem(describe(a[k], c.exact.ids)));
         } else {
-            setItem(r, ExactTime, item(QString()));
-            setItem(r, ExactWhat, item(tr("(none)")));
+            setItem(r, ExactTime, makeItem(QString()));
+            setItem(r, ExactWhat, makeItem(tr("(none)")));
         }
         if (k < b.size()) {
-            setItem(r, EngineTime, item(QString::number(b[k].time, 'f', 4), b[k].time));
-            setItem(r, EngineWhat, item(describe(b[k], c.run.ids)));
+            setItem(r, EngineTime, makeItem(QString::number(b[k].time, 'f', 4), b[k].time));
+            setItem(r, EngineWhat, makeItem(describe(b[k], c.run.ids)));
         } else {
-            setItem(r, EngineTime, item(QString()));
-            setItem(r, EngineWhat, item(tr("(none)")));
+            setItem(r, EngineTime, makeItem(QString()));
+            setItem(r, EngineWhat, makeItem(tr("(none)")));
         }
         const bool matched = k < c.divergence.matched.size();
-        setItem(r, Difference, item(matched ? QString::number(1000.0 * c.divergence.matched[k].difference(), 'f', 2)
+        setItem(r, Difference, makeItem(matched ? QString::number(1000.0 * c.divergence.matched[k].difference(), 'f', 2)
                                             : QString()));
         if (r == first) {
             for (int col = 0; col < ColumnCount; ++col) {
