@@ -1,17 +1,20 @@
 // The Compare panel: background runs that drop stale results, the chart's cursor on the transport,
-// the collision table, the warnings, and its dock in the window.
+// the collision table, the warnings, and the ghosts it hands the table view (in the window too).
 
 #include "MainWindow.h"
 
 #include "compare/CollisionTable.h"
 #include "compare/CompareChart.h"
+#include "compare/CompareGhosts.h"
 #include "compare/ComparePanel.h"
 #include "compare/CompareRunner.h"
 #include "editor/Document.h"
 #include "editor/Playback.h"
+#include "view/TableView.h"
 
 #include "SetupFile.h"
 
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLineSeries>
@@ -51,7 +54,7 @@ private slots:
     void chartFollowsTheTime();
     void staleResultsAreDropped();
     void runnerCancelsTheRunInProgress();
-    void inTheWindow();
+    void ghostsInTheWindow();
 
 private:
     QTemporaryDir settingsDir_;
@@ -68,6 +71,7 @@ void TestComparePanel::initTestCase()
 void TestComparePanel::runsAndShows()
 {
     ComparePanel panel;
+    QSignalSpy ghosts(&panel, &ComparePanel::ghostLayerChanged);
     panel.setSetup(example("draw-shot.json"));
     panel.setEngine(EngineKind::Box2D);
     panel.waitForIdle();
@@ -76,16 +80,36 @@ void TestComparePanel::runsAndShows()
     QCOMPARE(int(c->run.settings.engine), int(EngineKind::Box2D));
     QVERIFY(panel.warningsText().contains("the draw is lost"));
     QVERIFY(panel.summaryText().contains("Largest error"));
+    // Ghosts: one track per ball, in Box2D's colour, the first labelled with the engine.
+    QVERIFY(ghosts.count() >= 1);
+    const ViewLayer layer = panel.ghosts();
+    QCOMPARE(layer.ghosts.size(), std::size_t(2));
+    QCOMPARE(layer.ghosts[0].colour, engineColour(EngineKind::Box2D));
+    QCOMPARE(layer.ghosts[0].label, QStringLiteral("box2d"));
+    QVERIFY(layer.ghosts[0].times.size() > 10);
+    Vec2 at;
+    QVERIFY(ghostPositionAt(layer.ghosts[0], 0.0, &at));
+    QVERIFY((at - c->run.samples[0][0].position).norm() < 1e-12);
+    // The 1 drops in the side pocket: its track ends there.
+    QVERIFY(!ghostPositionAt(layer.ghosts[1], 5.0, &at));
+    QVERIFY(ghostPositionAt(layer.ghosts[0], 5.0, &at));  // the cue ball stays where it stopped
     // Chart: a series per ball; collisions: both sequences.
     QCOMPARE(panel.chart()->ballSeries().size(), 2);
     QCOMPARE(panel.chart()->ballSeries()[0]->count(), int(c->divergence.times.size()));
     QVERIFY(panel.collisions()->rowCount() >= 2);
     QCOMPARE(panel.collisions()->item(0, 2)->text(), QStringLiteral("cue – 1"));
     QCOMPARE(panel.collisions()->item(0, 4)->text(), QStringLiteral("cue – 1"));
-    // The exact engine: no error.
+    // Switching the ghosts off hands the view an empty layer.
+    auto* box = panel.findChild<QCheckBox*>();
+    QVERIFY(box);
+    box->setChecked(false);
+    QVERIFY(!panel.ghostsEnabled());
+    QVERIFY(ghosts.count() >= 2);
+    // The exact engine: no ghosts, no error.
     panel.setEngine(EngineKind::Exact);
     panel.waitForIdle();
     QCOMPARE(panel.comparison()->divergence.maxError, 0.0);
+    QVERIFY(panel.ghosts().empty());
 }
 
 void TestComparePanel::chartFollowsTheTime()
@@ -145,7 +169,7 @@ void TestComparePanel::runnerCancelsTheRunInProgress()
     QCOMPARE(runner.result()->run.ids.size(), std::size_t(2));
 }
 
-void TestComparePanel::inTheWindow()
+void TestComparePanel::ghostsInTheWindow()
 {
     MainWindow w;
     w.resize(1600, 1000);
@@ -157,27 +181,23 @@ void TestComparePanel::inTheWindow()
     QVERIFY(!dock->isVisible());  // hidden on the first start: nothing runs
     auto* panel = dock->findChild<ComparePanel*>();
     QVERIFY(panel);
-    QVERIFY(!panel->isRunning());
-    QVERIFY(!panel->comparison());
+    QVERIFY(w.tableView()->layers().count(QStringLiteral("compare")) == 0);
 
-    // Analysis > Compare Methods opens it and it compares the document's shot.
+    // Analysis > Compare Methods opens it; Box2D runs; its ghosts appear in the view.
     QAction* open = nullptr;
     for (QAction* a : w.menu(WindowMenu::Analysis)->actions())
         if (a->text().contains(QStringLiteral("Compare"))) open = a;
     QVERIFY(open);
-    QCOMPARE(open->shortcut(), QKeySequence(QStringLiteral("Ctrl+Shift+M")));
     open->trigger();
     QVERIFY(dock->isVisible());
     panel->setEngine(EngineKind::Box2D);
     panel->waitForIdle();
-    QVERIFY(panel->comparison());
-    QCOMPARE(panel->comparison()->run.ids.size(), w.document()->setup().balls.size());
+    QTRY_VERIFY(w.tableView()->layers().count(QStringLiteral("compare")) == 1);
+    QCOMPARE(w.tableView()->layers().at(QStringLiteral("compare")).ghosts.size(), std::size_t(2));
 
     // The chart's cursor follows the transport.
     w.playback()->setTime(0.6);
     QCOMPARE(panel->chart()->cursorTime(), w.playback()->time());
-    w.playback()->setTime(0.2);
-    QCOMPARE(panel->chart()->cursorTime(), 0.2);
 
     // A picture of it, for people to look at (CUELAB_SCREENSHOT_DIR).
     const QByteArray dir = qgetenv("CUELAB_SCREENSHOT_DIR");
@@ -185,6 +205,10 @@ void TestComparePanel::inTheWindow()
         QTest::qWait(300);
         QVERIFY(w.grab().save(QString::fromLocal8Bit(dir) + QStringLiteral("/compare-window.png")));
     }
+
+    // Closing the dock takes the ghosts away.
+    dock->close();
+    QTRY_VERIFY(w.tableView()->layers().count(QStringLiteral("compare")) == 0);
 }
 
 QTEST_MAIN(TestComparePanel)

@@ -2,9 +2,11 @@
 
 #include "CollisionTable.h"
 #include "CompareChart.h"
+#include "CompareGhosts.h"
 #include "CompareRunner.h"
 #include "SetupFile.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -37,6 +39,7 @@ ComparePanel::ComparePanel(QWidget* parent)
       step_(new QDoubleSpinBox),
       substeps_(new QSpinBox),
       substepsLabel_(new QLabel),
+      showGhosts_(new QCheckBox(tr("Ghosts in the table view"))),
       progress_(new QProgressBar),
       summary_(new QLabel),
       warnings_(new QLabel),
@@ -57,6 +60,8 @@ ComparePanel::ComparePanel(QWidget* parent)
     step_->setValue(1000.0 / 60.0);
     step_->setToolTip(tr("The engine's fixed time step, in milliseconds (16.667 ms = 60 Hz, a game frame)"));
     substeps_->setRange(1, 10000);
+    showGhosts_->setChecked(true);
+    showGhosts_->setToolTip(tr("Draw the engine's balls and paths as translucent ghosts beside the exact ones"));
     progress_->setRange(0, 100);
     progress_->setVisible(false);
     progress_->setToolTip(tr("The engine is running in the background"));
@@ -70,6 +75,7 @@ ComparePanel::ComparePanel(QWidget* parent)
     form->addRow(tr("Engine"), engine_);
     form->addRow(tr("Step"), step_);
     form->addRow(substepsLabel_, substeps_);
+    form->addRow(showGhosts_);
     tabs_->addTab(chart_, tr("Position error"));
     tabs_->addTab(table_, tr("Collisions"));
     auto* layout = new QVBoxLayout(this);
@@ -85,6 +91,7 @@ ComparePanel::ComparePanel(QWidget* parent)
     connect(engine_, &QComboBox::currentIndexChanged, this, &ComparePanel::engineChanged);
     connect(step_, &QDoubleSpinBox::valueChanged, this, &ComparePanel::schedule);
     connect(substeps_, &QSpinBox::valueChanged, this, &ComparePanel::schedule);
+    connect(showGhosts_, &QCheckBox::toggled, this, [this] { emit ghostLayerChanged(ghostsEnabled() ? ghosts_ : ViewLayer{}); });
     connect(runner_, &CompareRunner::progressChanged, progress_, &QProgressBar::setValue);
     connect(runner_, &CompareRunner::runningChanged, progress_, &QWidget::setVisible);
     connect(runner_, &CompareRunner::finished, this, &ComparePanel::showResult);
@@ -195,6 +202,11 @@ void ComparePanel::waitForIdle()
     runner_->waitForIdle();
 }
 
+bool ComparePanel::ghostsEnabled() const
+{
+    return showGhosts_->isChecked();
+}
+
 QString ComparePanel::summaryText() const
 {
     return summary_->text();
@@ -248,6 +260,8 @@ void ComparePanel::showResult()
     }
     chart_->setComparison(*c);
     table_->setComparison(*c);
+    ghosts_ = c->run.settings.engine == EngineKind::Exact ? ViewLayer{} : ghostLayer(c->run);
+    emit ghostLayerChanged(ghostsEnabled() ? ghosts_ : ViewLayer{});
     emit comparisonChanged();
 }
 

@@ -3,11 +3,12 @@
 // engine (the 2011 discrete method, Box2D 2.4, or the exact one itself) and its step; the panel
 // re-runs it in the background on every change (CompareRunner), draws the error of every ball over
 // time with a cursor at the transport's time (CompareChart), lists both collision sequences side by
-// side (CollisionTable) and says what the engine cannot represent in this shot.
-// Not yet: the engine's balls as ghosts in the table view (waits for the view's layer API).
+// side (CollisionTable), says what the engine cannot represent in this shot, and hands the view a
+// layer of ghost balls (ghostLayerChanged).
 
 #include "Divergence.h"
 #include "Setup.h"
+#include "view/ViewLayer.h"
 
 #include <QWidget>
 
@@ -47,12 +48,17 @@ public:
     bool isRunning() const;
     void waitForIdle();  // tests
 
+    ViewLayer ghosts() const { return ghosts_; }
+    bool ghostsEnabled() const;
     CompareChart* chart() const { return chart_; }
     CollisionTable* collisions() const { return table_; }
     QString summaryText() const;
     QString warningsText() const;
 
 signals:
+    // The ghosts to draw (an empty layer: none). Emitted after every finished run and when ghosts
+    // are switched on or off.
+    void ghostLayerChanged(const ViewLayer& layer);
     void timeRequested(double seconds);  // the user picked a collision in the table
     void comparisonChanged();
 
@@ -67,6 +73,7 @@ private:
     QDoubleSpinBox* step_;
     QSpinBox* substeps_;
     QLabel* substepsLabel_;
+    QCheckBox* showGhosts_;
     QProgressBar* progress_;
     QLabel* summary_;
     QLabel* warnings_;
@@ -76,6 +83,7 @@ private:
     CompareRunner* runner_;
     QTimer* debounce_;
     std::optional<Setup> setup_;
+    ViewLayer ghosts_;
 };
 
 }  // namespace cuelab

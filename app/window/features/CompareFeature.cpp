@@ -1,11 +1,13 @@
-// The Compare feature (issue 9): a dock with the Compare panel, the chart's cursor on the transport,
-// and an Analysis menu entry that opens it. (The ghosts in the table view wait for its layer API.)
+// The Compare feature (issue 9): a dock with the Compare panel, its ghosts in the table view's
+// "compare" layer while the dock is shown, the chart's cursor on the transport, and an Analysis menu
+// entry that opens it.
 
 #include "MainWindow.h"
 
 #include "compare/ComparePanel.h"
 #include "editor/Document.h"
 #include "editor/Playback.h"
+#include "view/TableView.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -22,6 +24,7 @@ void installCompare(MainWindow& window)
     QDockWidget* dock = window.addPanel(panel, QObject::tr("Compare"), QStringLiteral("CompareDock"), placement);
     Document* document = window.document();
     Playback* playback = window.playback();
+    TableView* view = window.tableView();
 
     // The panel works only while it is shown: a hidden dock runs nothing in the background.
     const auto feed = [panel, dock, document] {
@@ -32,11 +35,19 @@ void installCompare(MainWindow& window)
     QObject::connect(playback, &Playback::timeChanged, panel, &ComparePanel::setTime);
     QObject::connect(panel, &ComparePanel::timeRequested, playback, &Playback::setTime);
 
+    const auto showGhosts = [panel, dock, view] {
+        if (dock->isVisible() && panel->ghostsEnabled() && !panel->ghosts().empty())
+            view->setLayer(QStringLiteral("compare"), panel->ghosts());
+        else
+            view->clearLayer(QStringLiteral("compare"));
+    };
+    QObject::connect(panel, &ComparePanel::ghostLayerChanged, view, showGhosts);
     QObject::connect(dock, &QDockWidget::visibilityChanged, panel, [=](bool visible) {
         if (visible) {
             panel->setTime(playback->time());
             feed();
         }
+        showGhosts();
     });
 
     QAction* open = window.menu(WindowMenu::Analysis)->addAction(QObject::tr("Compare &Methods…"));
