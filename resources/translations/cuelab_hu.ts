@@ -95,6 +95,114 @@
         <source>Rename ball %1</source>
         <translation>A(z) %1 golyó átnevezése</translation>
     </message>
+    <message>
+        <source>Analysis</source>
+        <translation>Elemzés</translation>
+    </message>
+    <message>
+        <source>Scan &amp;tolerances</source>
+        <translation>&amp;Tűrések letapogatása</translation>
+    </message>
+    <message>
+        <source>The windows of heading, speed, elevation and tip offset in which the shot still meets the goal</source>
+        <translation>Az irány, a sebesség, az emelés és a dákóvég-eltolás ablakai, amelyekben az ütés még teljesíti a célt</translation>
+    </message>
+    <message>
+        <source>&amp;Map tip offsets</source>
+        <translation>A dákóvég-eltolások &amp;térképe</translation>
+    </message>
+    <message>
+        <source>Simulate the shot for every tip offset within the miscue limit and colour each by its outcome</source>
+        <translation>Az ütés szimulálása minden, a lecsúszási határon belüli dákóvég-eltolásra, mindegyik az eredménye szerint színezve</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel analysis</source>
+        <translation>Az elemzés &amp;megszakítása</translation>
+    </message>
+    <message>
+        <source>Stop the running scan or map</source>
+        <translation>A futó letapogatás vagy térképezés leállítása</translation>
+    </message>
+    <message>
+        <source>Analysis &amp;panel</source>
+        <translation>Elemzés&amp;panel</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Összehasonlítás</translation>
+    </message>
+    <message>
+        <source>Compare &amp;Methods…</source>
+        <translation>A módszerek ö&amp;sszehasonlítása…</translation>
+    </message>
+    <message>
+        <source>Run the shot with the 2011 discrete method or Box2D and measure it against the exact simulation</source>
+        <translation>Az ütés lefuttatása a 2011-es diszkrét módszerrel vagy a Box2D-vel, és összemérése a pontos szimulációval</translation>
+    </message>
+    <message>
+        <source>Export explanation</source>
+        <translation>A magyarázat exportálása</translation>
+    </message>
+    <message>
+        <source>This shot has no events to explain yet.</source>
+        <translation>Ennek az ütésnek még nincs magyarázható eseménye.</translation>
+    </message>
+    <message>
+        <source>The selected event</source>
+        <translation>A kijelölt esemény</translation>
+    </message>
+    <message>
+        <source>Every collision of the shot</source>
+        <translation>Az ütés minden ütközése</translation>
+    </message>
+    <message>
+        <source>Explain:</source>
+        <translation>Magyarázat:</translation>
+    </message>
+    <message>
+        <source>HTML (*.html);;Markdown (*.md)</source>
+        <translation>HTML (*.html);;Markdown (*.md)</translation>
+    </message>
+    <message>
+        <source>Explain</source>
+        <translation>Magyarázat</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lecke</translation>
+    </message>
+    <message>
+        <source>&amp;Explanation…</source>
+        <translation>&amp;Magyarázat…</translation>
+    </message>
+    <message>
+        <source>Write the selected event&apos;s mathematics, or every collision&apos;s, as HTML or Markdown</source>
+        <translation>A kijelölt esemény vagy minden ütközés matematikájának kiírása HTML- vagy Markdown-fájlba</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <source>no event %1 in this shot</source>
+        <translation>ebben az ütésben nincs %1. esemény</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>cuelab</name>
@@ -216,19 +324,19 @@
     </message>
     <message>
         <source>Lesson &amp;Report (PDF)...</source>
-        <translation>Óra&amp;jegyzet (PDF)…</translation>
+        <translation>Lecke&amp;jegyzet (PDF)…</translation>
     </message>
     <message>
         <source>Export the Lesson Report</source>
-        <translation>Az órajegyzet exportálása</translation>
+        <translation>A leckejegyzet exportálása</translation>
     </message>
     <message>
         <source>Writing the lesson report...</source>
-        <translation>Az órajegyzet írása…</translation>
+        <translation>A leckejegyzet írása…</translation>
     </message>
     <message>
         <source>A printable report: the diagram, the lesson&apos;s notes, the outcome, the event table, the plots</source>
-        <translation>Nyomtatható jegyzet: az ábra, az óra megjegyzései, az eredmény, az eseménytáblázat, a grafikonok</translation>
+        <translation>Nyomtatható jegyzet: az ábra, a lecke megjegyzései, az eredmény, az eseménytáblázat, a grafikonok</translation>
     </message>
     <message>
         <source>Writing the trajectory...</source>
@@ -245,6 +353,233 @@
     <message>
         <source>Every event with its agents&apos; states before and after</source>
         <translation>Minden esemény, a résztvevők előtte és utána vett állapotával</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::AnalysisPanel</name>
+    <message>
+        <source>first contact: %1</source>
+        <translation>első érintkezés: %1</translation>
+    </message>
+    <message>
+        <source>pocketed: %1</source>
+        <translation>lyukba esett: %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nincs</translation>
+    </message>
+    <message>
+        <source>%1 events, at rest at %2 s</source>
+        <translation>%1 esemény, nyugalomban: %2 s</translation>
+    </message>
+    <message>
+        <source>Click to load this shot.</source>
+        <translation>Kattintson az ütés betöltéséhez.</translation>
+    </message>
+    <message>
+        <source>e.g. pot:1@pocket-tr,no-scratch</source>
+        <translation>pl. pot:1@pocket-tr,no-scratch</translation>
+    </message>
+    <message>
+        <source>What the shot should do, terms separated by commas, all must hold:
+pot:BALL or pot:BALL@POCKET — the ball is pocketed (in that pocket)
+first:BALL — the struck ball hits BALL first
+no-scratch — the struck ball stays on the table
+in:BALL@X0:Y0:X1:Y1 — the ball ends inside that rectangle (m)
+cushions:BALL=N (or &lt;=N, &gt;=N) — cushion hits of the ball, jaws included
+!TERM — the term does not hold</source>
+        <translation>Mit kell tennie az ütésnek; a feltételeket vessző választja el, mindnek teljesülnie kell:
+pot:BALL vagy pot:BALL@POCKET — a golyó lyukba esik (abba a lyukba)
+first:BALL — a megütött golyó először a BALL golyót találja el
+no-scratch — a megütött golyó az asztalon marad
+in:BALL@X0:Y0:X1:Y1 — a golyó abban a téglalapban áll meg (m)
+cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpofákkal együtt
+!TERM — a feltétel nem teljesül</translation>
+    </message>
+    <message>
+        <source>From shot</source>
+        <translation>Az ütésből</translation>
+    </message>
+    <message>
+        <source>Set the goal to what the current shot does (the ball it pots, and no scratch)</source>
+        <translation>A cél beállítása arra, amit az aktuális ütés tesz (a golyó, amelyet lyukba juttat, és a fehér nem esik be)</translation>
+    </message>
+    <message>
+        <source>Tolerance around the current shot</source>
+        <translation>Tűrés az aktuális ütés körül</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Letapogatás</translation>
+    </message>
+    <message>
+        <source>Scan heading (±2°), speed (±50%), elevation (±10°) and the tip offsets (±0.5 R) one at a time around their current values: the window in which the shot still meets the goal</source>
+        <translation>Az irány (±2°), a sebesség (±50%), az emelés (±10°) és a dákóvég-eltolások (±0,5 R) letapogatása egyenként az aktuális értékük körül: az ablak, amelyben az ütés még teljesíti a célt</translation>
+    </message>
+    <message>
+        <source>Outcome map</source>
+        <translation>Eredménytérkép</translation>
+    </message>
+    <message>
+        <source>Tip offset (side × height, within the miscue limit)</source>
+        <translation>Dákóvég-eltolás (oldal × magasság, a lecsúszási határon belül)</translation>
+    </message>
+    <message>
+        <source>Any two parameters</source>
+        <translation>Bármely két paraméter</translation>
+    </message>
+    <message>
+        <source>What the map&apos;s axes are</source>
+        <translation>Mik a térkép tengelyei</translation>
+    </message>
+    <message>
+        <source>Axes</source>
+        <translation>Tengelyek</translation>
+    </message>
+    <message>
+        <source>The key along the map&apos;s horizontal axis</source>
+        <translation>A térkép vízszintes tengelyén változó kulcs</translation>
+    </message>
+    <message>
+        <source>The key along the map&apos;s vertical axis</source>
+        <translation>A térkép függőleges tengelyén változó kulcs</translation>
+    </message>
+    <message>
+        <source>First value of the horizontal axis, in the key&apos;s unit</source>
+        <translation>A vízszintes tengely első értéke, a kulcs mértékegységében</translation>
+    </message>
+    <message>
+        <source>Last value of the horizontal axis, in the key&apos;s unit</source>
+        <translation>A vízszintes tengely utolsó értéke, a kulcs mértékegységében</translation>
+    </message>
+    <message>
+        <source>First value of the vertical axis, in the key&apos;s unit</source>
+        <translation>A függőleges tengely első értéke, a kulcs mértékegységében</translation>
+    </message>
+    <message>
+        <source>Last value of the vertical axis, in the key&apos;s unit</source>
+        <translation>A függőleges tengely utolsó értéke, a kulcs mértékegységében</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>Cells along each axis (a 101 × 101 map is about 10 000 shots)</source>
+        <translation>Cellák tengelyenként (egy 101 × 101-es térkép kb. 10 000 ütés)</translation>
+    </message>
+    <message>
+        <source>Map</source>
+        <translation>Térkép</translation>
+    </message>
+    <message>
+        <source>Simulate every cell of the map; the colours stream in</source>
+        <translation>A térkép minden cellájának szimulálása; a színek folyamatosan érkeznek</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Cellák</translation>
+    </message>
+    <message>
+        <source>Each cell is one shot, coloured by its outcome; the cross is the current shot. Click a cell to load its shot (one undo step).</source>
+        <translation>Minden cella egy ütés, az eredménye szerint színezve; a kereszt az aktuális ütés. Egy cellára kattintva betölti az ütését (egy visszavonási lépés).</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Mégse</translation>
+    </message>
+    <message>
+        <source>Stop the running analysis (Esc)</source>
+        <translation>A futó elemzés leállítása (Esc)</translation>
+    </message>
+    <message>
+        <source>Goal</source>
+        <translation>Cél</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Megszakítva.</translation>
+    </message>
+    <message>
+        <source>The setup has no cue strike to scan.</source>
+        <translation>A felállásban nincs letapogatható dákóütés.</translation>
+    </message>
+    <message>
+        <source>scanning…</source>
+        <translation>letapogatás…</translation>
+    </message>
+    <message>
+        <source>Scanning the tolerance of %1 parameters for: %2</source>
+        <translation>%1 paraméter tűrésének letapogatása ehhez: %2</translation>
+    </message>
+    <message>
+        <source>The setup has no cue strike: no tip offsets to map.</source>
+        <translation>A felállásban nincs dákóütés: nincs feltérképezhető dákóvég-eltolás.</translation>
+    </message>
+    <message>
+        <source>Choose two keys of this setup.</source>
+        <translation>Válasszon két kulcsot ebből a felállásból.</translation>
+    </message>
+    <message>
+        <source>Choose two different keys.</source>
+        <translation>Válasszon két különböző kulcsot.</translation>
+    </message>
+    <message>
+        <source>Mapping %1 shots for: %2</source>
+        <translation>%1 ütés feltérképezése ehhez: %2</translation>
+    </message>
+    <message>
+        <source>%1 of %2 simulated shots meet the goal.</source>
+        <translation>%2 szimulált ütésből %1 teljesíti a célt.</translation>
+    </message>
+    <message>
+        <source>That tip offset lies beyond the miscue limit.</source>
+        <translation>Ez a dákóvég-eltolás a lecsúszási határon túl van.</translation>
+    </message>
+    <message>
+        <source>The setup changed since the map was made; map again.</source>
+        <translation>A felállás megváltozott a térkép készítése óta; térképezzen újra.</translation>
+    </message>
+    <message>
+        <source>Load shot from the map (%1 = %2, %3 = %4)</source>
+        <translation>Ütés betöltése a térképről (%1 = %2, %3 = %4)</translation>
+    </message>
+    <message>
+        <source>That cell&apos;s shot is not a legal setup.</source>
+        <translation>Ennek a cellának az ütése nem szabályos felállás.</translation>
+    </message>
+    <message>
+        <source>the setup changed: scan again</source>
+        <translation>a felállás megváltozott: tapogassa le újra</translation>
+    </message>
+    <message>
+        <source>The setup changed: the map was dropped.</source>
+        <translation>A felállás megváltozott: a térkép elvetve.</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Irány</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Sebesség</translation>
+    </message>
+    <message>
+        <source>Elevation</source>
+        <translation>Emelés</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Oldal</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Magasság</translation>
     </message>
 </context>
 <context>
@@ -315,7 +650,7 @@
     </message>
     <message>
         <source>Velocity</source>
-        <translation>Sebességvektor</translation>
+        <translation>Sebesség</translation>
     </message>
     <message>
         <source>Spin</source>
@@ -435,6 +770,234 @@
     <message>
         <source>Move ball %1</source>
         <translation>A(z) %1 golyó áthelyezése</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::CollisionTable</name>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>exact t (s)</source>
+        <translation>pontos t (s)</translation>
+    </message>
+    <message>
+        <source>exact</source>
+        <translation>pontos</translation>
+    </message>
+    <message>
+        <source>engine t (s)</source>
+        <translation>motor t (s)</translation>
+    </message>
+    <message>
+        <source>engine</source>
+        <translation>motor</translation>
+    </message>
+    <message>
+        <source>Δt (ms)</source>
+        <translation>Δt (ms)</translation>
+    </message>
+    <message>
+        <source>The collisions each method found, in order. Δt is the engine&apos;s time minus the exact one, in milliseconds, while the two sequences agree; the first row where they differ is marked. Double-click a row to go to its time.</source>
+        <translation>Az egyes módszerek által talált ütközések, sorrendben. Δt a motor időpontja mínusz a pontos, milliszekundumban, amíg a két sorozat egyezik; az első eltérő sor meg van jelölve. Dupla kattintással a sor időpontjára ugrik.</translation>
+    </message>
+    <message>
+        <source>%1 t (s)</source>
+        <translation>%1 t (s)</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(nincs)</translation>
+    </message>
+    <message>
+        <source>The first collision where the two methods disagree</source>
+        <translation>Az első ütközés, amelyben a két módszer eltér</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::CompareChart</name>
+    <message>
+        <source>Position error against the exact run</source>
+        <translation>Helyzeti eltérés a pontos futáshoz képest</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>idő (s)</translation>
+    </message>
+    <message>
+        <source>error (mm)</source>
+        <translation>eltérés (mm)</translation>
+    </message>
+    <message>
+        <source>now</source>
+        <translation>most</translation>
+    </message>
+    <message>
+        <source>How far each ball of the chosen engine is from the same ball in the exact simulation, in millimetres, at every sample time; the dashed line is the current time</source>
+        <translation>A választott motor egyes golyói milyen messze vannak ugyanattól a golyótól a pontos szimulációban, milliméterben, minden mintavételi időpontban; a szaggatott vonal az aktuális időpont</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::ComparePanel</name>
+    <message>
+        <source>Ghosts in the table view</source>
+        <translation>Szellemek az asztalnézetben</translation>
+    </message>
+    <message>
+        <source>Discrete: the 2011 method (NeHe 30)</source>
+        <translation>Diszkrét: a 2011-es módszer (NeHe 30)</translation>
+    </message>
+    <message>
+        <source>Box2D 2.4</source>
+        <translation>Box2D 2.4</translation>
+    </message>
+    <message>
+        <source>Exact (itself)</source>
+        <translation>Pontos (önmaga)</translation>
+    </message>
+    <message>
+        <source>The method to run the shot with and measure against the exact simulation</source>
+        <translation>A módszer, amellyel az ütés fut, és amelyet a pontos szimulációval összemér</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>The engine&apos;s fixed time step, in milliseconds (16.667 ms = 60 Hz, a game frame)</source>
+        <translation>A motor rögzített időlépése milliszekundumban (16,667 ms = 60 Hz, egy játékképkocka)</translation>
+    </message>
+    <message>
+        <source>Draw the engine&apos;s balls and paths as translucent ghosts beside the exact ones</source>
+        <translation>A motor golyóinak és pályáinak kirajzolása áttetsző szellemként a pontosak mellett</translation>
+    </message>
+    <message>
+        <source>The engine is running in the background</source>
+        <translation>A motor a háttérben fut</translation>
+    </message>
+    <message>
+        <source>What of this shot the engine cannot represent: it runs without it</source>
+        <translation>Amit ebből az ütésből a motor nem tud ábrázolni: nélküle fut</translation>
+    </message>
+    <message>
+        <source>Engine</source>
+        <translation>Motor</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Lépés</translation>
+    </message>
+    <message>
+        <source>Position error</source>
+        <translation>Helyzeti eltérés</translation>
+    </message>
+    <message>
+        <source>Collisions</source>
+        <translation>Ütközések</translation>
+    </message>
+    <message>
+        <source>Open a shot to compare.</source>
+        <translation>Nyisson meg egy ütést az összehasonlításhoz.</translation>
+    </message>
+    <message>
+        <source>The engine&apos;s fixed time step, in milliseconds (16.667 ms = 60 Hz, a game frame); at least %1 ms: %2</source>
+        <translation>A motor rögzített időlépése milliszekundumban (16,667 ms = 60 Hz, egy játékképkocka); legalább %1 ms: %2</translation>
+    </message>
+    <message>
+        <source>Velocity iterations</source>
+        <translation>Sebességiterációk</translation>
+    </message>
+    <message>
+        <source>Box2D&apos;s velocity iterations per step (8 recommended)</source>
+        <translation>A Box2D sebességiterációi lépésenként (8 ajánlott)</translation>
+    </message>
+    <message>
+        <source>Sub-steps</source>
+        <translation>Részlépések</translation>
+    </message>
+    <message>
+        <source>Sphere tests per step of the 2011 method: a hit between two tests can be missed</source>
+        <translation>Gömbvizsgálatok lépésenként a 2011-es módszerben: két vizsgálat közötti találat kimaradhat</translation>
+    </message>
+    <message>
+        <source>Running %1…</source>
+        <translation>%1 fut…</translation>
+    </message>
+    <message>
+        <source>Largest error %1 (ball %2 at %3 s).</source>
+        <translation>A legnagyobb eltérés %1 (%2 golyó, %3 s-nál).</translation>
+    </message>
+    <message>
+        <source>No position error.</source>
+        <translation>Nincs helyzeti eltérés.</translation>
+    </message>
+    <message>
+        <source>At rest, ball %1 lies %2 from where the exact run leaves it.</source>
+        <translation>Nyugalomban a(z) %1 golyó %2 távolságra van attól a helytől, ahol a pontos futás hagyja.</translation>
+    </message>
+    <message>
+        <source>The collisions part at #%1 (%2 of %3 agree; largest time difference %4 ms).</source>
+        <translation>Az ütközések a #%1-nél válnak el (%3-ból %2 egyezik; a legnagyobb időkülönbség %4 ms).</translation>
+    </message>
+    <message>
+        <source>Same %1 collisions in the same order (largest time difference %2 ms).</source>
+        <translation>Ugyanaz a(z) %1 ütközés ugyanabban a sorrendben (a legnagyobb időkülönbség %2 ms).</translation>
+    </message>
+    <message>
+        <source>Deepest overlap of two balls: %1.</source>
+        <translation>Két golyó legmélyebb átfedése: %1.</translation>
+    </message>
+    <message>
+        <source>&lt;i&gt;The exact engine represents every feature.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;A pontos motor minden jellemzőt ábrázol.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 cannot represent:&lt;/b&gt;&lt;ul style=&quot;margin-left: 12px; -qt-list-indent: 0;&quot;&gt;</source>
+        <translation>&lt;b&gt;Amit a(z) %1 nem tud ábrázolni:&lt;/b&gt;&lt;ul style=&quot;margin-left: 12px; -qt-list-indent: 0;&quot;&gt;</translation>
+    </message>
+    <message>
+        <source>Cannot compare: %1</source>
+        <translation>Az összehasonlítás nem lehetséges: %1</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::ConservationWidget</name>
+    <message>
+        <source>Left: each ball&apos;s momentum m·v (N s) drawn tip to tail, before and after, with their total (dashed). Right: kinetic energy (J) before and after, translation (solid) and rotation (light).</source>
+        <translation>Balra: minden golyó m·v lendülete (N s) egymás után fűzve, előtte és utána, az összegükkel (szaggatott). Jobbra: a mozgási energia (J) előtte és utána, haladó (telt) és forgó (halvány).</translation>
+    </message>
+    <message>
+        <source>Momenta and energy of the selected event</source>
+        <translation>A kijelölt esemény lendületei és energiája</translation>
+    </message>
+    <message>
+        <source>Momentum (N s)</source>
+        <translation>Lendület (N s)</translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation>előtte</translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation>utána</translation>
+    </message>
+    <message>
+        <source>J (cushion)</source>
+        <translation>J (mantinel)</translation>
+    </message>
+    <message>
+        <source>Energy (J)</source>
+        <translation>Energia (J)</translation>
+    </message>
+    <message>
+        <source>ΔE = %1 J (%2 %)</source>
+        <translation>ΔE = %1 J (%2 %)</translation>
+    </message>
+    <message>
+        <source>ΔE = %1 J</source>
+        <translation>ΔE = %1 J</translation>
     </message>
 </context>
 <context>
@@ -571,6 +1134,14 @@
             <numerusform>%1, %n golyó áthelyezésével: %2</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Rename the lesson</source>
+        <translation>A lecke átnevezése</translation>
+    </message>
+    <message>
+        <source>Edit the lesson&apos;s notes</source>
+        <translation>A lecke megjegyzéseinek szerkesztése</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::EventTableModel</name>
@@ -701,6 +1272,17 @@
     <message>
         <source>Ball %1</source>
         <translation>%1 golyó</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::ExplainPanel</name>
+    <message>
+        <source>Select an event (in Events, or step to one with Shift+Right) to see its mathematics.</source>
+        <translation>Válasszon ki egy eseményt (az Események panelen, vagy lépjen rá Shift+Jobbra nyíllal), hogy lássa a matematikáját.</translation>
+    </message>
+    <message>
+        <source>The time-of-impact polynomial f(τ) over the prediction window: its roots are marked, the root that gave the event in red. τ in seconds from t₀.</source>
+        <translation>Az ütközési idő f(τ) polinomja az előrejelzési ablakban: a gyökei megjelölve, az eseményt adó gyök pirossal. τ másodpercben, t₀-tól.</translation>
     </message>
 </context>
 <context>
@@ -879,6 +1461,29 @@
     <message>
         <source>Energy change</source>
         <translation>Energiaváltozás</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::LessonPanel</name>
+    <message>
+        <source>Name of the shot</source>
+        <translation>Az ütés neve</translation>
+    </message>
+    <message>
+        <source>The setup&apos;s name (saved in the file as &quot;name&quot;)</source>
+        <translation>A felállás neve (a fájlban &quot;name&quot; néven mentve)</translation>
+    </message>
+    <message>
+        <source>What this shot teaches: write the lesson here.</source>
+        <translation>Mit tanít ez az ütés: ide írja a leckét.</translation>
+    </message>
+    <message>
+        <source>The setup&apos;s notes (saved in the file as &quot;notes&quot;); each finished edit is one undo step</source>
+        <translation>A felállás megjegyzései (a fájlban &quot;notes&quot; néven mentve); minden befejezett szerkesztés egy visszavonási lépés</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Név</translation>
     </message>
 </context>
 <context>
@@ -1190,6 +1795,13 @@
     <message>
         <source>Undo History</source>
         <translation>Visszavonási előzmények</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::OutcomeMap</name>
+    <message>
+        <source>No map yet: choose the axes and press Map.</source>
+        <translation>Még nincs térkép: válassza ki a tengelyeket, és nyomja meg a Térkép gombot.</translation>
     </message>
 </context>
 <context>
@@ -1979,6 +2591,68 @@
     <message>
         <source>Cue tip offset on the ball&apos;s face, as the player sees it. Click or drag to place the tip; the dashed circle is the miscue limit (half the radius).</source>
         <translation>A dákóvég eltolása a golyó lapján, ahogy a játékos látja. Kattintással vagy húzással helyezhető el; a szaggatott kör a lecsúszás határa (a sugár fele).</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::ToiChart</name>
+    <message>
+        <source>No time-of-impact polynomial: this event&apos;s time is closed-form</source>
+        <translation>Nincs ütközésiidő-polinom: ennek az eseménynek az időpontja zárt alakban adódik</translation>
+    </message>
+    <message>
+        <source>Time-of-impact polynomial</source>
+        <translation>Ütközésiidő-polinom</translation>
+    </message>
+    <message>
+        <source>f(τ) from t₀ = %1 s</source>
+        <translation>f(τ), t₀ = %1 s-tól</translation>
+    </message>
+    <message>
+        <source>f(τ), m</source>
+        <translation>f(τ), m</translation>
+    </message>
+    <message>
+        <source>f(τ), m²</source>
+        <translation>f(τ), m²</translation>
+    </message>
+    <message>
+        <source>f = 0</source>
+        <translation>f = 0</translation>
+    </message>
+    <message>
+        <source>roots</source>
+        <translation>gyökök</translation>
+    </message>
+    <message>
+        <source>τ* = %1 s (the event)</source>
+        <translation>τ* = %1 s (az esemény)</translation>
+    </message>
+    <message>
+        <source>τ (s)</source>
+        <translation>τ (s)</translation>
+    </message>
+    <message>
+        <source>f (m)</source>
+        <translation>f (m)</translation>
+    </message>
+    <message>
+        <source>f (m²)</source>
+        <translation>f (m²)</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::ToleranceBar</name>
+    <message>
+        <source>not scanned</source>
+        <translation>nincs letapogatva</translation>
+    </message>
+    <message>
+        <source> (the current value misses)</source>
+        <translation> (az aktuális érték nem teljesíti)</translation>
+    </message>
+    <message>
+        <source>%1 shots simulated; the window&apos;s edges are refined by bisection. Grey: misses the goal, dark: illegal value, green: meets it; the black line is the current value.</source>
+        <translation>%1 ütés szimulálva; az ablak széleit felezéssel finomítja. Szürke: nem teljesíti a célt, sötét: szabálytalan érték, zöld: teljesíti; a fekete vonal az aktuális érték.</translation>
     </message>
 </context>
 <context>

@@ -39,11 +39,11 @@ struct BarSpec {
     double lowest, highest;
 };
 const BarSpec kBars[] = {
-    {"shot.heading", QT_TRANSLATE_NOOP("AnalysisPanel", "Heading"), 2.0, -1e9, 1e9},
-    {"shot.speed", QT_TRANSLATE_NOOP("AnalysisPanel", "Speed"), 0.5, 0.0, 12.0},
-    {"shot.elevation", QT_TRANSLATE_NOOP("AnalysisPanel", "Elevation"), 10.0, 0.0, 89.0},
-    {"shot.side", QT_TRANSLATE_NOOP("AnalysisPanel", "Side"), 0.5, -0.95, 0.95},
-    {"shot.height", QT_TRANSLATE_NOOP("AnalysisPanel", "Height"), 0.5, -0.95, 0.95},
+    {"shot.heading", QT_TRANSLATE_NOOP("cuelab::AnalysisPanel", "Heading"), 2.0, -1e9, 1e9},
+    {"shot.speed", QT_TRANSLATE_NOOP("cuelab::AnalysisPanel", "Speed"), 0.5, 0.0, 12.0},
+    {"shot.elevation", QT_TRANSLATE_NOOP("cuelab::AnalysisPanel", "Elevation"), 10.0, 0.0, 89.0},
+    {"shot.side", QT_TRANSLATE_NOOP("cuelab::AnalysisPanel", "Side"), 0.5, -0.95, 0.95},
+    {"shot.height", QT_TRANSLATE_NOOP("cuelab::AnalysisPanel", "Height"), 0.5, -0.95, 0.95},
 };
 constexpr int kBarPoints = 41;  // grid of each scan; the edges are then bisected 20 times
 
