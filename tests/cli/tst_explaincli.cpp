@@ -127,9 +127,9 @@ private slots:
         QTest::addColumn<QString>("message");
         const QString f = kExamples + "straight-shot.json";
         QTest::newRow("out of range") << QStringList{"explain", f, "--event", "9999"} << "give 0 to ";
-        QTest::newRow("negative") << QStringList{"explain", f, "--event", "-1"} << "give 0 to ";
-        QTest::newRow("not a number") << QStringList{"explain", f, "--event", "two"} << "give 0 to ";
-        QTest::newRow("fraction") << QStringList{"explain", f, "--event", "1.5"} << "give 0 to ";
+        QTest::newRow("negative") << QStringList{"explain", f, "--event", "-1"} << "--event: expected a whole number >= 0";
+        QTest::newRow("not a number") << QStringList{"explain", f, "--event", "two"} << "--event: expected a whole number >= 0";
+        QTest::newRow("fraction") << QStringList{"explain", f, "--event", "1.5"} << "--event: expected a whole number >= 0";
         QTest::newRow("missing") << QStringList{"explain", f} << "--event N is required";
         QTest::newRow("format") << QStringList{"explain", f, "--event", "0", "--format", "xml"} << "json or markdown";
     }
