@@ -7,6 +7,7 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace cuelab {
 
@@ -128,7 +129,7 @@ void DockLayout::recordShares()
     }
 }
 
-void DockLayout::applyShares()
+void DockLayout::applyShares(int attempts)
 {
     const int w = window_->width();
     if (w <= 0) return;
@@ -146,7 +147,21 @@ void DockLayout::applyShares()
     if (QLayout* layout = window_->layout()) layout->activate();
     // One dock at a time: sized together, Qt 6.4 leaves a side that grows after a shrink unchanged.
     for (qsizetype i = 0; i < docks.size(); ++i) window_->resizeDocks({docks[i]}, {widths[i]}, Qt::Horizontal);
-    QTimer::singleShot(0, this, [this] { applying_ = false; });
+    // Qt 6.4 sometimes drops a resizeDocks made while the layout still settles the window's new
+    // size: look again shortly after, and size the docks again (a few times at most) while a side
+    // that could have its width has not.
+    QTimer::singleShot(kRetryMs, this, [this, docks, widths, attempts] {
+        applying_ = false;
+        if (attempts <= 1) return;
+        int want = 0;
+        for (int width : widths) want += width;
+        const QWidget* central = window_->centralWidget();
+        const int room = window_->width() - (central ? central->minimumSizeHint().width() : 0);
+        bool missed = false;
+        for (qsizetype i = 0; i < docks.size(); ++i)
+            if (docks[i]->isVisible() && std::abs(docks[i]->width() - widths[i]) > 2) missed = true;
+        if (missed && want <= room) applyShares(attempts - 1);
+    });
 }
 
 }  // namespace cuelab

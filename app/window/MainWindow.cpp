@@ -59,7 +59,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     view_ = new TableView(this);
     view_->setObjectName(QStringLiteral("tableView"));
-    view_->setMinimumSize(320, 200);
+    view_->setMinimumSize(300, 200);  // an 800-pixel window keeps both 240-pixel side docks
     view_->setFocusPolicy(Qt::ClickFocus);
     transport_ = new TransportBar(playback_, this);
     transport_->setObjectName(QStringLiteral("transport"));
@@ -176,15 +176,11 @@ QDockWidget* MainWindow::addPanel(QWidget* content, const QString& title, const 
 {
     auto* d = new QDockWidget(title, this);
     d->setObjectName(objectName);  // saveState/restoreState find docks by name
-    if (placement.scroll) {
-        auto* scroller = new QScrollArea(d);
-        scroller->setWidget(content);
-        scroller->setWidgetResizable(true);
-        scroller->setFrameShape(QFrame::NoFrame);
-        d->setWidget(scroller);
-    } else {
-        d->setWidget(content);
-    }
+    auto* scroller = new QScrollArea(d);
+    scroller->setWidget(content);
+    scroller->setWidgetResizable(true);
+    scroller->setFrameShape(QFrame::NoFrame);
+    d->setWidget(scroller);
     if (placement.area == Qt::TopDockWidgetArea || placement.area == Qt::BottomDockWidgetArea)
         d->setMinimumHeight(DockLayout::kMinimumDockHeight);
     else

@@ -46,7 +46,10 @@ enum class WindowMenu { File, Export, Edit, View, Analysis, Playback, Help };
 struct PanelPlacement {
     Qt::DockWidgetArea area = Qt::RightDockWidgetArea;
     QString tabifyWith;   // object name of a dock to share tabs with ("InspectorDock"), or empty
-    bool scroll = false;  // put the content in a scroll area (tall forms)
+    // Every dock's content now sits in a scroll area (resizable: it fills the dock, and scrolls only
+    // below its own minimum size), so that no panel's minimum keeps the window from shrinking to
+    // 800x600. The flag is kept for the callers that say a panel is a tall form.
+    bool scroll = false;
     bool visible = true;  // shown on the first start
 };
 

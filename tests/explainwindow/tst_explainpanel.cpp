@@ -143,8 +143,9 @@ private slots:
     {
         const auto r = window_->document()->result();
         window_->selection()->selectEvent(firstEvent(*r, EventKind::BallBall));
-        auto* dock = qobject_cast<QDockWidget*>(panel_->parentWidget());
-        while (panel_->parentWidget() && !dock) dock = qobject_cast<QDockWidget*>(panel_->parentWidget()->parentWidget());
+        // The dock is an ancestor (every dock's content sits in a scroll area).
+        QDockWidget* dock = nullptr;
+        for (QWidget* w = panel_->parentWidget(); w && !dock; w = w->parentWidget()) dock = qobject_cast<QDockWidget*>(w);
         QVERIFY(dock);
         dock->show();
         dock->raise();

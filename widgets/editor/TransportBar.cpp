@@ -9,6 +9,7 @@
 #include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QResizeEvent>
 #include <QLineEdit>
 #include <QRegularExpression>
 #include <QStyle>
@@ -17,6 +18,11 @@
 #include <cmath>
 
 namespace cuelab {
+
+namespace {
+constexpr int kSliderMinimum = 24;  // px: at the smallest window (800 px, both side docks)
+}  // namespace
+
 
 namespace {
 
@@ -62,7 +68,7 @@ TransportBar::TransportBar(Playback* playback, QWidget* parent) : QWidget(parent
     timeBox_->setFont(mono);
     timeBox_->setAlignment(Qt::AlignRight);
     // Room for "000.000000" and the frame: the box does not grow, the slider takes the rest.
-    timeBox_->setFixedWidth(QFontMetrics(mono).horizontalAdvance(QStringLiteral("0000.0000000")) + 12);
+    timeBox_->setFixedWidth(QFontMetrics(mono).horizontalAdvance(QStringLiteral("000.000000")) + 12);
     endLabel_ = new QLabel(this);
     endLabel_->setToolTip(tr("End time of the shot, in seconds: when every ball rests"));
     endLabel_->setFont(mono);
@@ -91,7 +97,9 @@ TransportBar::TransportBar(Playback* playback, QWidget* parent) : QWidget(parent
     layout->addSpacing(4);
     layout->addWidget(speed_);
     slider_->setFocusPolicy(Qt::NoFocus);
-    slider_->setMinimumWidth(120);
+    slider_->setMinimumWidth(kSliderMinimum);
+    // The bar may be narrower than all of its widgets: fitToWidth hides the optional ones.
+    layout->setSizeConstraint(QLayout::SetNoConstraint);
 
     connect(toStart_, &QAction::triggered, playback_, &Playback::toStart);
     connect(previousEvent_, &QAction::triggered, playback_, &Playback::previousEvent);
@@ -202,6 +210,47 @@ void TransportBar::goToTyped()
     }
     showTime(playback_->time());
     timeBox_->selectAll();
+}
+
+// The width of everything but the optional widgets: the end label, the speed box and the to-start
+// and to-end buttons (Home and End, and the Playback menu, still have them).
+QSize TransportBar::minimumSizeHint() const
+{
+    int width = 12 + 8 + 4;  // margins and spacings
+    for (QToolButton* b : findChildren<QToolButton*>(QString(), Qt::FindDirectChildrenOnly))
+        if (b->defaultAction() != toStart_ && b->defaultAction() != toEnd_) width += b->sizeHint().width() + 2;
+    width += kSliderMinimum + timeBox_->width();
+    return {width, QWidget::minimumSizeHint().height()};
+}
+
+void TransportBar::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    fitToWidth();
+}
+
+// Shows the optional widgets that fit, in the order they matter: the to-start and to-end buttons,
+// then the speed box, then the end label.
+void TransportBar::fitToWidth()
+{
+    QList<QToolButton*> ends;
+    for (QToolButton* b : findChildren<QToolButton*>(QString(), Qt::FindDirectChildrenOnly))
+        if (b->defaultAction() == toStart_ || b->defaultAction() == toEnd_) ends << b;
+    int room = width() - minimumSizeHint().width();
+    auto fits = [&room](int need) {
+        if (need > room) return false;
+        room -= need;
+        return true;
+    };
+    int endsWidth = 0;
+    for (QToolButton* b : ends) endsWidth += b->sizeHint().width() + 2;
+    const bool showEnds = fits(endsWidth);
+    const bool showSpeed = showEnds && fits(speed_->sizeHint().width() + 6);
+    const bool showLabel = showSpeed && fits(endLabel_->sizeHint().width() + 2);
+    for (QToolButton* b : ends)
+        if (b->isVisibleTo(this) != showEnds) b->setVisible(showEnds);
+    if (speed_->isVisibleTo(this) != showSpeed) speed_->setVisible(showSpeed);
+    if (endLabel_->isVisibleTo(this) != showLabel) endLabel_->setVisible(showLabel);
 }
 
 }  // namespace cuelab

@@ -39,6 +39,10 @@ public:
     };
     static bool parseTimeRequest(const QString& text, TimeRequest* request, QString* error);
 
+    // Narrow enough for an 800-pixel window with both side docks: below the full width the end
+    // time and then the speed box are hidden (the menus still have them), the slider keeps 60 px.
+    QSize minimumSizeHint() const override;
+
 public slots:
     void refreshTimeline();  // after Playback::setTimeline
 
@@ -47,7 +51,11 @@ signals:
     // selects it like a step to the next event.
     void eventRequested(int index);
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
+    void fitToWidth();
     void showTime(double seconds);
     void goToTyped();
 
