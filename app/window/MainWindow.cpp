@@ -79,6 +79,17 @@ MainWindow::MainWindow(QWidget* parent)
     installFeatures(*this);
     for (QMenu* m : findChildren<QMenu*>()) m->setToolTipsVisible(true);
     analysisMenu_->menuAction()->setVisible(!analysisMenu_->isEmpty());
+    // The columns' first heights, as proportions: the docks' contents scroll, so their minimums no
+    // longer say how tall each should start (the Balls list and editor, then Shot, then Lesson).
+    const auto dock = [this](const char* name) { return findChild<QDockWidget*>(QLatin1String(name)); };
+    QList<QDockWidget*> left, right;
+    QList<int> leftHeights, rightHeights;
+    for (const auto& [name, height] : {std::pair{"BallsDock", 45}, std::pair{"ShotDock", 35}, std::pair{"LessonDock", 20}})
+        if (QDockWidget* d = dock(name); d && d->isVisibleTo(this) != false) left << d, leftHeights << height;
+    for (const auto& [name, height] : {std::pair{"EventsDock", 40}, std::pair{"InspectorDock", 60}})
+        if (QDockWidget* d = dock(name)) right << d, rightHeights << height;
+    resizeDocks(left, leftHeights, Qt::Vertical);
+    resizeDocks(right, rightHeights, Qt::Vertical);
     layout_->captureDefault();
 
     connect(document_, &Document::resultChanged, this, &MainWindow::onResultChanged);
