@@ -318,9 +318,14 @@ void TestTableView::settlesAfterTheCameraMoves()
     QCOMPARE(frames.size(), 0);  // still: nothing to repaint
     view.camera().orbit(10.0f, 0.0f);
     view.update();
-    QTRY_COMPARE_WITH_TIMEOUT(frames.size(), 2, 3000);
+    // The moved frame, then the antialiased one (a loaded machine may add a frame or two while the
+    // camera's move is timed); then nothing more: the view is still again.
+    QTRY_VERIFY_WITH_TIMEOUT(frames.size() >= 2, 3000);
     QTest::qWait(500);
-    QCOMPARE(frames.size(), 2);
+    const qsizetype settled = frames.size();
+    QVERIFY2(settled <= 4, qPrintable(QString::number(settled)));
+    QTest::qWait(500);
+    QCOMPARE(frames.size(), settled);
     QCOMPARE(view.lastGlError(), 0u);
 }
 
