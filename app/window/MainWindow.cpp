@@ -79,17 +79,23 @@ MainWindow::MainWindow(QWidget* parent)
     installFeatures(*this);
     for (QMenu* m : findChildren<QMenu*>()) m->setToolTipsVisible(true);
     analysisMenu_->menuAction()->setVisible(!analysisMenu_->isEmpty());
-    // The columns' first heights, as proportions: the docks' contents scroll, so their minimums no
-    // longer say how tall each should start (the Balls list and editor, then Shot, then Lesson).
-    const auto dock = [this](const char* name) { return findChild<QDockWidget*>(QLatin1String(name)); };
-    QList<QDockWidget*> left, right;
-    QList<int> leftHeights, rightHeights;
-    for (const auto& [name, height] : {std::pair{"BallsDock", 45}, std::pair{"ShotDock", 35}, std::pair{"LessonDock", 20}})
-        if (QDockWidget* d = dock(name); d && d->isVisibleTo(this) != false) left << d, leftHeights << height;
-    for (const auto& [name, height] : {std::pair{"EventsDock", 40}, std::pair{"InspectorDock", 60}})
-        if (QDockWidget* d = dock(name)) right << d, rightHeights << height;
-    resizeDocks(left, leftHeights, Qt::Vertical);
-    resizeDocks(right, rightHeights, Qt::Vertical);
+    // The first heights: the docks' contents scroll, so their minimums no longer say how tall each
+    // should start. Side columns as proportions (the Balls list and editor, then Shot, then Lesson;
+    // Events, then the Inspector's tabs); the bottom Plots dock 240 px (its chart without a scroll bar), so that the table
+    // keeps most of a small window's height.
+    const auto sizeDocks = [this](std::initializer_list<std::pair<const char*, int>> sizes) {
+        QList<QDockWidget*> docks;
+        QList<int> heights;
+        for (const auto& [name, height] : sizes)
+            if (auto* d = findChild<QDockWidget*>(QLatin1String(name))) {
+                docks << d;
+                heights << height;
+            }
+        resizeDocks(docks, heights, Qt::Vertical);
+    };
+    sizeDocks({{"BallsDock", 45}, {"ShotDock", 35}, {"LessonDock", 20}});
+    sizeDocks({{"EventsDock", 40}, {"InspectorDock", 60}});
+    sizeDocks({{"PlotsDock", 240}});
     layout_->captureDefault();
 
     connect(document_, &Document::resultChanged, this, &MainWindow::onResultChanged);
