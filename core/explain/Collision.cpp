@@ -3,7 +3,7 @@
 // simulator applied it, and energy and momentum before and after.
 
 #include "Detection.h"
-#include "SeparationFloor.h"
+#include "Contact.h"
 #include "Motion.h"
 #include "Parts.h"
 #include "models/ModelRegistry.h"
@@ -27,6 +27,23 @@ void addStateAfterStep(Explanation& e)
               slipVelocity(body.after, body.radius).norm(), "m/s");
     }
     b.step().law = "A ball whose cloth contact slips slides; one whose contact does not slip rolls. " + words + ".";
+}
+
+// When the held pair belongs to a larger group, the group's other held contacts are re-seated with
+// it (Contact.h: seatContacts), which can change the states once more: the simulator's after-states.
+void addGroupStep(Explanation& e, const Event& ev)
+{
+    StepBuilder b(e.steps, "The held group",
+                  "The pair joins the balls it is already held with: their contacts are solved together, and "
+                  "what relative normal speed the others have left is taken away at the same time (each ball "
+                  "answers with 1/m sliding, 5/7 1/m rolling). These are the states the simulation goes on from.",
+                  "v″ (after the group's contacts are seated)");
+    for (std::size_t k = 0; k < e.bodies.size(); ++k) {
+        const std::string l = e.bodies.size() == 1 ? std::string() : "_" + std::string(1, static_cast<char>('a' + k));
+        const std::string sym = e.bodies.size() == 1 ? std::string() : "_" + std::string(1, static_cast<char>('a' + k));
+        b.out("v" + l + "_after", "v″" + sym, ev.after[k].velocity, "m/s")
+            .out("w" + l + "_after", "ω″" + sym, ev.after[k].spin, "rad/s");
+    }
 }
 
 }  // namespace
@@ -72,22 +89,29 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
             .out("v_a_after", "v′_a", res.a.velocity, "m/s")
             .out("v_b_after", "v′_b", res.b.velocity, "m/s");
     for (Step& s : model) e.steps.push_back(std::move(s));
-    BallBallResult floored = res;
-    const double extra = enforceSeparation(floored, in.a.mass, in.b.mass);
-    if (extra != 0.0)
-        StepBuilder(e.steps, "Separation floor",
-                    "The law above leaves the balls parting slower than " + number(kMinSeparationSpeed) +
-                        " m/s; the simulator adds a normal impulse so that they part at that speed, which "
-                        "bounds the collisions of a sustained push (see Detection.h).",
-                    "ΔP = (v_{min} − (v′_b − v′_a)·n) / (1/m_a + 1/m_b)")
-            .in("v_sep", "(v′_b − v′_a)·n", (res.b.velocity - res.a.velocity).dot(res.normal), "m/s")
-            .in("v_min", "v_{min}", kMinSeparationSpeed, "m/s")
-            .out("floor", "ΔP", extra, "N s")
-            .out("v_a_after", "v′_a", floored.a.velocity, "m/s")
-            .out("v_b_after", "v′_b", floored.b.velocity, "m/s")
-            .out("w_a_after", "ω′_a", floored.a.spin, "rad/s")
-            .out("w_b_after", "ω′_b", floored.b.spin, "rad/s")
-            .out("J", "J", floored.impulse, "N s");
+    if (ev.held) {
+        const double separation = (res.b.velocity - res.a.velocity).dot(res.normal);
+        const double hold = separation / (1.0 / in.a.mass + 1.0 / in.b.mass);
+        const Vec2 va = res.a.velocity + (hold / in.a.mass) * res.normal;
+        const Vec2 vb = res.b.velocity - (hold / in.b.mass) * res.normal;
+        Vec3 J = res.impulse;
+        J.head<2>() += hold * res.normal;
+        StepBuilder(e.steps, "Held in contact (a push)",
+                    "The law above leaves the balls parting slower than " + number(kHoldSpeed) +
+                        " m/s while the cloth's friction presses them together: they would only chatter, ever "
+                        "more weakly, into a lasting contact. The simulator drops that micro-bounce (a normal "
+                        "impulse takes the separation speed away, which only removes energy) and holds the pair: "
+                        "from here a contact force N ≥ 0 pushes along n, solved with the cloth's friction "
+                        "(Contact.h).",
+                    "ΔP = ((v′_b − v′_a)·n) / (1/m_a + 1/m_b),   v″_a = v′_a + ΔP/m_a n,   v″_b = v′_b − ΔP/m_b n")
+            .in("v_sep", "(v′_b − v′_a)·n", separation, "m/s")
+            .in("v_hold", "v_{hold}", kHoldSpeed, "m/s")
+            .out("hold", "ΔP", hold, "N s")
+            .out("v_a_after", "v″_a", va, "m/s")
+            .out("v_b_after", "v″_b", vb, "m/s")
+            .out("J", "J", J, "N s");
+        addGroupStep(e, ev);
+    }
     addStateAfterStep(e);
     addEnergyStep(e, "The collision turns some energy into sound and heat (restitution e < 1, friction).");
     addMomentumStep(e, "The impulses on the two balls are equal and opposite, so their horizontal momentum is "
@@ -117,7 +141,7 @@ void explainCushion(const SimulationResult& r, int index, Explanation& e)
         const CushionSegment& s = r.table.cushions.at(static_cast<std::size_t>(ev.cushion));
         const Vec2 along = s.b - s.a;
         const double lambda = (ev.before[0].position - s.a).dot(along) / along.squaredNorm();
-        const Path p = pathOf(seg.state, r.balls[static_cast<std::size_t>(ia)].radius, r.physics)
+        const Path p = pathOf(seg.state, r.balls[static_cast<std::size_t>(ia)].radius, r.physics, seg.push)
                            .shifted(ev.time - seg.start);
         StepBuilder(e.steps, "Segment check",
                     "The foot of the perpendicular from the centre to the nose line must lie between the "
@@ -161,19 +185,24 @@ void explainCushion(const SimulationResult& r, int index, Explanation& e)
             .out("w_after", "ω′", res.after.spin, "rad/s")
             .out("J", "J", res.impulse, "N s");
     for (Step& s : model) e.steps.push_back(std::move(s));
-    CushionResult floored = res;
-    const double extra = enforceSeparation(floored, in.normal, in.mass);
-    if (extra != 0.0)
-        StepBuilder(e.steps, "Separation floor",
-                    "The law above leaves the ball leaving the cushion slower than " + number(kMinSeparationSpeed) +
-                        " m/s; the simulator adds a normal impulse so that it parts at that speed.",
-                    "ΔP = m (v_{min} − v′·N)")
-            .in("v_sep", "v′·N", res.after.velocity.dot(in.normal), "m/s")
-            .in("v_min", "v_{min}", kMinSeparationSpeed, "m/s")
-            .out("floor", "ΔP", extra, "N s")
-            .out("v_after", "v′", floored.after.velocity, "m/s")
-            .out("w_after", "ω′", floored.after.spin, "rad/s")
-            .out("J", "J", floored.impulse, "N s");
+    if (ev.held) {
+        const double separation = res.after.velocity.dot(in.normal);
+        Vec3 J = res.impulse;
+        J.head<2>() -= (in.mass * separation) * in.normal;
+        StepBuilder(e.steps, "Held in contact (a push)",
+                    "The law above leaves the ball leaving the cushion slower than " + number(kHoldSpeed) +
+                        " m/s while the cloth's friction drives it back in: it would only chatter into a lasting "
+                        "contact. The simulator drops that micro-bounce (a normal impulse takes the separation "
+                        "speed away, which only removes energy) and holds the ball against the cushion: from "
+                        "here the cushion's force N ≥ 0 pushes along N (Contact.h).",
+                    "ΔP = m v′·N,   v″ = v′ − (v′·N) N")
+            .in("v_sep", "v′·N", separation, "m/s")
+            .in("v_hold", "v_{hold}", kHoldSpeed, "m/s")
+            .out("hold", "ΔP", in.mass * separation, "N s")
+            .out("v_after", "v″", Vec2(res.after.velocity - separation * in.normal), "m/s")
+            .out("J", "J", J, "N s");
+        addGroupStep(e, ev);
+    }
     addStateAfterStep(e);
     addEnergyStep(e, "The cushion absorbs part of the energy (restitution e < 1, friction at the contact).");
     addMomentumStep(e, "The cushion pushes the ball: the change of its momentum is the cushion's horizontal "

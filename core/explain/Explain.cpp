@@ -71,11 +71,27 @@ SegmentBefore segmentBefore(const SimulationResult& r, int ball, int index)
                                    [](const MotionSegment& s, double time) { return s.start < time; });
         k = it == timeline.begin() ? 0 : static_cast<std::size_t>(it - timeline.begin()) - 1;
     }
+    const double R = r.balls.at(static_cast<std::size_t>(ball)).radius;
+    // Held pushes (Contact.h) begin segments without events: then the segment is the last one that
+    // began at or before t whose closed form gives the event's before-state exactly.
+    const Event& ev = r.events.at(static_cast<std::size_t>(index));
+    const int slot = ev.balls[0] == ball ? 0 : ev.balls[1] == ball ? 1 : -1;
+    if (slot >= 0) {
+        const BallState& before = ev.before[static_cast<std::size_t>(slot)];
+        for (std::size_t q = timeline.size(); q-- > 0;) {
+            if (timeline[q].start > t) continue;
+            const BallState s = segmentState(timeline[q], R, r.physics, t - timeline[q].start);
+            if (s.position == before.position && s.velocity == before.velocity && s.spin == before.spin) {
+                k = q;
+                break;
+            }
+        }
+    }
     SegmentBefore s;
     s.start = timeline[k].start;
     s.state = timeline[k].state;
-    const double R = r.balls.at(static_cast<std::size_t>(ball)).radius;
-    const Transition tr = nextTransition(s.state, R, r.physics);
+    s.push = timeline[k].push;
+    const Transition tr = nextTransition(s.state, R, r.physics, s.push);
     s.end = tr.after == kNever ? kNever : s.start + tr.after;
     return s;
 }
@@ -139,8 +155,9 @@ void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball
                    const SegmentBefore& seg, double t)
 {
     const double R = r.balls.at(static_cast<std::size_t>(ball)).radius;
-    const Path path = pathOf(seg.state, R, r.physics);
-    const BallState at = evolve(seg.state, R, r.physics, t - seg.start);
+    const Path path = pathOf(seg.state, R, r.physics, seg.push);
+    const BallState at = evolve(seg.state, R, r.physics, t - seg.start, seg.push);
+    const bool pushed = !seg.push.isZero(0.0);
     const std::string key = letter.empty() ? std::string() : "_" + letter;
     // Symbols: r_0 or r_{0,a}; r or r_a.
     auto at0 = [&](const std::string& s) { return letter.empty() ? s + "_0" : s + "_{0," + letter + "}"; };
@@ -148,12 +165,22 @@ void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball
     std::string law = "Since t_{start} " + ballName(r, ball) + " has been " + std::string(toString(seg.state.motion)) +
                       ": in closed form its centre moves on a parabola with constant acceleration ";
     switch (seg.state.motion) {
-    case MotionState::Sliding: law += "−μ_s g û against the slip û of its cloth contact."; break;
-    case MotionState::Rolling: law += "−μ_r g v̂ (rolling resistance)."; break;
+    case MotionState::Sliding:
+        law += pushed ? "q − μ_s g û: it is held in a push, and the contact force N/m = q adds to the friction "
+                        "−μ_s g û against the slip û of its cloth contact."
+                      : "−μ_s g û against the slip û of its cloth contact.";
+        break;
+    case MotionState::Rolling:
+        law += pushed ? "(5/7) q − μ_r g v̂: it is held in a push, and static friction keeps it rolling under the "
+                        "contact force N/m = q (its effective mass is 7/5 m)."
+                      : "−μ_r g v̂ (rolling resistance).";
+        break;
     default: law += "zero (it does not move)."; break;
     }
-    StepBuilder(steps, "Motion of " + ballName(r, ball) + " up to the event", law,
-                "r(τ) = r_0 + v_0 τ + ½ a τ^2,   v(τ) = v_0 + a τ,   τ = t − t_{start}")
+    StepBuilder b(steps, "Motion of " + ballName(r, ball) + " up to the event", law,
+                  "r(τ) = r_0 + v_0 τ + ½ a τ^2,   v(τ) = v_0 + a τ,   τ = t − t_{start}");
+    if (pushed) b.in("q" + key, now("q"), seg.push, "m/s²");
+    b
         .in("t_start" + key, letter.empty() ? "t_{start}" : "t_{start," + letter + "}", seg.start, "s")
         .in("r0" + key, at0("r"), seg.state.position, "m")
         .in("v0" + key, at0("v"), seg.state.velocity, "m/s")

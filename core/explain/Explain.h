@@ -21,6 +21,7 @@ struct SegmentBefore {
     double start = 0.0;       // s
     BallState state;          // at start
     double end = 0.0;         // s, start + the closed-form duration of the state (inf if none)
+    Vec2 push = Vec2::Zero(); // m/s^2, the contact force over the mass in a held push (Contact.h)
 };
 SegmentBefore segmentBefore(const SimulationResult& result, int ball, int index);
 

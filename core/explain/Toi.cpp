@@ -36,7 +36,7 @@ Paths pathsFor(const SimulationResult& r, int index)
     p.horizon = end == kNever ? kNever : end - p.t0;
     for (int k = 0; k < n; ++k) {
         const double R = r.balls.at(static_cast<std::size_t>(ev.balls[static_cast<std::size_t>(k)])).radius;
-        (k == 0 ? p.a : p.b) = pathOf(seg[k].state, R, r.physics).shifted(p.t0 - seg[k].start);
+        (k == 0 ? p.a : p.b) = pathOf(seg[k].state, R, r.physics, seg[k].push).shifted(p.t0 - seg[k].start);
     }
     return p;
 }

@@ -13,10 +13,38 @@ void explainTransition(const SimulationResult& r, int index, Explanation& e)
     const Ball& ball = r.balls.at(static_cast<std::size_t>(i));
     const PhysicsParams& p = r.physics;
     const SegmentBefore seg = segmentBefore(r, i, index);
-    const Transition tr = nextTransition(seg.state, ball.radius, p);
+    const Transition tr = nextTransition(seg.state, ball.radius, p, seg.push);
     e.title = "Transition " + std::string(toString(ev.kind)) + " of " + ball.id;
     const double duration = tr.after;
-    switch (seg.state.motion) {
+    const bool pushed = !seg.push.isZero(0.0);
+    if (pushed && seg.state.motion == MotionState::Sliding) {
+        const Vec2 u0 = slipVelocity(seg.state, ball.radius);
+        StepBuilder(e.steps, "Why now: the pushed slide ends",
+                    "The ball is held in a push (Contact.h): besides the cloth's friction −μ_s g û a contact force "
+                    "q = N/m acts through its centre, so its slip changes at q − (7/2) μ_s g û and its component "
+                    "along û reaches zero after t_s.",
+                    "t_s = |u_0| / ((7/2) μ_s g − q·û)")
+            .in("t_start", "t_{start}", seg.start, "s")
+            .in("u0", "u_0", u0, "m/s")
+            .in("q", "q", seg.push, "m/s²")
+            .in("mu_s", "μ_s", p.muSlide)
+            .in("g", "g", p.gravity, "m/s²")
+            .out("duration", "t_s", duration, "s")
+            .out("t", "t = t_{start} + t_s", seg.start + duration, "s");
+    } else if (pushed && seg.state.motion == MotionState::Rolling) {
+        StepBuilder(e.steps, "Why now: the pushed ball stops rolling",
+                    "The ball is held in a push (Contact.h) and rolls under the contact force q = N/m with the "
+                    "effective mass 7/5 m: its speed changes at (5/7) q·v̂ − μ_r g and reaches zero after t_r.",
+                    "t_r = |v_0| / (μ_r g − (5/7) q·v̂)")
+            .in("t_start", "t_{start}", seg.start, "s")
+            .in("v0_norm", "|v_0|", seg.state.velocity.norm(), "m/s")
+            .in("q", "q", seg.push, "m/s²")
+            .in("mu_r", "μ_r", p.muRoll)
+            .in("g", "g", p.gravity, "m/s²")
+            .out("duration", "t_r", duration, "s")
+            .out("t", "t = t_{start} + t_r", seg.start + duration, "s");
+    }
+    switch (pushed ? MotionState::Pocketed : seg.state.motion) {
     case MotionState::Sliding: {
         const Vec2 u0 = slipVelocity(seg.state, ball.radius);
         StepBuilder(e.steps, "Why now: the end of the slide",
@@ -70,7 +98,7 @@ void explainTransition(const SimulationResult& r, int index, Explanation& e)
     default: break;
     }
     // The transition's state as Motion.h computes it (the simulator's after-state of the event).
-    const BallState last = applyTransition(seg.state, ball.radius, p);
+    const BallState last = applyTransition(seg.state, ball.radius, p, seg.push);
     StepBuilder(e.steps, "State at the transition",
                 "The closed-form motion evolved to the transition, its numbers made exact (a rolling ball's spin "
                 "follows its velocity; a stopped ball has v = 0). The ball is now " +
@@ -80,6 +108,15 @@ void explainTransition(const SimulationResult& r, int index, Explanation& e)
         .out("r_after", "r′", last.position, "m")
         .out("v_after", "v′", last.velocity, "m/s")
         .out("w_after", "ω′", last.spin, "rad/s");
+    if (pushed) {
+        // The group is solved again at the transition (Contact.h): the simulator goes on from these.
+        StepBuilder(e.steps, "The held group is solved again",
+                    "A ball of a held push changed its motion, so the contact forces of its group are solved "
+                    "again (and what relative normal speed the contacts have left is taken away).",
+                    "v″, ω″ after the group's contacts are seated")
+            .out("v_after", "v″", ev.after[0].velocity, "m/s")
+            .out("w_after", "ω″", ev.after[0].spin, "rad/s");
+    }
     const double e0 = kineticEnergy(seg.state, ball.radius, ball.mass);
     addEnergyStep(e, "Energy is continuous at a transition; since t_{start} friction has taken " +
                          number(e0 - kineticEnergy(ev.before[0], ball.radius, ball.mass)) + " J.");

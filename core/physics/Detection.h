@@ -22,13 +22,7 @@ inline constexpr double kContactTolerance = 1e-10;
 // approaching nor parting); the contact begins now if the accelerations press the bodies together.
 inline constexpr double kRestingSpeed = 1e-9;
 
-// m/s: the least normal speed at which two bodies leave a collision. Restitution models break down
-// for micro-impacts, and without a floor a ball that keeps pushing another (a sliding cue ball
-// following through into a frozen ball, a ball driven into a rail by its spin) turns a sustained
-// contact into an unbounded cascade of ever smaller collisions. With the floor such a push costs one
-// event per ~2 kMinSeparationSpeed / (relative deceleration), about 1 ms at 1 m/s^2, and adds at most
-// 1/2 m_eff kMinSeparationSpeed^2 (about 4e-8 J for pool balls) per event, far below anything visible.
-inline constexpr double kMinSeparationSpeed = 1e-3;
+// (There is no separation floor: a push is a held contact, Contact.h.)
 
 // The gap functions whose roots are the contacts, as polynomials in s (Quartic order, highest degree
 // first). The detection functions below find their roots; core/explain shows them (one code path).

@@ -46,6 +46,12 @@ struct Event {
     Vec2 normal = Vec2::Zero();        // unit contact normal, from balls[0] towards the other body
     double approachSpeed = 0.0;        // m/s, normal relative speed just before (> 0 when approaching)
     Vec3 impulse = Vec3::Zero();       // N s, impulse on balls[0] (x, y, z in the table frame)
+    // Sustained contact (Contact.h): the law's bodies would part slower than kHoldSpeed while the
+    // cloth's friction presses them together, so the collision ends with no normal separation and the
+    // pair is held in contact (a push) from here on. `holdImpulse` (N s, >= 0) is the normal impulse
+    // that took the law's small separation speed away; it is included in `impulse`.
+    bool held = false;
+    double holdImpulse = 0.0;
 };
 
 }  // namespace cuelab

@@ -177,6 +177,130 @@ BallState applyTransition(const BallState& s, double radius, const PhysicsParams
     return out;
 }
 
+namespace {
+
+// The forced state's direction of friction: the slip's (sliding) or the velocity's (rolling; the
+// push's own from rest). Zero when there is none.
+Vec2 forcedDirection(const BallState& s, double radius, const Vec2& push)
+{
+    if (s.motion == MotionState::Sliding) {
+        const Vec2 u = slipVelocity(s, radius);
+        const double n = u.norm();
+        return n > 0.0 ? Vec2(u / n) : Vec2(Vec2::Zero());
+    }
+    const double v = s.velocity.norm();
+    if (v > kSpeedEpsilon) return s.velocity / v;  // (slower: rolling off from rest, along the push)
+    const double q = push.norm();
+    return q > 0.0 ? Vec2(push / q) : Vec2(Vec2::Zero());
+}
+
+bool isFree(const Vec2& push)
+{
+    return push.x() == 0.0 && push.y() == 0.0;
+}
+
+// The acceleration of the centre in the pushed state.
+Vec2 forcedAcceleration(const BallState& s, double radius, const PhysicsParams& p, const Vec2& push)
+{
+    const Vec2 d = forcedDirection(s, radius, push);
+    if (s.motion == MotionState::Sliding) return push - (p.muSlide * p.gravity) * d;
+    if (s.motion == MotionState::Rolling) return (5.0 / 7.0) * push - (p.muRoll * p.gravity) * d;
+    return Vec2::Zero();
+}
+
+}  // namespace
+
+Path pathOf(const BallState& s, double radius, const PhysicsParams& p, const Vec2& push)
+{
+    if (isFree(push)) return pathOf(s, radius, p);
+    Path path;
+    path.c0 = s.position;
+    if (s.motion == MotionState::Sliding || s.motion == MotionState::Rolling) {
+        path.c1 = s.velocity;
+        path.c2 = 0.5 * forcedAcceleration(s, radius, p, push);
+    }
+    return path;
+}
+
+Transition nextTransition(const BallState& s, double radius, const PhysicsParams& p, const Vec2& push)
+{
+    if (isFree(push)) return nextTransition(s, radius, p);
+    const Vec2 d = forcedDirection(s, radius, push);
+    Transition t;
+    if (s.motion == MotionState::Sliding) {
+        // e.u(t) = |u0| + (push.e - 7/2 mu_s g) t.
+        const double rate = 3.5 * p.muSlide * p.gravity - push.dot(d);
+        if (rate > 0.0) t.after = slipVelocity(s, radius).norm() / rate;
+        t.kind = EventKind::SlideToRoll;
+    } else if (s.motion == MotionState::Rolling) {
+        // d.v(t) = |v0| + (5/7 push.d - mu_r g) t.
+        const double rate = p.muRoll * p.gravity - (5.0 / 7.0) * push.dot(d);
+        if (rate > 0.0) t.after = s.velocity.norm() / rate;
+        t.kind = EventKind::RollToStop;
+    }
+    if (t.after != kNever) {
+        const double alpha = spinDeceleration(p, radius);
+        const bool spins = decayedSpin(s.spin.z(), alpha, t.after) != 0.0;
+        if (t.kind == EventKind::RollToStop && spins) t.kind = EventKind::RollToSpin;
+    }
+    return t;
+}
+
+BallState evolve(const BallState& s, double radius, const PhysicsParams& p, double dt, const Vec2& push)
+{
+    if (isFree(push)) return evolve(s, radius, p, dt);
+    BallState out = s;
+    if (dt <= 0.0) return out;
+    const double tau = std::min(dt, nextTransition(s, radius, p, push).after);
+    const double alpha = spinDeceleration(p, radius);
+    const Vec2 d = forcedDirection(s, radius, push);
+    const Vec2 a = forcedAcceleration(s, radius, p, push);
+    if (s.motion == MotionState::Sliding) {
+        out.position = s.position + tau * s.velocity + (0.5 * tau * tau) * a;
+        out.velocity = s.velocity + tau * a;
+        const double k = 2.5 * p.muSlide * p.gravity / radius * tau;  // the friction torque over I
+        out.spin.x() = s.spin.x() - k * d.y();
+        out.spin.y() = s.spin.y() + k * d.x();
+    } else if (s.motion == MotionState::Rolling) {
+        out.position = s.position + tau * s.velocity + (0.5 * tau * tau) * a;
+        out.velocity = s.velocity + tau * a;
+        out.spin.x() = -out.velocity.y() / radius;  // rolling: u = 0
+        out.spin.y() = out.velocity.x() / radius;
+    }
+    out.spin.z() = decayedSpin(s.spin.z(), alpha, tau);
+    return out;
+}
+
+BallState applyTransition(const BallState& s, double radius, const PhysicsParams& p, const Vec2& push)
+{
+    if (isFree(push)) return applyTransition(s, radius, p);
+    const Transition t = nextTransition(s, radius, p, push);
+    if (t.after == kNever) return s;
+    BallState out = evolve(s, radius, p, t.after, push);
+    // What is left of the slip (sliding) or the velocity (rolling) across the frozen direction: zero
+    // in a push along the line of centres (then made exact), small otherwise (the state goes on).
+    const double scale = s.velocity.norm() + radius * s.spin.head<2>().norm() + push.norm() * t.after;
+    if (s.motion == MotionState::Sliding) {
+        if (slipVelocity(out, radius).norm() <= 1e-9 * scale) {
+            out.spin.x() = -out.velocity.y() / radius;
+            out.spin.y() = out.velocity.x() / radius;
+        }
+    } else if (s.motion == MotionState::Rolling) {
+        if (out.velocity.norm() <= 1e-9 * scale) {
+            out.velocity.setZero();
+            out.spin.x() = 0.0;
+            out.spin.y() = 0.0;
+        }
+    }
+    if (out.velocity.norm() <= 1e-12 * scale && slipVelocity(out, radius).norm() <= 1e-9 * scale) {
+        out.velocity.setZero();
+        out.spin.x() = 0.0;
+        out.spin.y() = 0.0;
+    }
+    out.motion = classify(out, radius);
+    return out;
+}
+
 double translationalEnergy(const BallState& s, double mass)
 {
     if (s.motion == MotionState::Pocketed) return 0.0;

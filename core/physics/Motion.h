@@ -55,6 +55,28 @@ BallState evolve(const BallState& s, double radius, const PhysicsParams& p, doub
 // horizontal w = 0; a stopped spin is 0) and label the result with classify().
 BallState applyTransition(const BallState& s, double radius, const PhysicsParams& p);
 
+// Pushed motion (PHYSICS.md, "Sustained contact"; Contact.h): the ball carries, besides the cloth's
+// friction, a constant horizontal contact force through its centre, `push` = force / mass (m/s^2).
+// Its motion label is taken from s.motion (set by the simulator; a ball pushed from rest is
+// labelled Rolling), not from the numbers:
+//   Sliding  the cloth's friction keeps the direction e of the slip at the segment's start:
+//            a = push - mu_s g e, the spin changes as in a free slide, and the slip
+//            u(t) = u0 + (push - 7/2 mu_s g e) t; the state lasts until e.u = 0.
+//   Rolling  static friction keeps u = 0 (valid while |push| <= 7/2 mu_s g): a = 5/7 push - mu_r g d,
+//            d the direction of the velocity at the segment's start (of push from rest); the state
+//            lasts until d.v = 0.
+// When push is parallel to e (or d), as in every head-on push and line of balls, that is the exact
+// closed form; otherwise e and d turn during the segment and the simulator keeps segments short
+// (Contact.h: kMaxTurn). A zero push gives exactly the free functions above.
+Path pathOf(const BallState& s, double radius, const PhysicsParams& p, const Vec2& push);
+// The duration of the pushed state (kNever if it does not end by itself); `kind` is the free
+// transition's kind that its end would be if the state ends at rest or rolling.
+Transition nextTransition(const BallState& s, double radius, const PhysicsParams& p, const Vec2& push);
+BallState evolve(const BallState& s, double radius, const PhysicsParams& p, double dt, const Vec2& push);
+// The state at the end of the pushed state, made exact as applyTransition does when the numbers say
+// it ended (slip or velocity zero up to rounding) and labelled with classify().
+BallState applyTransition(const BallState& s, double radius, const PhysicsParams& p, const Vec2& push);
+
 // Translational plus rotational kinetic energy (J). A pocketed ball has none.
 double kineticEnergy(const BallState& s, double radius, double mass);
 // Its two parts, 1/2 m |v|^2 and 1/2 I |w|^2 (J); kineticEnergy() is their sum.

@@ -30,7 +30,15 @@ struct SimulationOptions {
 struct MotionSegment {
     double start = 0.0;  // s
     BallState state;     // the state at `start`, just after whatever event began the segment
+    // m/s^2: the contact force through the ball's centre per unit mass while the ball is held in a
+    // push (Contact.h), constant over the segment; zero for free motion. Motion.h's forced
+    // functions evolve such a segment (segmentState below does the right thing for both).
+    Vec2 push = Vec2::Zero();
 };
+
+// The state of a segment's ball `dt` seconds after the segment's start, free or pushed, without
+// leaving the segment's motion state (Motion.h: evolve).
+BallState segmentState(const MotionSegment& seg, double radius, const PhysicsParams& p, double dt);
 
 class SimulationResult {
 public:
@@ -63,10 +71,13 @@ public:
 // pair only while it approaches.
 //
 // Contacts (Detection.h): touching bodies (within kContactTolerance) collide at once when they
-// approach, or when they rest against each other while their accelerations press them together;
-// every collision leaves them parting at kMinSeparationSpeed at least (1 mm/s), which bounds the
-// events of a sustained push (a sliding cue ball following through into a ball) and adds at most
-// about 4e-8 J per such collision. Between events and at every other event the energy never rises.
+// approach, or when they rest against each other while their accelerations press them together.
+// Sustained contact (Contact.h): a collision whose law leaves a pressed pair parting slower than
+// kHoldSpeed (1 cm/s) holds the pair instead, and held bodies move together under contact forces
+// solved with the cloth's friction (exact closed form along a line of centres, short frozen segments
+// off it), so a push, a cradle or a follow-through into frozen balls costs a few events. A held ball's
+// segments carry its push (MotionSegment::push) and may begin without an event (the group solved
+// again). The energy never rises, at events or between them.
 SimulationResult simulate(const Setup& setup, const SimulationOptions& options = {});
 
 }  // namespace cuelab

@@ -65,6 +65,7 @@ BallState stateJustBefore(const SimulationResult& result, int index, double t)
     auto it = std::lower_bound(timeline.begin(), timeline.end(), t,
                                [](const MotionSegment& s, double time) { return s.start < time; });
     if (it != timeline.begin()) --it;
+    if (!it->push.isZero(0.0)) return segmentState(*it, R, result.physics, t - it->start);  // a held push
     BallState s = it->state;
     double start = it->start;
     for (;;) {

@@ -100,9 +100,9 @@ void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out
             if (seg.state.motion == MotionState::Pocketed) break;
             const double end = k + 1 < timeline.size() ? timeline[k + 1].start : result.endTime;
             if (end <= seg.start) continue;
-            if (seg.state.velocity.squaredNorm() < 1e-20) continue;  // no travel (resting or spinning)
+            if (seg.state.velocity.squaredNorm() < 1e-20 && seg.push.isZero(0.0)) continue;  // no travel (resting or spinning)
             // Rolling and uniform motion go straight; sliding curves (a parabola), so sample it.
-            const bool straight = seg.state.motion == MotionState::Rolling;
+            const bool straight = seg.state.motion == MotionState::Rolling && seg.push.isZero(0.0);
             const int steps = straight ? 1 : std::clamp(static_cast<int>(std::ceil((end - seg.start) / kPathSampleStep)), 1, 2000);
             Vec2 previous = seg.state.position;
             double previousTime = seg.start;
