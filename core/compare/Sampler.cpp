@@ -1,5 +1,7 @@
 #include "EngineParts.h"
 
+#include "BallContact.h"
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -47,7 +49,7 @@ double worstOverlap(const std::vector<BallSample>& balls, const std::vector<doub
         if (balls[i].pocketed) continue;
         for (std::size_t j = i + 1; j < balls.size(); ++j) {
             if (balls[j].pocketed) continue;
-            const double reach = radii[i] + radii[j];
+            const double reach = touchDistance(radii[i], radii[j]);  // 2 sqrt(Ri Rj): the centres sit at Ri and Rj
             const Vec2 d = balls[j].position - balls[i].position;
             if (std::abs(d.x()) >= reach || std::abs(d.y()) >= reach) continue;
             worst = std::max(worst, reach - d.norm());

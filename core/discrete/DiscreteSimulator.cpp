@@ -1,5 +1,7 @@
 #include "DiscreteSimulator.h"
 
+#include "BallContact.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -130,7 +132,7 @@ DiscreteResult simulateDiscrete(const Setup& setup, const DiscreteSettings& sett
                     if (balls[k].pocketed) continue;
                     double overlap = 0.0;
                     const double t = subStepSphereTime(p, v, balls[k].position, balls[k].velocity,
-                                                       radius[i] + radius[k], remaining, settings.subSteps,
+                                                       touchDistance(radius[i], radius[k]), remaining, settings.subSteps,
                                                        &overlap);
                     if (t < first.time) first = {t, DiscreteEventKind::BallBall, int(i), int(k), false, overlap};
                 }

@@ -59,7 +59,13 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
     if (r.physics.ballBallModel == BallBallModel::Frictional)
         e.model += r.physics.ballBallFrictionKind == BallBallFriction::Alciatore ? " (μ: Alciatore's fit)" : " (μ fixed)";
     e.toi = timeOfImpact(r, index);
-    addToiStep(e, "The balls touch when their centres are R_a + R_b apart (a = " + na + ", b = " + nb +
+    const double Ra = r.balls[static_cast<std::size_t>(ia)].radius, Rb = r.balls[static_cast<std::size_t>(ib)].radius;
+    const bool level = Ra == Rb;
+    addToiStep(e, std::string(level ? "The balls touch when their centres are R_a + R_b apart"
+                                    : "The balls rest on the cloth with their centres at the heights R_a and R_b, "
+                                      "so they touch when their centres are d = √((R_a + R_b)^2 − (R_a − R_b)^2) = "
+                                      "2 √(R_a R_b) apart horizontally") +
+                      " (a = " + na + ", b = " + nb +
                       "). Both move on quadratic paths since t_0, so the squared distance is a quartic in τ.");
     addMotionStep(e.steps, r, ia, "a", segmentBefore(r, ia, index), ev.time);
     addMotionStep(e.steps, r, ib, "b", segmentBefore(r, ib, index), ev.time);
@@ -73,16 +79,35 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
     std::vector<Step> model;
     const BallBallExplainer explainer = ballBallExplainer(r.physics.ballBallModel);
     const BallBallResult res = explainer ? explainer(in, model) : resolveBallBall(in.a, in.b, in.params);
-    StepBuilder(e.steps, "Contact geometry",
-                "The normal n points from the centre of a to the centre of b; the contact point lies R_a along "
-                "it. The balls approach when their relative velocity along n is positive.",
-                "n = (r_b − r_a)/|r_b − r_a|,   r_c = r_a + R_a n,   v_n = (v_a − v_b)·n")
-        .in("r_a", "r_a", ev.before[0].position, "m")
-        .in("r_b", "r_b", ev.before[1].position, "m")
-        .in("R_a", "R_a", in.a.radius, "m")
-        .out("n", "n", res.normal, "")
-        .out("r_c", "r_c", res.contactPoint, "m")
-        .out("v_n", "v_n", res.approachSpeed, "m/s");
+    if (level)
+        StepBuilder(e.steps, "Contact geometry",
+                    "The normal n points from the centre of a to the centre of b; the contact point lies R_a along "
+                    "it. The balls approach when their relative velocity along n is positive.",
+                    "n = (r_b − r_a)/|r_b − r_a|,   r_c = r_a + R_a n,   v_n = (v_a − v_b)·n")
+            .in("r_a", "r_a", ev.before[0].position, "m")
+            .in("r_b", "r_b", ev.before[1].position, "m")
+            .in("R_a", "R_a", in.a.radius, "m")
+            .out("n", "n", res.normal, "")
+            .out("r_c", "r_c", res.contactPoint, "m")
+            .out("v_n", "v_n", res.approachSpeed, "m/s");
+    else
+        StepBuilder(e.steps, "Contact geometry (unequal radii)",
+                    "The centres sit at the heights R_a and R_b, so the contact normal n₃ from the centre of a to "
+                    "the centre of b leaves the cloth plane: its level part is c û, with û the horizontal "
+                    "direction from a to b. The contact point lies R_a along n₃ (r_c is its place on the cloth "
+                    "plane). The balls approach when their relative velocity along n₃ is positive; it has no "
+                    "vertical part, since both balls stay on the cloth.",
+                    "û = (r_b − r_a)/|r_b − r_a|,   c = 2 √(R_a R_b)/(R_a + R_b),   n₃ = (c û, (R_b − R_a)/(R_a + R_b)),"
+                    "   r_c = r_a + R_a c û,   v_n = (v_a − v_b)·n₃ = c (v_a − v_b)·û")
+            .in("r_a", "r_a", ev.before[0].position, "m")
+            .in("r_b", "r_b", ev.before[1].position, "m")
+            .in("R_a", "R_a", in.a.radius, "m")
+            .in("R_b", "R_b", in.b.radius, "m")
+            .out("n", "û", res.normal, "")
+            .out("c", "c", touchDistance(Ra, Rb) / (Ra + Rb))
+            .out("n3", "n₃", res.normal3, "")
+            .out("r_c", "r_c", res.contactPoint, "m")
+            .out("v_n", "v_n", res.approachSpeed, "m/s");
     if (!explainer)
         StepBuilder(e.steps, "Collision law (" + e.model + ")", "No step-by-step explanation of this model yet.",
                     "(v′, ω′) = resolve(v, ω)")

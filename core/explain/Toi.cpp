@@ -62,7 +62,9 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
         const double Rb = r.balls.at(static_cast<std::size_t>(ev.balls[1])).radius;
         q = ballBallGap(p.a, Ra, p.b, Rb);
         chosen = ballBallTime(p.a, Ra, p.b, Rb, horizon);
-        toi.gap = "f(τ) = |r_b(t_0+τ) − r_a(t_0+τ)|^2 − (R_a + R_b)^2";
+        // Equal radii keep their formula; unequal ones touch at d = 2 sqrt(R_a R_b) (touchDistance).
+        toi.gap = Ra == Rb ? "f(τ) = |r_b(t_0+τ) − r_a(t_0+τ)|^2 − (R_a + R_b)^2"
+                           : "f(τ) = |r_b(t_0+τ) − r_a(t_0+τ)|^2 − d^2,   d = 2 √(R_a R_b)";
         break;
     }
     case EventKind::BallCushion: {

@@ -1,5 +1,7 @@
 #include "BroadPhase.h"
 
+#include "BallContact.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -35,7 +37,7 @@ Box boxOf(const Path& path, double duration)
 
 bool boxesMeet(const Box& a, double ra, const Box& b, double rb)
 {
-    const double reach = ra + rb + 1e-9;
+    const double reach = touchDistance(ra, rb) + 1e-9;
     return a.lo.x() - reach <= b.hi.x() && b.lo.x() - reach <= a.hi.x() && a.lo.y() - reach <= b.hi.y()
            && b.lo.y() - reach <= a.hi.y();
 }

@@ -21,7 +21,8 @@ struct Box {
 // parabola); a moving path with an infinite duration has an infinite box.
 Box boxOf(const Path& path, double duration);
 
-// Whether a body of radius ra in box a may touch one of radius rb in box b (1e-9 m of slack).
+// Whether a ball of radius ra in box a may touch one of radius rb in box b: their centres come within
+// touchDistance(ra, rb) (Detection.h), with 1e-9 m of slack.
 bool boxesMeet(const Box& a, double ra, const Box& b, double rb);
 // Whether a centre in the box may come within `reach` of the point c, or of the segment s.
 bool boxNearCircle(const Box& a, double reach, const Vec2& c);

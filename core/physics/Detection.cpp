@@ -49,7 +49,7 @@ double circleContactTime(const Vec2& d0, const Vec2& d1, const Vec2& d2, double 
 
 Quartic ballBallGap(const Path& a, double ra, const Path& b, double rb)
 {
-    return distanceQuartic(b.c0 - a.c0, b.c1 - a.c1, b.c2 - a.c2, ra + rb);
+    return distanceQuartic(b.c0 - a.c0, b.c1 - a.c1, b.c2 - a.c2, touchDistance(ra, rb));
 }
 
 Quartic jawGap(const Path& p, double radius, const JawTip& jaw)
@@ -76,7 +76,7 @@ bool onCushionSegment(const Path& p, const CushionSegment& seg, double s)
 
 double ballBallTime(const Path& a, double ra, const Path& b, double rb, double horizon)
 {
-    return circleContactTime(b.c0 - a.c0, b.c1 - a.c1, b.c2 - a.c2, ra + rb, horizon);
+    return circleContactTime(b.c0 - a.c0, b.c1 - a.c1, b.c2 - a.c2, touchDistance(ra, rb), horizon);
 }
 
 double jawTime(const Path& p, double radius, const JawTip& jaw, double horizon)

@@ -9,6 +9,7 @@
 // through zero, so a collision is never found twice at the same instant unless the bodies approach
 // again.
 
+#include "BallContact.h"
 #include "Motion.h"
 #include "Quartic.h"
 #include "Table.h"
@@ -26,7 +27,7 @@ inline constexpr double kRestingSpeed = 1e-9;
 
 // The gap functions whose roots are the contacts, as polynomials in s (Quartic order, highest degree
 // first). The detection functions below find their roots; core/explain shows them (one code path).
-//   two balls:  |pb(s) - pa(s)|^2 - (Ra + Rb)^2
+//   two balls:  |pb(s) - pa(s)|^2 - d^2,  d = touchDistance(Ra, Rb) = 2 sqrt(Ra Rb) (Ra + Rb if equal)
 //   a cushion:  (p(s) - seg.a) . N - R          (degree 2: the first two coefficients are 0)
 //   a jaw:      |p(s) - c|^2 - (R + rj)^2
 //   a pocket:   |p(s) - c|^2 - rp^2
@@ -38,7 +39,7 @@ Quartic pocketGap(const Path& p, const Pocket& pocket);
 // Whether the foot of the perpendicular from p(s) to the cushion line lies within the segment [a, b].
 bool onCushionSegment(const Path& p, const CushionSegment& seg, double s);
 
-// Two balls: |d(s)|^2 = (Ra + Rb)^2 with d = pb - pa quadratic in s gives a quartic.
+// Two balls: |pb(s) - pa(s)|^2 = touchDistance(Ra, Rb)^2, with pb - pa quadratic in s: a quartic.
 double ballBallTime(const Path& a, double ra, const Path& b, double rb, double horizon);
 
 // A ball and a straight cushion nose: (p(s) - seg.a) . N = R, a quadratic, and the foot of the

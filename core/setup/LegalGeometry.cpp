@@ -1,5 +1,7 @@
 #include "LegalGeometry.h"
 
+#include "BallContact.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -99,7 +101,9 @@ std::optional<SetupProblem> tableProblem(const Table& table, const Ball& ball, i
 
 std::optional<SetupProblem> overlapProblem(const Ball& ball, int index, const Ball& other)
 {
-    const double overlap = ball.radius + other.radius - (ball.state.position - other.state.position).norm();
+    // Balls of unequal radius touch at the horizontal distance touchDistance (their centres are at
+    // different heights).
+    const double overlap = touchDistance(ball.radius, other.radius) - (ball.state.position - other.state.position).norm();
     if (!(overlap > kOverlapTolerance)) return std::nullopt;
     return SetupProblem{ballPath(index, "position"), ball.id, index,
                         "ball " + quoted(ball.id) + " overlaps ball " + quoted(other.id) + " by " +

@@ -1,5 +1,6 @@
 #include "LegalPlacement.h"
 
+#include "BallContact.h"
 #include "LegalGeometry.h"
 #include "LegalSetup.h"
 
@@ -49,7 +50,7 @@ Boundaries boundariesOf(const Table& table, const std::vector<Ball>& others, dou
     for (const Pocket& pocket : table.pockets) b.circles.push_back({pocket.centre, pocket.radius + gap});
     for (std::size_t j = 0; j < others.size(); ++j) {
         if (static_cast<int>(j) == skip) continue;
-        b.circles.push_back({others[j].state.position, r + others[j].radius + gap});
+        b.circles.push_back({others[j].state.position, touchDistance(r, others[j].radius) + gap});
     }
     return b;
 }
@@ -119,7 +120,10 @@ double smallestMargin(const Table& table, const std::vector<Ball>& others, doubl
     double margin = std::min({m.surface, m.pocket, m.contact});
     for (std::size_t j = 0; j < others.size(); ++j) {
         if (static_cast<int>(j) == skip) continue;
-        margin = std::min(margin, (p - others[j].state.position).norm() - r - others[j].radius);
+        const double dist = (p - others[j].state.position).norm();
+        // Equal radii keep the subtraction order of before unequal radii were handled.
+        margin = std::min(margin, r == others[j].radius ? dist - r - others[j].radius
+                                                        : dist - touchDistance(r, others[j].radius));
     }
     return margin;
 }
@@ -133,7 +137,7 @@ bool isLegalSpot(const Table& table, const std::vector<Ball>& others, double rad
     if (m.surface < 0.0 || m.pocket < 0.0 || -m.contact > kOverlapTolerance) return false;
     for (std::size_t j = 0; j < others.size(); ++j) {
         if (static_cast<int>(j) == skip) continue;
-        const double overlap = radius + others[j].radius - (p - others[j].state.position).norm();
+        const double overlap = touchDistance(radius, others[j].radius) - (p - others[j].state.position).norm();
         if (overlap > kOverlapTolerance) return false;
     }
     return true;

@@ -2,6 +2,7 @@
 // Shared checks of whole simulation results for the core test suites: overlaps, balls on the
 // table, energy, and the agreement of timelines with the event log.
 
+#include "BallContact.h"
 #include "Motion.h"
 #include "Simulation.h"
 
@@ -25,7 +26,7 @@ inline Ball ballAt(const Table& table, const std::string& id, const Vec2& positi
     return b;
 }
 
-// The largest overlap (m) between two balls or a ball and a cushion nose or jaw in the states s;
+// The largest overlap (m), horizontally, between two balls (touching at touchDistance) or a ball and a cushion nose or jaw in the states s;
 // <= 0 when nothing overlaps.
 inline double maxOverlap(const SimulationResult& r, const std::vector<BallState>& s)
 {
@@ -38,7 +39,7 @@ inline double maxOverlap(const SimulationResult& r, const std::vector<BallState>
         const double x = s[i].position.x(), y = s[i].position.y();
         for (std::size_t j = i + 1; j < s.size(); ++j) {
             if (s[j].motion == MotionState::Pocketed) continue;
-            const double reach = R + r.balls[j].radius;
+            const double reach = touchDistance(R, r.balls[j].radius);  // 2 sqrt(Ri Rj): centres at Ri, Rj
             const double dx = s[j].position.x() - x, dy = s[j].position.y() - y;
             if (dx * dx + dy * dy < reach * reach) worst = std::max(worst, reach - std::sqrt(dx * dx + dy * dy));
         }

@@ -1,5 +1,6 @@
 #include "ExplainChecks.h"
 
+#include "BallContact.h"
 #include "Motion.h"
 
 #include <cmath>
@@ -102,7 +103,7 @@ std::vector<std::string> checkExplanation(const SimulationResult& r, const expla
             switch (ev.kind) {
             case EventKind::BallBall: {
                 const BallState b = r.stateAt(ev.balls[1], t);
-                const double reach = R0 + r.balls[static_cast<std::size_t>(ev.balls[1])].radius;
+                const double reach = touchDistance(R0, r.balls[static_cast<std::size_t>(ev.balls[1])].radius);
                 gap = (b.position - a.position).squaredNorm() - reach * reach;
                 scale = (b.position - a.position).squaredNorm() + reach * reach;
                 break;

@@ -50,6 +50,7 @@ private slots:
     void offTheTableComesBack_data();
     void offTheTableComesBack();
     void noRoomGivesNothing();
+    void unequalRadiiTouchCloser();
 };
 
 void TestLegalPlacement::legalSpotStays()
@@ -156,6 +157,29 @@ void TestLegalPlacement::noRoomGivesNothing()
     s.balls.front().radius = 0.7;
     QVERIFY(!nearestLegalSpot(s, 0, Vec2(0.5, 0.5)));
     QVERIFY(!nearestLegalSpot(s, 99, Vec2(0.5, 0.5)));
+}
+
+void TestLegalPlacement::unequalRadiiTouchCloser()
+{
+    // A 2 3/8 in cue ball dropped on a 2 1/4 in ball lands the gap beyond their touching distance
+    // 2 sqrt(R1 R2), and a spot just outside that distance is legal.
+    Setup s;
+    const double R1 = 0.028575, R2 = 0.0301625, d = 2.0 * std::sqrt(R1 * R2);
+    Ball cue, one;
+    cue.id = "cue";
+    cue.radius = R2;
+    cue.state.position = Vec2(0.6, 0.6);
+    one.id = "1";
+    one.state.position = Vec2(1.2, 0.6);
+    s.balls = {cue, one};
+    const Table table = makeTable(s.table);
+    QVERIFY(isLegalSpot(table, {one}, R2, Vec2(1.2 - d, 0.6), -1));
+    QVERIFY(!isLegalSpot(table, {one}, R2, Vec2(1.2 - d + 1e-6, 0.6), -1));
+    const std::optional<Vec2> p = nearestLegalSpot(s, 0, Vec2(1.19, 0.6));
+    QVERIFY(p);
+    const double gap = (*p - one.state.position).norm() - d;
+    QVERIFY(gap >= kPlacementGap - 1e-12);
+    QVERIFY(gap < 2.0 * kPlacementGap);
 }
 
 QTEST_GUILESS_MAIN(TestLegalPlacement)

@@ -50,6 +50,7 @@ private slots:
     void brokenTableSkipsTheGeometry();
     void alciatoreFrictionNeedsNoNumber();
     void overlapWithinTolerance();
+    void unequalRadiiTouchCloser();
     void oneBallsProblems();
     void lengthsAndNumbersForMessages();
 };
@@ -239,6 +240,23 @@ void TestLegalSetup::overlapWithinTolerance()
     QVERIFY(validateSetup(s).empty());
     ball(s, 1).state.position = Vec2(0.6 + 2 * 0.028575 - 1.1e-9, 0.6);
     QCOMPARE(validateSetup(s).size(), std::size_t{1});
+}
+
+void TestLegalSetup::unequalRadiiTouchCloser()
+{
+    // A 2 3/8 in bar-box cue ball frozen to a 2 1/4 in ball: their centres sit at different heights,
+    // so they touch at the horizontal distance 2 sqrt(R1 R2) (21.5 um less than R1 + R2), which is legal.
+    Setup s = base();
+    const double R1 = 0.028575, R2 = 0.0301625, d = 2.0 * std::sqrt(R1 * R2);
+    ball(s, 0).radius = R2;
+    ball(s, 1).state.position = Vec2(0.6 + d - 0.9e-9, 0.6);
+    QVERIFY(validateSetup(s).empty());
+    QVERIFY(validateBall(s, 1).empty());
+    ball(s, 1).state.position = Vec2(0.6 + d - 1.1e-9, 0.6);
+    QCOMPARE(validateSetup(s).size(), std::size_t{1});
+    QCOMPARE(validateBall(s, 1).size(), std::size_t{1});
+    ball(s, 1).state.position = Vec2(0.6 + R1 + R2 - 10e-6, 0.6);  // inside R1 + R2, outside d
+    QVERIFY(validateSetup(s).empty());
 }
 
 void TestLegalSetup::oneBallsProblems()

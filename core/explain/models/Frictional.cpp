@@ -9,20 +9,40 @@ BallBallResult explainFrictional(const BallBallInput& in, std::vector<Step>& ste
     BallBallTrace tr;
     const BallBallResult r = resolveBallBall(in.a, in.b, in.params, &tr);
     const bool fit = in.params.ballBallFrictionKind == BallBallFriction::Alciatore;
-    StepBuilder(steps, "Normal impulse (with restitution)",
-                "Along the line of centres the balls part at e times their approach speed.",
-                "P_n = (1 + e) v_n / (1/m_a + 1/m_b)")
-        .in("e", "e", in.params.ballBallRestitution)
-        .in("v_n", "v_n", r.approachSpeed, "m/s")
-        .in("m_a", "m_a", in.a.mass, "kg")
-        .in("m_b", "m_b", in.b.mass, "kg")
-        .out("P_n", "P_n", tr.normalImpulse, "N s");
+    const bool level = in.a.radius == in.b.radius;
+    if (level)
+        StepBuilder(steps, "Normal impulse (with restitution)",
+                    "Along the line of centres the balls part at e times their approach speed.",
+                    "P_n = (1 + e) v_n / (1/m_a + 1/m_b)")
+            .in("e", "e", in.params.ballBallRestitution)
+            .in("v_n", "v_n", r.approachSpeed, "m/s")
+            .in("m_a", "m_a", in.a.mass, "kg")
+            .in("m_b", "m_b", in.b.mass, "kg")
+            .out("P_n", "P_n", tr.normalImpulse, "N s");
+    else
+        StepBuilder(steps, "Normal impulse (with restitution, balls held on the cloth)",
+                    "Along the tilted normal n₃ the balls part at e times their approach speed. Both stay on the "
+                    "cloth, which takes the vertical part of the impulse, so P_n lowers the approach speed by "
+                    "c^2 (1/m_a + 1/m_b) P_n.",
+                    "P_n = (1 + e) v_n / (c^2 (1/m_a + 1/m_b))")
+            .in("e", "e", in.params.ballBallRestitution)
+            .in("v_n", "v_n", r.approachSpeed, "m/s")
+            .in("m_a", "m_a", in.a.mass, "kg")
+            .in("m_b", "m_b", in.b.mass, "kg")
+            .in("c", "c", tr.level)
+            .out("compliance", "c^2 (1/m_a + 1/m_b)", tr.normalCompliance, "1/kg")
+            .out("P_n", "P_n", tr.normalImpulse, "N s");
     if (tr.frictional) {
         StepBuilder(steps, "Slip of the contact points",
-                    "The surfaces at the contact move at v + ω × (±R n); their relative velocity across n is "
-                    "the slip that friction between the balls opposes (it throws the object ball off the line "
-                    "of centres).",
-                    "s = (v_a + ω_a × R_a n) − (v_b − ω_b × R_b n),   tangential part")
+                    level ? "The surfaces at the contact move at v + ω × (±R n); their relative velocity across n is "
+                            "the slip that friction between the balls opposes (it throws the object ball off the line "
+                            "of centres)."
+                          : "The surfaces at the contact move at v + ω × (±R n₃); their relative velocity across n₃ "
+                            "is the slip that friction between the balls opposes. With the tilted normal the normal "
+                            "impulse itself changes that slip, so it is taken with the velocities v after the normal "
+                            "impulse (v = v_a − (P_n/m_a) c û, v_b + (P_n/m_b) c û).",
+                    level ? "s = (v_a + ω_a × R_a n) − (v_b − ω_b × R_b n),   tangential part"
+                          : "s = (v + ω_a × R_a n₃)_a − (v − ω_b × R_b n₃)_b,   tangential part (across n₃)")
             .in("v_a", "v_a", in.a.state.velocity, "m/s")
             .in("w_a", "ω_a", in.a.state.spin, "rad/s")
             .in("v_b", "v_b", in.b.state.velocity, "m/s")
