@@ -354,7 +354,7 @@ void TestProperties::randomSetups()
     // strike at all, and grazing shots, some of which do touch.
     const int* p = cases.placed;
     QVERIFY(p[int(Placement::Cushion)] > setups / 4 && p[int(Placement::Squeezed)] > setups / 20);
-    if (kind != TableKind::Carom) QVERIFY(p[int(Placement::Jaw)] > setups / 10);
+    if (kind != TableKind::Carom) QVERIFY(p[int(Placement::Jaw)] > setups / 20);
     QVERIFY(cases.moving > setups / 10 && cases.unstruck > 0);
     QVERIFY(cases.grazing > setups / 20 && grazesThatTouched > 0);
     qInfo("%d setups, %lld events, %d ball-ball, %d jaw hits, %d pocketings", setups, tally.events, tally.ballBall,
