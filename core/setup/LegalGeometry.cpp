@@ -26,8 +26,11 @@ std::string quoted(const std::string& text) { return '"' + text + '"'; }
 
 bool tableSpecUsable(const TableSpec& spec)
 {
-    const auto usable = [](const std::optional<double>& x) { return !x || (std::isfinite(*x) && *x > 0.0); };
-    return usable(spec.length) && usable(spec.width) && usable(spec.cushionHeight);
+    const auto usable = [](const std::optional<double>& x, double max) {
+        return !x || (std::isfinite(*x) && *x > 0.0 && *x <= max);
+    };
+    return usable(spec.length, SetupBounds::tableSize) && usable(spec.width, SetupBounds::tableSize)
+           && usable(spec.cushionHeight, SetupBounds::cushionHeight);
 }
 
 TableMargins tableMargins(const Table& table, double radius, const Vec2& p)

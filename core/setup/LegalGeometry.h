@@ -36,8 +36,8 @@ std::optional<SetupProblem> tableProblem(const Table& table, const Ball& ball, i
 // than kOverlapTolerance.
 std::optional<SetupProblem> overlapProblem(const Ball& ball, int index, const Ball& other);
 
-// Whether the table's own numbers allow building it (lengths finite and positive): otherwise there is
-// no geometry to check against.
+// Whether the table's own numbers allow building it (lengths finite, positive, within SetupBounds):
+// otherwise there is no geometry to check against.
 bool tableSpecUsable(const TableSpec& spec);
 
 // "balls[2].position"

@@ -60,6 +60,25 @@ public:
         add(make(path, nullptr, -1, "must lie between 0 and 1 (found " + describeNumber(x) + ")"));
         return false;
     }
+    // x (a finite value, or a magnitude computed from finite values) must not exceed `max` (`unit`
+    // names its unit in the message: " m/s").
+    bool atMost(double x, double max, const char* unit, const std::string& path, const Ball* ball = nullptr, int index = -1)
+    {
+        if (x <= max) return true;
+        add(make(path, ball, index,
+                 "must be at most " + describeNumber(max) + unit + " (found " + describeNumber(x) + unit + ")"));
+        return false;
+    }
+    // positive() and at most `max`.
+    bool positiveUpTo(double x, double max, const char* unit, const std::string& path, const Ball* ball = nullptr, int index = -1)
+    {
+        return positive(x, path, ball, index) && atMost(x, max, unit, path, ball, index);
+    }
+    // nonNegative() and at most `max`.
+    bool nonNegativeUpTo(double x, double max, const char* unit, const std::string& path)
+    {
+        return nonNegative(x, path) && atMost(x, max, unit, path);
+    }
     template <int N>
     bool finiteVector(const Eigen::Matrix<double, N, 1>& v, const std::string& path, const Ball& ball, int index)
     {
@@ -85,23 +104,24 @@ private:
 
 void checkTableSpec(const TableSpec& spec, Problems& out)
 {
-    if (spec.length) out.positive(*spec.length, "table.length");
-    if (spec.width) out.positive(*spec.width, "table.width");
-    if (spec.cushionHeight) out.positive(*spec.cushionHeight, "table.cushion_height");
+    if (spec.length) out.positiveUpTo(*spec.length, SetupBounds::tableSize, " m", "table.length");
+    if (spec.width) out.positiveUpTo(*spec.width, SetupBounds::tableSize, " m", "table.width");
+    if (spec.cushionHeight) out.positiveUpTo(*spec.cushionHeight, SetupBounds::cushionHeight, " m", "table.cushion_height");
 }
 
 void checkPhysics(const PhysicsParams& p, Problems& out)
 {
-    out.positive(p.gravity, "physics.gravity");
+    out.positiveUpTo(p.gravity, SetupBounds::gravity, " m/s²", "physics.gravity");
     // The cloth frictions must be positive: with zero friction a ball would slide, roll or spin for
     // ever and every transition time (|u| / (mu g), ...) would divide by zero.
-    out.positive(p.muSlide, "physics.mu_slide");
-    out.positive(p.muRoll, "physics.mu_roll");
-    out.positive(p.muSpin, "physics.mu_spin");
+    out.positiveUpTo(p.muSlide, SetupBounds::friction, "", "physics.mu_slide");
+    out.positiveUpTo(p.muRoll, SetupBounds::friction, "", "physics.mu_roll");
+    out.positiveUpTo(p.muSpin, SetupBounds::friction, "", "physics.mu_spin");
     out.unitInterval(p.ballBallRestitution, "physics.ball_ball.restitution");
-    if (p.ballBallFrictionKind == BallBallFriction::Fixed) out.nonNegative(p.ballBallFriction, "physics.ball_ball.friction");
+    if (p.ballBallFrictionKind == BallBallFriction::Fixed)
+        out.nonNegativeUpTo(p.ballBallFriction, SetupBounds::friction, "", "physics.ball_ball.friction");
     out.unitInterval(p.cushionRestitution, "physics.ball_cushion.restitution");
-    out.nonNegative(p.cushionFriction, "physics.ball_cushion.friction");
+    out.nonNegativeUpTo(p.cushionFriction, SetupBounds::friction, "", "physics.ball_cushion.friction");
     // The chosen cushion model's own parameters, with the ranges its registry entry gives.
     for (const CushionModelParameter& q : cushionModel(p.ballCushionModel).parameters) {
         const std::string path = "physics.ball_cushion." + std::string(q.key);
@@ -132,10 +152,12 @@ bool checkBallValues(const Setup& setup, std::size_t i, Problems& out)
             break;
         }
     const bool placed = out.finiteVector<2>(ball.state.position, ballPath(index, "position"), ball, index);
-    out.finiteVector<2>(ball.state.velocity, ballPath(index, "velocity"), ball, index);
-    out.finiteVector<3>(ball.state.spin, ballPath(index, "spin"), ball, index);
-    const bool sized = out.positive(ball.radius, ballPath(index, "radius"), &ball, index);
-    out.positive(ball.mass, ballPath(index, "mass"), &ball, index);
+    if (out.finiteVector<2>(ball.state.velocity, ballPath(index, "velocity"), ball, index))
+        out.atMost(std::hypot(ball.state.velocity.x(), ball.state.velocity.y()), SetupBounds::speed, " m/s", ballPath(index, "velocity"), &ball, index);
+    if (out.finiteVector<3>(ball.state.spin, ballPath(index, "spin"), ball, index))
+        out.atMost(std::hypot(ball.state.spin.x(), ball.state.spin.y(), ball.state.spin.z()), SetupBounds::spin, " rad/s", ballPath(index, "spin"), &ball, index);
+    const bool sized = out.positiveUpTo(ball.radius, SetupBounds::radius, " m", ballPath(index, "radius"), &ball, index);
+    out.positiveUpTo(ball.mass, SetupBounds::mass, " kg", ballPath(index, "mass"), &ball, index);
     return placed && sized;
 }
 
@@ -146,8 +168,11 @@ void checkShot(const Setup& setup, Problems& out)
     bool found = false;
     for (const Ball& b : setup.balls) found = found || b.id == shot.ball;
     if (!found) out.add(SetupProblem{"shot.ball", {}, -1, "there is no ball " + quoted(shot.ball)});
-    out.nonNegative(shot.speed, "shot.speed");
-    out.finite(shot.headingDeg, "shot.heading");
+    out.nonNegativeUpTo(shot.speed, SetupBounds::speed, " m/s", "shot.speed");
+    if (out.finite(shot.headingDeg, "shot.heading") && std::abs(shot.headingDeg) > SetupBounds::heading)
+        out.add(SetupProblem{"shot.heading", {}, -1,
+                             "must lie between -" + describeNumber(SetupBounds::heading) + " and " +
+                                 describeNumber(SetupBounds::heading) + " degrees (found " + describeNumber(shot.headingDeg) + ")"});
     if (out.finite(shot.elevationDeg, "shot.elevation") && (shot.elevationDeg < 0.0 || shot.elevationDeg > 90.0))
         out.add(SetupProblem{"shot.elevation", {}, -1,
                              "must lie between 0 and 90 degrees (found " + describeNumber(shot.elevationDeg) + ")"});
@@ -157,15 +182,19 @@ void checkShot(const Setup& setup, Problems& out)
     if (side && height && std::hypot(shot.side, shot.height) >= 1.0)
         out.add(SetupProblem{std::abs(shot.side) >= std::abs(shot.height) ? "shot.side" : "shot.height", {}, -1,
                              "the tip misses the ball: side and height must satisfy side² + height² < 1"});
-    out.positive(shot.cueMass, "shot.cue_mass");
-    // 0 means no squirt (the key absent); a file that gives the tip's end mass gives a positive one.
-    out.nonNegative(shot.endMass, "shot.end_mass");
+    const bool cue = out.positiveUpTo(shot.cueMass, SetupBounds::cueMass, " kg", "shot.cue_mass");
+    // 0 means no squirt (the key absent); a file that gives the tip's end mass gives a positive one,
+    // a part of the cue's mass.
+    if (out.nonNegative(shot.endMass, "shot.end_mass") && cue && shot.endMass > shot.cueMass)
+        out.add(SetupProblem{"shot.end_mass", {}, -1,
+                             "must not exceed the cue's mass of " + describeNumber(shot.cueMass) + " kg (found " +
+                                 describeNumber(shot.endMass) + " kg)"});
 }
 
 void checkSimulation(const SimulationSettings& s, Problems& out)
 {
-    out.positive(s.frameDt, "simulation.frame_dt");
-    out.positive(s.maxTime, "simulation.max_time");
+    out.positiveUpTo(s.frameDt, SetupBounds::frameDt, " s", "simulation.frame_dt");
+    out.positiveUpTo(s.maxTime, SetupBounds::maxTime, " s", "simulation.max_time");
 }
 
 std::vector<SetupProblem> run(const Setup& setup, bool firstOnly)

@@ -54,6 +54,7 @@ private slots:
     void followAndDraw();
     void ninetyDegreeRule_data();
     void ninetyDegreeRule();
+    void halfBallByHand();
     void thirtyDegreeRule_data();
     void thirtyDegreeRule();
     void momentumAndEnergy_data();
@@ -68,20 +69,30 @@ private slots:
 void TestCollisions::headOn_data()
 {
     QTest::addColumn<double>("e");
-    QTest::newRow("elastic") << 1.0;
-    QTest::newRow("e = 0.95") << 0.95;
-    QTest::newRow("e = 0.8") << 0.8;
-    QTest::newRow("plastic") << 0.0;
+    // Golden numbers by hand: equal masses, head-on at v = 2 m/s. Momentum v1' + v2' = 2 and
+    // Newton's restitution v2' - v1' = 2 e give v1' = 1 - e, v2' = 1 + e (m/s); elastic: the cue
+    // ball stops dead and the object ball takes all of it (the stop shot; Alciatore, "The
+    // Illustrated Principles of Pool and Billiards", 2004; PHYSICS.md, "Analytic results").
+    QTest::addColumn<double>("cueAfter");     // m/s
+    QTest::addColumn<double>("objectAfter");  // m/s
+    QTest::newRow("elastic") << 1.0 << 0.0 << 2.0;
+    QTest::newRow("e = 0.95") << 0.95 << 0.05 << 1.95;
+    QTest::newRow("e = 0.8") << 0.8 << 0.2 << 1.8;
+    QTest::newRow("plastic") << 0.0 << 1.0 << 1.0;
 }
 
 void TestCollisions::headOn()
 {
     QFETCH(double, e);
+    QFETCH(double, cueAfter);
+    QFETCH(double, objectAfter);
     PhysicsParams p;
     p.ballBallRestitution = e;
     const double v = 2.0;
     const auto [a, b] = cut(v, 0.0, Vec3::Zero());
     const BallBallResult r = resolveBallBall(a, b, p);
+    QVERIFY((r.a.velocity - Vec2(cueAfter, 0)).norm() < 1e-14);
+    QVERIFY((r.b.velocity - Vec2(objectAfter, 0)).norm() < 1e-14);
     // v1' = (1 - e) v / 2, v2' = (1 + e) v / 2 along the line; y components kept (the 2011 formula).
     QVERIFY((r.a.velocity - Vec2((1 - e) * v / 2, 0)).norm() < 1e-14);
     QVERIFY((r.b.velocity - Vec2((1 + e) * v / 2, 0)).norm() < 1e-14);
@@ -142,12 +153,34 @@ void TestCollisions::ninetyDegreeRule()
     QVERIFY2(std::abs(separation - expected) < 1e-12, qPrintable(QString::number(separation / kDeg)));
 }
 
+// A half-ball hit by hand (e = 1, no friction, stun): at v = 2 m/s along +x with the line of
+// centres at 30 degrees, the object ball takes the normal part v cos 30 = 1.7320508 m/s along the
+// line of centres, (1.5, 0.8660254) m/s; the cue ball keeps the tangential part v sin 30 = 1 m/s at
+// -60 degrees, (0.5, -0.8660254) m/s: 90 degrees apart (the 90-degree rule: Alciatore, "The Illustrated
+// Principles of Pool and Billiards", 2004). With e = 0.9 the angle between them is
+// atan(2 tan 30 / (1 - e)) = atan(11.5470054) = 85.0503893 degrees (PHYSICS.md, "Analytic results").
+void TestCollisions::halfBallByHand()
+{
+    PhysicsParams p;
+    p.ballBallRestitution = 1.0;
+    const auto [a, b] = cut(2.0, 30.0, Vec3::Zero());
+    const BallBallResult r = resolveBallBall(a, b, p);
+    QVERIFY((r.b.velocity - Vec2(1.5, 0.8660254037844386)).norm() < 1e-14);
+    QVERIFY((r.a.velocity - Vec2(0.5, -0.8660254037844386)).norm() < 1e-14);
+    p.ballBallRestitution = 0.9;
+    const BallBallResult inelastic = resolveBallBall(a, b, p);
+    QVERIFY(std::abs(angleBetween(inelastic.a.velocity, inelastic.b.velocity) / kDeg - 85.0503893166) < 1e-9);
+}
+
 void TestCollisions::thirtyDegreeRule_data()
 {
     QTest::addColumn<double>("phi");
     QTest::addColumn<double>("expectedDeg");
     QTest::addColumn<double>("tolDeg");
-    QTest::newRow("half-ball (30 deg)") << 30.0 << 33.67 << 0.01;
+    // By hand: a rolling cue ball after a half-ball hit ends atan(sin 30 cos 30 / (sin^2 30 + 2/5))
+    // = atan(0.4330127 / 0.65) = atan(0.6661734) = 33.6705 degrees off its line (the 30-degree
+    // rule, Alciatore 2004; PHYSICS.md rounds it to 33.67).
+    QTest::newRow("half-ball (30 deg)") << 30.0 << 33.6705 << 1e-4;
     QTest::newRow("maximum near 28.1 deg") << 28.1255 << 33.75 << 0.01;
     QTest::newRow("3/4 ball") << std::asin(0.25) / kDeg << 27.5 << 0.5;
     QTest::newRow("1/4 ball") << std::asin(0.75) / kDeg << 27.5 << 0.5;

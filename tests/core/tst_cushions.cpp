@@ -55,6 +55,7 @@ private slots:
     void pocketing();
     void wedgedAtJaw_data();
     void wedgedAtJaw();
+    void spinPressesIntoRailAndBall();
 };
 
 void TestCushions::mirrorAngles_data()
@@ -90,7 +91,10 @@ void TestCushions::hanHeadOn_data()
     QTest::addColumn<double>("e");
     QTest::addColumn<double>("heightFraction");  // of the ball diameter
     QTest::addColumn<double>("expected");        // rebound / incoming speed; < 0: use the formula only
-    QTest::newRow("e 0.85 at 0.635 (PHYSICS.md: 0.736)") << 0.85 << 0.635 << 0.736;
+    // By hand (Han 2005, head-on, eq. for the rebound of a ball hitting a nose at height h with
+    // sin(theta) = h / R - 1): h = 0.635 x 2R gives sin = 0.27, sin^2 = 0.0729, cos^2 = 0.9271, and
+    // 1.85 x 0.9271 + (2/7) x 0.0729 - 1 = 1.715135 + 0.0208286 - 1 = 0.7359636 (PHYSICS.md: 0.736).
+    QTest::newRow("e 0.85 at 0.635 (PHYSICS.md: 0.736)") << 0.85 << 0.635 << 0.7359636;
     QTest::newRow("e 0.85 at 0.64") << 0.85 << 0.64 << -1.0;
     QTest::newRow("e 0.7 at 0.625") << 0.7 << 0.625 << -1.0;
     QTest::newRow("e 1 at 0.645") << 1.0 << 0.645 << -1.0;
@@ -109,7 +113,7 @@ void TestCushions::hanHeadOn()
     // (1 + e) cos^2 + (2/7) sin^2 - 1 of the speed, straight back.
     const double ratio = -r.after.velocity.x() / 2.0;
     QVERIFY(std::abs(ratio - ((1 + e) * cos2 + 2.0 / 7.0 * sinA * sinA - 1)) < 1e-13);
-    if (expected > 0) QVERIFY(std::abs(ratio - expected) < 1e-3);
+    if (expected > 0) QVERIFY2(std::abs(ratio - expected) < 1e-7, qPrintable(QString::number(ratio, 'g', 17)));
     QVERIFY(std::abs(r.after.velocity.y()) < 1e-15);
     QVERIFY(r.after.motion == MotionState::Sliding);  // the ball leaves sliding
     QVERIFY(r.after.spin.y() < 0);  // the nose above the equator turns the ball in the sense of rolling away (wy < 0 for -x)
@@ -263,35 +267,146 @@ void TestCushions::pocketing()
 
 void TestCushions::wedgedAtJaw_data()
 {
-    QTest::addColumn<int>("jaw");
-    QTest::addColumn<double>("offset");  // m, aim beside the jaw's centre
-    QTest::newRow("corner jaw, grazing the rail side") << 0 << 0.02;
-    QTest::newRow("corner jaw, between facing and jaw") << 1 << -0.03;
-    QTest::newRow("side jaw") << 2 << 0.01;
-    QTest::newRow("side jaw other side") << 3 << -0.01;
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<int>("model");
+    QTest::newRow("pool-9ft, han2005") << int(TableKind::Pool9ft) << int(BallCushionModel::Han2005);
+    QTest::newRow("pool-9ft, mirror") << int(TableKind::Pool9ft) << int(BallCushionModel::Mirror);
+    QTest::newRow("snooker, han2005") << int(TableKind::Snooker) << int(BallCushionModel::Han2005);
 }
 
+// A ball driven into a pocket mouth against a jaw tip, for every jaw of the table. The places come
+// from the table's geometry: the jaw's own rail and facing (the straight noses tangent to it) bound
+// the arc of the jaw that faces the mouth; the ball touches the jaw at a point of that arc near the
+// rail (the junction of nose and jaw), halfway, or near the facing, and rolls into it head-on or
+// slanted towards either side, rolling or with three times the rolling spin (overspin: after the
+// rebound the cloth drives it back into the jaw, 3 > 5e/2, so it stays pressed into the mouth and
+// meets the jaw or the nose again). It starts touching the jaw, or 5 mm back inside the mouth on a line
+// that no straight cushion comes within R of and that crosses no pocket circle (checked here, so
+// nothing else can be met first). In every run the first collision is this jaw, the ball comes to
+// rest on the table or in a pocket, and no overlap, no ball off the cloth and no break in its
+// timeline appears at any event or sampled time.
+// (No legal place touches a jaw and a straight nose with different normals on these tables: the
+// junction is the only "wedge", where both share the normal; tst_properties places balls there.)
 void TestCushions::wedgedAtJaw()
 {
-    QFETCH(int, jaw);
-    QFETCH(double, offset);
+    QFETCH(int, kind);
+    QFETCH(int, model);
     Setup s;
+    s.table.kind = TableKind(kind);
+    s.physics.ballCushionModel = BallCushionModel(model);
     const Table t = makeTable(s.table);
-    const JawTip& j = t.jaws[static_cast<std::size_t>(jaw)];
-    const Vec2 start(t.length / 2, t.width / 2);
-    Vec2 dir = (j.centre - start).normalized();
-    const Vec2 target = j.centre + offset * Vec2(-dir.y(), dir.x());
-    dir = (target - start).normalized();
-    for (double speed : {0.6, 1.5, 5.0}) {
-        Setup run = s;
-        run.balls.push_back(ballAt(t, "cue", start, speed * dir));
-        const SimulationResult r = simulate(run);
-        QVERIFY2(r.status == SimulationStatus::AllAtRest, r.error.c_str());
-        for (const Event& e : r.events) {
-            QVERIFY(maxOverlapAt(r, e.time) <= 1e-9);
-            QVERIFY(onTable(r, e.after[0], t.ballRadius));
+    const double R = t.ballRadius;
+    Table noJaws = t;  // the straight noses alone, to check a line of approach
+    noJaws.jaws.clear();
+    int runs = 0, wedged = 0;
+    for (std::size_t k = 0; k < t.jaws.size(); ++k) {
+        const JawTip& jaw = t.jaws[k];
+        // The rail and the facing tangent to this jaw: one end of each lies on the jaw circle.
+        Vec2 railNormal = Vec2::Zero(), facingNormal = Vec2::Zero();
+        int rail = -1, facing = -1;
+        for (std::size_t c = 0; c < t.cushions.size(); ++c) {
+            const CushionSegment& seg = t.cushions[c];
+            if (std::abs((seg.a - jaw.centre).norm() - jaw.radius) > 1e-12 && std::abs((seg.b - jaw.centre).norm() - jaw.radius) > 1e-12)
+                continue;
+            const bool isRail = seg.id.rfind("rail-", 0) == 0;
+            (isRail ? railNormal : facingNormal) = seg.normal;
+            (isRail ? rail : facing) = int(c);
         }
+        QVERIFY2(!railNormal.isZero(0.0) && !facingNormal.isZero(0.0), jaw.id.c_str());
+        const double from = std::atan2(railNormal.y(), railNormal.x());
+        const double arc = std::remainder(std::atan2(facingNormal.y(), facingNormal.x()) - from, 2 * M_PI);
+        int jawRuns = 0;
+        for (double f : {0.1, 0.5, 0.9})
+            for (double slant : {-35.0, 0.0, 35.0})
+                for (double back : {0.0, 0.005})
+                    for (double speed : {0.6, 1.5, 5.0})
+                        for (double overspin : {1.0, 3.0}) {
+                        const double at = from + f * arc;
+                        const Vec2 n(std::cos(at), std::sin(at));  // from the jaw's centre to the ball's
+                        const Vec2 contact = jaw.centre + (R + jaw.radius) * n;
+                        const double heading = std::atan2(-n.y(), -n.x()) + slant * kDeg;
+                        const Vec2 dir(std::cos(heading), std::sin(heading));
+                        const Vec2 start = contact - back * dir;
+                        bool clear = true;
+                        for (int q = 0; q <= 50; ++q) {
+                            const Vec2 p = start + (q / 50.0) * back * dir;
+                            clear = clear && cushionOverlap(noJaws, p.x(), p.y(), R) < -1e-6;
+                            for (const Pocket& pocket : t.pockets) clear = clear && (p - pocket.centre).norm() > pocket.radius;
+                        }
+                        if (!clear) continue;
+                        Setup run = s;
+                        const double w = overspin * speed / R;
+                        run.balls.push_back(ballAt(t, "cue", start, speed * dir, Vec3(-w * dir.y(), w * dir.x(), 0)));
+                        const std::string what = jaw.id + QStringLiteral(" f %1 slant %2 back %3 speed %4 spin %5")
+                                                              .arg(f).arg(slant).arg(back).arg(speed).arg(overspin).toStdString();
+                        const SimulationResult r = simulate(run);
+                        QVERIFY2(r.status == SimulationStatus::AllAtRest, (what + ": " + r.error).c_str());
+                        const Event* first = nullptr;
+                        for (const Event& e : r.events)
+                            if (isCollision(e.kind) || e.kind == EventKind::BallPocket) {
+                                first = &e;
+                                break;
+                            }
+                        QVERIFY2(first && first->kind == EventKind::BallJaw && first->jaw == int(k), what.c_str());
+                        QVERIFY2(std::abs((first->before[0].position - jaw.centre).norm() - (R + jaw.radius)) < 1e-9, what.c_str());
+                        std::vector<double> times;
+                        for (const Event& e : r.events) times.push_back(e.time);
+                        for (int q = 0; q <= 20; ++q) times.push_back(r.endTime * q / 20.0);
+                        for (double time : times) {
+                            const BallState st = r.stateAt(0, time);
+                            QVERIFY2(maxOverlapAt(r, time) <= 1e-9, what.c_str());
+                            const std::string place = placeProblemAt(r, 0, time, st);
+                            QVERIFY2(place.empty(), (what + ": " + place).c_str());
+                        }
+                        const std::string timeline = timelineProblem(r);
+                        QVERIFY2(timeline.empty(), (what + ": " + timeline).c_str());
+                        ++jawRuns;
+                        // Wedged: it meets this jaw, its rail or its facing again.
+                        for (const Event& e : r.events)
+                            if (&e != first && ((e.kind == EventKind::BallJaw && e.jaw == int(k))
+                                                || (e.kind == EventKind::BallCushion && (e.cushion == rail || e.cushion == facing)))) {
+                                ++wedged;
+                                break;
+                            }
+                    }
+        // Both ways of arriving for every jaw: touching it, and from inside the mouth.
+        QVERIFY2(jawRuns >= 2 * (27 + 9), jaw.id.c_str());
+        runs += jawRuns;
     }
+    QVERIFY(wedged > runs / 10);  // many runs really are driven into the mouth again and again
+    qInfo("%d runs into %zu jaws, %d meeting the jaw, its rail or its facing again", runs, t.jaws.size(), wedged);
+}
+
+// Found by tst_properties' soak (pool-8ft, seed 2, run 23446 of 30000; /tmp/tests-failures in the
+// READY report): a still ball touching the top rail, spinning (w = (-29.7, -52.5, -16.7) rad/s) so
+// that the cloth drives it into the rail, with a ball frozen to it from below. At t = 0 the rail, the
+// ball and the rail again collide; the separation floor sends both balls off at about 1 mm/s, their
+// relative normal speed is 1.3e-9 m/s, just above kRestingSpeed, so the pair counts as parting,
+// and a moment later friction brings them together again: the contact is missed until the lower
+// ball's slide-to-roll 0.13 ms later, when they overlap by 8.5 nm. A sustained contact (the lead's
+// rewrite of Simulation.cpp), so the overlap is marked as expected to fail until then.
+void TestCushions::spinPressesIntoRailAndBall()
+{
+    Setup s;
+    s.table.kind = TableKind::Pool8ft;
+    s.physics.ballBallModel = BallBallModel::Frictional;
+    s.physics.ballBallFrictionKind = BallBallFriction::Alciatore;
+    s.physics.ballBallRestitution = 0.74654934649493887;
+    s.physics.ballCushionModel = BallCushionModel::Mirror;
+    s.physics.cushionRestitution = 0.66677396697838953;
+    const Table t = makeTable(s.table);
+    s.balls.push_back(ballAt(t, "11", Vec2(2.1637233471607735, 1.1398250000000001), Vec2::Zero(),
+                             Vec3(-29.661254995373113, -52.493835791039913, -16.666950016411683)));
+    s.balls.push_back(ballAt(t, "12", Vec2(2.1646201162822178, 1.0826820362586713)));
+    const SimulationResult r = simulate(s);
+    QVERIFY2(r.status == SimulationStatus::AllAtRest, r.error.c_str());
+    double worst = 0.0;
+    for (const Event& e : r.events) worst = std::max(worst, maxOverlapAt(r, e.time));
+    for (int q = 0; q <= 100; ++q) worst = std::max(worst, maxOverlapAt(r, r.endTime * q / 100.0));
+    const std::string timeline = timelineProblem(r);
+    QVERIFY2(timeline.empty(), timeline.c_str());
+    QEXPECT_FAIL("", "sustained contact: a pair parting at 1.3e-9 m/s is pressed together again and missed (8.5 nm)", Abort);
+    QVERIFY2(worst <= 1e-9, qPrintable(QString::number(worst)));
 }
 
 QTEST_APPLESS_MAIN(TestCushions)

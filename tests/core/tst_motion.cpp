@@ -51,10 +51,24 @@ void TestMotion::stunToNaturalRoll_data()
     QTest::addColumn<double>("v0");
     QTest::addColumn<double>("headingDeg");
     QTest::addColumn<double>("muSlide");
-    QTest::newRow("0.5 m/s along x") << 0.5 << 0.0 << 0.2;
-    QTest::newRow("1 m/s at 30 deg") << 1.0 << 30.0 << 0.2;
-    QTest::newRow("3 m/s at 200 deg, mu 0.15") << 3.0 << 200.0 << 0.15;
-    QTest::newRow("8 m/s along -y, mu 0.4") << 8.0 << 270.0 << 0.4;
+    // Golden numbers worked by hand from the textbook results, not from the code: a stun ball
+    // (no spin) slides until its slip u0 = v0 is gone, which friction mu g does at rate 7/2 mu g
+    // (the slip of a solid sphere: dv/dt = -mu g, R dw/dt = -5/2 mu g), so t = 2 v0 / (7 mu g),
+    // it covers v0 t - mu g t^2 / 2 = 12 v0^2 / (49 mu g) and rolls on at 5/7 v0 (Alciatore, "The
+    // Illustrated Principles of Pool and Billiards", 2004, and his technical proofs; Marlow, "The
+    // Physics of Pocket Billiards", 1995; PHYSICS.md, "Analytic results"). With g = 9.81 m/s^2: 7 mu g = 13.734 (mu 0.2), 10.3005 (0.15),
+    // 27.468 (0.4); 49 mu g = 96.138, 72.1035, 192.276.
+    QTest::addColumn<double>("time");      // s
+    QTest::addColumn<double>("distance");  // m
+    QTest::addColumn<double>("speed");     // m/s
+    // 1 / 13.734 = 0.0728119994; 3 / 96.138 = 0.0312051426; 5 x 0.5 / 7 = 0.357142857
+    QTest::newRow("0.5 m/s along x") << 0.5 << 0.0 << 0.2 << 0.0728119994175 << 0.0312051426075 << 0.357142857143;
+    // 2 / 13.734 = 0.145623999; 12 / 96.138 = 0.124820570; 5 / 7 = 0.714285714
+    QTest::newRow("1 m/s at 30 deg") << 1.0 << 30.0 << 0.2 << 0.145623998835 << 0.124820570430 << 0.714285714286;
+    // 6 / 10.3005 = 0.582495995; 108 / 72.1035 = 1.49784685; 15 / 7 = 2.14285714
+    QTest::newRow("3 m/s at 200 deg, mu 0.15") << 3.0 << 200.0 << 0.15 << 0.582495995340 << 1.49784684516 << 2.14285714286;
+    // 16 / 27.468 = 0.582495995; 768 / 192.276 = 3.99425825; 40 / 7 = 5.71428571
+    QTest::newRow("8 m/s along -y, mu 0.4") << 8.0 << 270.0 << 0.4 << 0.582495995340 << 3.99425825376 << 5.71428571429;
 }
 
 void TestMotion::stunToNaturalRoll()
@@ -62,8 +76,12 @@ void TestMotion::stunToNaturalRoll()
     QFETCH(double, v0);
     QFETCH(double, headingDeg);
     QFETCH(double, muSlide);
+    QFETCH(double, time);
+    QFETCH(double, distance);
+    QFETCH(double, speed);
     PhysicsParams p;
     p.muSlide = muSlide;
+    QCOMPARE(p.gravity, 9.81);  // the golden numbers assume it
     const double h = headingDeg * M_PI / 180.0;
     const BallState s = moving(v0 * std::cos(h), v0 * std::sin(h), Vec3::Zero());
     QVERIFY(s.motion == MotionState::Sliding);
@@ -79,6 +97,10 @@ void TestMotion::stunToNaturalRoll()
     QVERIFY(std::abs(e.velocity.norm() - 5.0 / 7.0 * v0) < 1e-14);
     QVERIFY(std::abs(e.velocity.normalized().dot(s.velocity.normalized()) - 1.0) < 1e-14);
     QVERIFY(slipVelocity(e, kR).norm() < 1e-15);
+    // The hand-worked numbers (12 significant digits).
+    QVERIFY2(std::abs(t.after - time) < 1e-11, qPrintable(QString::number(t.after, 'g', 17)));
+    QVERIFY2(std::abs((e.position - s.position).norm() - distance) < 1e-11, qPrintable(QString::number((e.position - s.position).norm(), 'g', 17)));
+    QVERIFY(std::abs(e.velocity.norm() - speed) < 1e-11);
 }
 
 void TestMotion::rollingStops_data()

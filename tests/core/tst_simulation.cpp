@@ -9,7 +9,6 @@
 #include <QtTest>
 
 #include <cmath>
-#include <map>
 
 using namespace cuelab;
 using namespace cuelab::testing;
@@ -45,12 +44,11 @@ Setup shotSetup(double heading, double side, double height)
 // instant is what stateAt returns at that instant, and the state before equals the motion up to it.
 void verifyTimelines(const SimulationResult& r)
 {
-    std::map<std::pair<int, double>, const BallState*> lastAfter;
-    for (const Event& e : r.events)
-        for (int k = 0; k < 2; ++k)
-            if (e.balls[static_cast<std::size_t>(k)] >= 0)
-                lastAfter[{e.balls[static_cast<std::size_t>(k)], e.time}] = &e.after[static_cast<std::size_t>(k)];
-    for (const auto& [key, state] : lastAfter) QVERIFY(sameState(r.stateAt(key.first, key.second), *state));
+    // Continuity (SimulationChecks.h): each segment begins where the previous one's closed-form
+    // motion has brought the ball, in velocity too unless a collision or the strike began it.
+    const std::string problem = timelineProblem(r);
+    QVERIFY2(problem.empty(), problem.c_str());
+    // The state just before each event is where the ball's motion brought it.
     for (const Event& e : r.events) {
         if (e.kind == EventKind::CueStrike) continue;
         const BallState before = r.stateAt(e.balls[0], std::nextafter(e.time, -1.0));
@@ -270,7 +268,10 @@ void TestSimulation::cradle()
     const double momentumBefore = first->before[0].velocity.x();
     double momentumAfter = 0.0;
     for (const BallState& b : s) momentumAfter += b.velocity.x();
-    QVERIFY(std::abs(momentumAfter - momentumBefore) < 1e-12 || model == int(BallBallModel::Frictional));
+    // Friction between the balls is internal: the frictional law keeps the momentum too.
+    QVERIFY(std::abs(momentumAfter - momentumBefore) < 1e-12);
+    for (const Event& ev : r.events)
+        if (ev.kind == EventKind::BallBall) QVERIFY(momentumChange(r, ev) < 1e-12 * (ev.before[0].velocity.norm() + ev.before[1].velocity.norm()) * r.balls[0].mass + 1e-16);
 }
 
 void TestSimulation::breakRuns_data()
@@ -298,7 +299,8 @@ void TestSimulation::breakRuns()
         QVERIFY(maxOverlapAt(r, e.time) <= 1e-9);
         for (int k = 0; k < 2; ++k)
             if (e.balls[static_cast<std::size_t>(k)] >= 0)
-                QVERIFY(onTable(r, e.after[static_cast<std::size_t>(k)], r.balls[0].radius));
+                QVERIFY(placeProblemAt(r, e.balls[static_cast<std::size_t>(k)], e.time, e.after[static_cast<std::size_t>(k)]).empty());
+        if (e.kind == EventKind::BallBall) QVERIFY(momentumChange(r, e) < 1e-12 * 20.0 * r.balls[0].mass);
         // energy never rises, at events and between them
         const double mid = totalEnergy(r, r.statesAt(e.time));
         QVERIFY(mid <= energy * (1 + 1e-12) + 1e-15);

@@ -53,6 +53,7 @@ private slots:
     void unequalRadiiTouchCloser();
     void oneBallsProblems();
     void lengthsAndNumbersForMessages();
+    void boundsThemselvesAreLegal();
 };
 
 void TestLegalSetup::baseIsLegal()
@@ -141,6 +142,51 @@ void TestLegalSetup::rule_data()
                                    << "greater than 0";
     QTest::newRow("max_time negative") << Breakage([](Setup& s) { s.simulation.maxTime = -1.0; }) << "simulation.max_time"
                                        << "" << "greater than 0";
+    // plausible bounds (SetupBounds): finite but absurd values are refused too
+    QTest::newRow("shot speed 1e300") << Breakage([](Setup& s) { s.shot->speed = 1e300; }) << "shot.speed" << ""
+                                      << "must be at most 20 m/s (found 1e+300 m/s)";
+    QTest::newRow("shot speed just above 20 m/s") << Breakage([](Setup& s) { s.shot->speed = 20.5; }) << "shot.speed" << ""
+                                                  << "at most 20 m/s (found 20.5 m/s)";
+    QTest::newRow("ball velocity 1e300") << Breakage([](Setup& s) { ball(s, 0).state.velocity = Vec2(1e300, 0.0); })
+                                         << "balls[0].velocity" << "cue" << "ball \"cue\": velocity must be at most 20 m/s";
+    QTest::newRow("ball speed 21 m/s diagonally") << Breakage([](Setup& s) { ball(s, 1).state.velocity = Vec2(15.0, -15.0); })
+                                                  << "balls[1].velocity" << "1" << "at most 20 m/s (found 21.2132 m/s)";
+    QTest::newRow("ball spin 1e300") << Breakage([](Setup& s) { ball(s, 1).state.spin = Vec3(0.0, 0.0, -1e300); })
+                                     << "balls[1].spin" << "1" << "ball \"1\": spin must be at most 2000 rad/s";
+    QTest::newRow("ball position 1e300") << Breakage([](Setup& s) { ball(s, 1).state.position = Vec2(1e300, 0.6); })
+                                         << "balls[1].position" << "1" << "outside the playing surface";
+    QTest::newRow("ball radius 1 m") << Breakage([](Setup& s) { ball(s, 1).radius = 1.0; }) << "balls[1].radius" << "1"
+                                     << "radius must be at most 0.5 m (found 1 m)";
+    QTest::newRow("ball mass 1e300") << Breakage([](Setup& s) { ball(s, 0).mass = 1e300; }) << "balls[0].mass" << "cue"
+                                     << "mass must be at most 5 kg";
+    QTest::newRow("table length 1e300") << Breakage([](Setup& s) { s.table.length = 1e300; }) << "table.length" << ""
+                                        << "must be at most 10 m (found 1e+300 m)";
+    QTest::newRow("table width 11 m") << Breakage([](Setup& s) { s.table.width = 11.0; }) << "table.width" << ""
+                                      << "at most 10 m";
+    QTest::newRow("cushion height 2 m") << Breakage([](Setup& s) { s.table.cushionHeight = 2.0; }) << "table.cushion_height"
+                                        << "" << "at most 1 m";
+    QTest::newRow("gravity 1e300") << Breakage([](Setup& s) { s.physics.gravity = 1e300; }) << "physics.gravity" << ""
+                                   << "at most 100 m/s²";
+    QTest::newRow("mu_slide 1e300") << Breakage([](Setup& s) { s.physics.muSlide = 1e300; }) << "physics.mu_slide" << ""
+                                    << "at most 10 (found 1e+300)";
+    QTest::newRow("mu_roll 11") << Breakage([](Setup& s) { s.physics.muRoll = 11.0; }) << "physics.mu_roll" << "" << "at most 10";
+    QTest::newRow("mu_spin 1e300") << Breakage([](Setup& s) { s.physics.muSpin = 1e300; }) << "physics.mu_spin" << "" << "at most 10";
+    QTest::newRow("ball-ball friction 1e300") << Breakage([](Setup& s) { s.physics.ballBallFriction = 1e300; })
+                                              << "physics.ball_ball.friction" << "" << "at most 10";
+    QTest::newRow("ball-cushion friction 1e300") << Breakage([](Setup& s) { s.physics.cushionFriction = 1e300; })
+                                                 << "physics.ball_cushion.friction" << "" << "at most 10";
+    QTest::newRow("shot heading 1e300") << Breakage([](Setup& s) { s.shot->headingDeg = 1e300; }) << "shot.heading" << ""
+                                        << "must lie between -3600 and 3600 degrees (found 1e+300)";
+    QTest::newRow("shot heading -3601") << Breakage([](Setup& s) { s.shot->headingDeg = -3601.0; }) << "shot.heading" << ""
+                                        << "between -3600 and 3600";
+    QTest::newRow("cue mass 1e300") << Breakage([](Setup& s) { s.shot->cueMass = 1e300; }) << "shot.cue_mass" << ""
+                                    << "at most 5 kg";
+    QTest::newRow("end mass above the cue's") << Breakage([](Setup& s) { s.shot->endMass = 1.0; }) << "shot.end_mass" << ""
+                                              << "must not exceed the cue's mass of 0.567 kg (found 1 kg)";
+    QTest::newRow("frame_dt 1e300") << Breakage([](Setup& s) { s.simulation.frameDt = 1e300; }) << "simulation.frame_dt" << ""
+                                    << "at most 10 s";
+    QTest::newRow("max_time 1e300") << Breakage([](Setup& s) { s.simulation.maxTime = 1e300; }) << "simulation.max_time" << ""
+                                    << "at most 86400 s";
     // geometry
     QTest::newRow("cushion above the balls") << Breakage([](Setup& s) { s.table.cushionHeight = 0.06; s.balls.pop_back(); }) << "balls[0].radius"
                                              << "cue" << "ball \"cue\" (radius 0.028575 m) is lower than the cushion nose";
@@ -286,6 +332,39 @@ void TestLegalSetup::lengthsAndNumbersForMessages()
     QCOMPARE(describeNumber(-0.03), std::string("-0.03"));
     QCOMPARE(describeNumber(1e-5), std::string("1e-05"));
     QCOMPARE(describeNumber(2.54), std::string("2.54"));
+}
+
+// Every bound of SetupBounds is itself a legal value: the limits are inclusive.
+void TestLegalSetup::boundsThemselvesAreLegal()
+{
+    Setup s = base();
+    s.shot->speed = SetupBounds::speed;
+    s.shot->headingDeg = -SetupBounds::heading;
+    s.shot->cueMass = SetupBounds::cueMass;
+    s.shot->endMass = SetupBounds::cueMass;
+    ball(s, 0).state.velocity = SetupBounds::speed * Vec2(0.6, 0.8);
+    ball(s, 0).state.spin = SetupBounds::spin * Vec3(0.0, 0.6, 0.8);
+    ball(s, 1).mass = SetupBounds::mass;
+    s.physics.gravity = SetupBounds::gravity;
+    s.physics.muSlide = s.physics.muRoll = s.physics.muSpin = SetupBounds::friction;
+    s.physics.ballBallFriction = s.physics.cushionFriction = SetupBounds::friction;
+    s.simulation.frameDt = SetupBounds::frameDt;
+    s.simulation.maxTime = SetupBounds::maxTime;
+    const std::vector<SetupProblem> problems = validateSetup(s);
+    QVERIFY2(problems.empty(), problems.empty() ? "" : problems.front().message.c_str());
+    // A large closed table with a large ball: the geometric bounds together.
+    Setup big;
+    big.table.kind = TableKind::Carom;
+    big.table.length = big.table.width = SetupBounds::tableSize;
+    big.table.cushionHeight = 0.6;  // below the ball's 2R = 1 m (SetupBounds::cushionHeight needs a radius beyond the bound)
+    Ball b;
+    b.id = "big";
+    b.radius = SetupBounds::radius;
+    b.mass = SetupBounds::mass;
+    b.state.position = Vec2(5.0, 5.0);
+    big.balls.push_back(b);
+    const std::vector<SetupProblem> bigProblems = validateSetup(big);
+    QVERIFY2(bigProblems.empty(), bigProblems.empty() ? "" : bigProblems.front().message.c_str());
 }
 
 QTEST_GUILESS_MAIN(TestLegalSetup)

@@ -1,0 +1,159 @@
+// The shared checks of SimulationChecks.h must catch what they are for: a ball behind a rail near a
+// pocket (the old checks' blind zone), a ball in a pocket circle that did not drop, a pocketed ball
+// without its pocket event, a jump in a timeline, a momentum change at a ball-ball event; and they
+// must pass the legal places: on the cloth, touching a rail, crossing a side or corner mouth.
+
+#include "Simulation.h"
+#include "SimulationChecks.h"
+
+#include <QtTest>
+
+using namespace cuelab;
+using namespace cuelab::testing;
+
+namespace {
+
+// A run on a 9-ft table: the cue ball rolls into the 1 ball, which goes into the top right corner
+// pocket's direction; gives a result with a table, timelines, a ball-ball event and transitions.
+SimulationResult sample()
+{
+    Setup s;
+    const Table t = makeTable(s.table);
+    s.balls.push_back(ballAt(t, "cue", Vec2(0.6, 0.6)));
+    s.balls.push_back(ballAt(t, "1", Vec2(1.2, 0.62)));
+    CueStrike shot;
+    shot.ball = "cue";
+    shot.speed = 2.0;
+    shot.headingDeg = 0.0;
+    shot.height = 0.3;
+    s.shot = shot;
+    return simulate(s);
+}
+
+BallState at(double x, double y)
+{
+    BallState s;
+    s.position = Vec2(x, y);
+    return s;
+}
+
+}  // namespace
+
+class TestChecks : public QObject {
+    Q_OBJECT
+private slots:
+    void places_data();
+    void places();
+    void pocketed();
+    void timelineJumps();
+    void momentum();
+};
+
+void TestChecks::places_data()
+{
+    QTest::addColumn<double>("x");
+    QTest::addColumn<double>("y");
+    QTest::addColumn<bool>("legal");
+    const double R = 0.028575;
+    QTest::newRow("mid table") << 1.27 << 0.635 << true;
+    QTest::newRow("touching the bottom rail") << 0.6 << R << true;
+    QTest::newRow("1 nm into the bottom rail") << 0.6 << R - 1e-9 * 1.5 << false;
+    QTest::newRow("crossing the side mouth, centre below the nose line's R") << 1.27 << 0.01 << true;
+    QTest::newRow("crossing the corner mouth beside the jaw") << 0.06 << 0.025 << true;
+    // The blind zone of the old checks: behind the bottom rail by more than R, within pocket radius
+    // + 3R of the side pocket, clear of the jaw.
+    QTest::newRow("tunnelled behind a rail next to the side pocket") << 1.15 << -0.05 << false;
+    QTest::newRow("tunnelled 1.5 R behind a rail") << 0.6 << -1.5 * R << false;
+    QTest::newRow("inside the side pocket circle, not dropped") << 1.27 << -0.01 << false;
+    QTest::newRow("behind the corner") << -0.2 << -0.2 << false;
+    QTest::newRow("beyond the far rail") << 3.0 << 0.6 << false;
+}
+
+void TestChecks::places()
+{
+    QFETCH(double, x);
+    QFETCH(double, y);
+    QFETCH(bool, legal);
+    const SimulationResult r = sample();
+    const std::string why = placeProblem(r, at(x, y), r.balls[0].radius);
+    QVERIFY2(why.empty() == legal, why.c_str());
+}
+
+void TestChecks::pocketed()
+{
+    const SimulationResult r = sample();
+    BallState s;
+    s.motion = MotionState::Pocketed;
+    s.pocket = 5;
+    s.position = r.table.pockets[5].centre;
+    QVERIFY(placeProblem(r, s, r.balls[0].radius).empty());
+    // No such pocket event in this run.
+    QCOMPARE(placeProblemAt(r, 1, r.endTime, s), std::string("pocketed without a pocket event"));
+    BallState moved = s;
+    moved.position.x() += 0.01;
+    QVERIFY(!placeProblem(r, moved, r.balls[0].radius).empty());
+    BallState moving = s;
+    moving.velocity = Vec2(0.1, 0.0);
+    QVERIFY(!placeProblem(r, moving, r.balls[0].radius).empty());
+}
+
+void TestChecks::timelineJumps()
+{
+    const SimulationResult r = sample();
+    QCOMPARE(timelineProblem(r), std::string());
+    // A segment begun by a transition: its start moved by 1 um, then its velocity by 1 um/s.
+    int ball = -1;
+    std::size_t segment = 0;
+    for (std::size_t i = 0; i < r.timelines.size() && ball < 0; ++i) {
+        std::size_t k = 0;
+        for (const Event& e : r.events) {
+            if (e.balls[0] != int(i) && e.balls[1] != int(i)) continue;
+            ++k;
+            if (isTransition(e.kind)) {
+                ball = int(i);
+                segment = k;
+                break;
+            }
+        }
+    }
+    QVERIFY(ball >= 0);
+    SimulationResult jumped = r;
+    jumped.timelines[std::size_t(ball)][segment].state.position.x() += 1e-6;
+    QVERIFY(!timelineProblem(jumped).empty());
+    SimulationResult kicked = r;
+    kicked.timelines[std::size_t(ball)][segment].state.velocity.y() += 1e-6;
+    QVERIFY(!timelineProblem(kicked).empty());
+    // A collision changes the velocity (every real run above passes with that), never the position.
+    for (std::size_t k = 0, n = 0; k < r.events.size(); ++k) {
+        const Event& e = r.events[k];
+        if (e.balls[0] != 0 && e.balls[1] != 0) continue;
+        ++n;
+        if (e.kind != EventKind::BallBall) continue;
+        SimulationResult hit = r;
+        hit.timelines[0][n].state.position.y() += 1e-6;
+        QVERIFY(!timelineProblem(hit).empty());
+        break;
+    }
+    // A segment without its event.
+    SimulationResult extra = r;
+    extra.timelines[0].push_back(extra.timelines[0].back());
+    QVERIFY(!timelineProblem(extra).empty());
+}
+
+void TestChecks::momentum()
+{
+    const SimulationResult r = sample();
+    bool found = false;
+    for (const Event& e : r.events)
+        if (e.kind == EventKind::BallBall) {
+            found = true;
+            QVERIFY(momentumChange(r, e) < 1e-15);
+            Event changed = e;
+            changed.after[1].velocity *= 1.001;
+            QVERIFY(momentumChange(r, changed) > 1e-5);
+        }
+    QVERIFY(found);
+}
+
+QTEST_APPLESS_MAIN(TestChecks)
+#include "tst_checks.moc"
