@@ -52,9 +52,9 @@ ViewLayer eventArrowsLayer(const explain::Explanation& e, const EventArrowColour
                                     colours.momentumAfter, 3.5f,
                                     tr("p′ %1 = %2 N·s").arg(id, newtonSeconds(after.norm()))});
     }
-    // The impulse, then the normal: drawn last, on top (the normal lies along the line of centres,
-    // under the second ball's momentum after a frictionless hit).
-    // The impulse by its horizontal part (see the header); its vertical part, if any, in the label.
+    // The impulse by its horizontal part (see the header), its vertical part, if any, in the label;
+    // then the normal, drawn last, on top: it lies along the line of centres, under the second
+    // ball's momentum after a frictionless hit.
     const Vec3 horizontal(e.impulse.x(), e.impulse.y(), 0.0);
     const QString magnitude = newtonSeconds(horizontal.norm());
     layer.arrows.push_back({contact, contact + kArrowMetresPerNewtonSecond * horizontal, colours.impulse, 4.0f,

@@ -11,8 +11,8 @@
 // lies over the contact point and over the centres, and from a low camera it floats over the balls.
 // The impulse is drawn by its horizontal part, the part that changes the ball's momentum on the
 // cloth; its vertical part (a cushion nose above the ball's centre pushes the ball down, a frictional
-// model's impulse has one too), which the cloth takes up, is given in the label. Drawn as it is, it
-// would end under the cloth, hidden by the table.
+// model's impulse has one too), which the cloth takes up, is given in the label. Drawn whole, a
+// cushion's impulse would end under the cloth, hidden by the table.
 //
 // Scale: momentum and impulse share one scale (both in N·s), kArrowMetresPerNewtonSecond, so that
 // the impulse arrow is the change of the first ball's momentum on screen: p′ = p + J.
