@@ -99,6 +99,7 @@ void MainWindow::createMenus()
     resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
     resetLayoutAction->setToolTip(tr("Put every panel back where the first start put it, at its default width"));
     QMenu* overlays = view->addMenu(tr("&Overlays"));
+    overlays->setObjectName(QStringLiteral("overlaysMenu"));  // features add their own overlays to it
     for (int i = 0; i < kOverlayCount; ++i) {
         const auto overlay = static_cast<Overlay>(i);
         QAction* a = overlays->addAction(overlayName(overlay));

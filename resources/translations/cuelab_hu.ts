@@ -203,6 +203,14 @@
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>Collision &amp;Arrows</source>
+        <translation>Ütközési &amp;nyilak</translation>
+    </message>
+    <message>
+        <source>In the table view: the selected collision&apos;s contact point, contact normal and impulse, and each ball&apos;s momentum before and after, as labelled arrows</source>
+        <translation>Az asztalnézetben: a kijelölt ütközés érintkezési pontja, érintkezési normálisa és erőlökése, valamint minden golyó lendülete előtte és utána, feliratozott nyilakként</translation>
+    </message>
 </context>
 <context>
     <name>cuelab</name>
@@ -303,10 +311,6 @@
         <translation>Nézet &amp;PNG-ként…</translation>
     </message>
     <message>
-        <source>Render the table view at a chosen size into a PNG image</source>
-        <translation>Az asztal nézetének kirajzolása választott méretben egy PNG-képbe</translation>
-    </message>
-    <message>
         <source>Shot Diagram as &amp;SVG...</source>
         <translation>Ütésábra &amp;SVG-ként…</translation>
     </message>
@@ -353,6 +357,42 @@
     <message>
         <source>Every event with its agents&apos; states before and after</source>
         <translation>Minden esemény, a résztvevők előtte és utána vett állapotával</translation>
+    </message>
+    <message>
+        <source>Current view</source>
+        <translation>Jelenlegi nézet</translation>
+    </message>
+    <message>
+        <source>The table view&apos;s own camera, time, overlays, layers and selection, exactly as shown</source>
+        <translation>Az asztalnézet saját kamerája, ideje, rétegei, rárajzolt elemei és kijelölése, pontosan úgy, ahogy látszik</translation>
+    </message>
+    <message>
+        <source>Render the table view at a chosen size into a PNG image, from its current camera or a preset</source>
+        <translation>Az asztal nézetének kirajzolása választott méretben egy PNG-képbe, a jelenlegi kamerából vagy egy előre beállított nézetből</translation>
+    </message>
+    <message>
+        <source>contact; 1 N·s = %1 m</source>
+        <translation>érintkezés; 1 N·s = %1 m</translation>
+    </message>
+    <message>
+        <source>p %1 = %2 N·s</source>
+        <translation>p %1 = %2 N·s</translation>
+    </message>
+    <message>
+        <source>p′ %1 = %2 N·s</source>
+        <translation>p′ %1 = %2 N·s</translation>
+    </message>
+    <message>
+        <source>J = %1 N·s</source>
+        <translation>J = %1 N·s</translation>
+    </message>
+    <message>
+        <source>n</source>
+        <translation>n</translation>
+    </message>
+    <message>
+        <source>J = %1 N·s, vertical %2 N·s</source>
+        <translation>J = %1 N·s, függőleges %2 N·s</translation>
     </message>
 </context>
 <context>

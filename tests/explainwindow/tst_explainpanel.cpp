@@ -1,21 +1,30 @@
 // The Explain dock follows the selected event and the transport, shows the derivation with its
 // polynomial and roots; the Lesson dock shows an opened example's lesson at once and its edits are
-// undo steps; File > Export > Explanation writes HTML and Markdown atomically. A screenshot of the
-// Explain dock on the half-ball cut goes to the build folder (explain-dock.png).
+// undo steps; File > Export > Explanation writes HTML and Markdown atomically. The selected
+// collision's contact, normal, impulse and momenta are arrows in the table view, built from the
+// simulator's own event data and following the selection. A screenshot of the Explain dock on the
+// half-ball cut goes to the build folder (explain-dock.png).
 
 #include "MainWindow.h"
 #include "editor/Document.h"
 #include "editor/Playback.h"
 #include "editor/Selection.h"
+#include "editor/TransportBar.h"
+#include "explain/EventArrows.h"
 #include "explain/ExplainExport.h"
 #include "explain/ExplainPanel.h"
 #include "explain/ToiChart.h"
 #include "lesson/LessonPanel.h"
+#include "view/TableView.h"
+
+#include "Explain.h"
+#include "SetupFile.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QFile>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPlainTextEdit>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -26,6 +35,15 @@ using namespace cuelab;
 namespace {
 
 const QString kHalfBall = QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/half-ball-cut.json");
+const QString kExamples = QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/");
+
+// |a - b| <= 1e-12 (times the size of b when that is larger than 1), per component.
+bool near(const Vec3& a, const Vec3& b, double tol = 1e-12)
+{
+    return (a - b).cwiseAbs().maxCoeff() <= tol * std::max(1.0, b.cwiseAbs().maxCoeff());
+}
+
+QString text(const Vec3& v) { return QStringLiteral("(%1, %2, %3)").arg(v.x(), 0, 'g', 17).arg(v.y(), 0, 'g', 17).arg(v.z(), 0, 'g', 17); }
 
 int firstEvent(const SimulationResult& r, EventKind kind)
 {
@@ -155,6 +173,150 @@ private slots:
         const QImage image = panel_->grab().toImage();
         QVERIFY(image.width() > 400 && image.height() > 600);
         QVERIFY(image.save(QStringLiteral(CUELAB_BINARY_DIR "/explain-dock.png")));
+    }
+
+    // The layer of every collision of several shots against the simulator's own event: the marker
+    // and the normal and impulse arrows start at the contact point, the momentum arrows at the
+    // balls' centres, and each points along the event's vector at the stated scale.
+    void arrowsComeFromTheEvent_data()
+    {
+        QTest::addColumn<QString>("example");
+        for (const char* name : {"half-ball-cut.json", "one-cushion-bank.json", "two-rail-kick.json", "9-ball-break.json"})
+            QTest::newRow(name) << QString::fromLatin1(name);
+    }
+    void arrowsComeFromTheEvent()
+    {
+        QFETCH(QString, example);
+        QString error;
+        const std::optional<Setup> setup = io::loadSetup(kExamples + example, &error);
+        QVERIFY2(setup, qPrintable(error));
+        const SimulationResult r = simulate(*setup);
+        int collisions = 0, others = 0, vertical = 0;
+        for (int i = 0; i < int(r.events.size()); ++i) {
+            const Event& ev = r.events[std::size_t(i)];
+            const explain::Explanation e = explain::explain(r, i, setup->shot);
+            const ViewLayer layer = eventArrowsLayer(e);
+            if (!isCollision(ev.kind)) {
+                QVERIFY2(layer.empty(), qPrintable(QStringLiteral("event %1 is no collision").arg(i)));
+                ++others;
+                continue;
+            }
+            ++collisions;
+            const int bodies = ev.kind == EventKind::BallBall ? 2 : 1;
+            double top = 0.0;
+            for (int k = 0; k < bodies; ++k) top = std::max(top, 2.0 * r.balls[std::size_t(ev.balls[std::size_t(k)])].radius);
+            const double z = top + kArrowPlaneLift;
+            QCOMPARE(arrowPlaneHeight(e), z);
+            const Vec3 contact(ev.contactPoint.x(), ev.contactPoint.y(), z);
+            QCOMPARE(layer.markers.size(), std::size_t(1));
+            QVERIFY(near(layer.markers[0].position, contact));
+            QVERIFY(layer.markers[0].label.contains(QStringLiteral("1 N·s = 1 m")));
+            QVERIFY(layer.arrows.size() >= 3);
+            const LayerArrow& n = layer.arrows.back();
+            QCOMPARE(n.label, QStringLiteral("n"));
+            QVERIFY(near(n.from, contact));
+            QVERIFY2(near((n.to - n.from) / kNormalArrowLength, Vec3(ev.normal.x(), ev.normal.y(), 0.0)), qPrintable(text(n.to)));
+            const LayerArrow& j = layer.arrows[layer.arrows.size() - 2];
+            QVERIFY(near(j.from, contact));
+            // Its horizontal part; the vertical part (a cushion nose above the centre) in the label.
+            const Vec3 horizontal(ev.impulse.x(), ev.impulse.y(), 0.0);
+            QVERIFY2(near((j.to - j.from) / kArrowMetresPerNewtonSecond, horizontal), qPrintable(text(j.to - j.from)));
+            const QString magnitude = QString::number(horizontal.norm(), 'f', 3);
+            QCOMPARE(j.label, std::abs(ev.impulse.z()) < 5e-4
+                                  ? QStringLiteral("J = %1 N·s").arg(magnitude)
+                                  : QStringLiteral("J = %1 N·s, vertical %2 N·s").arg(magnitude, QString::number(ev.impulse.z(), 'f', 3)));
+            if (std::abs(ev.impulse.z()) >= 5e-4) ++vertical;
+            // The momenta: one arrow per ball and phase in which the ball moves, from its centre.
+            std::size_t next = 0;
+            for (int k = 0; k < bodies; ++k) {
+                const Ball& ball = r.balls[std::size_t(ev.balls[std::size_t(k)])];
+                const Vec3 centre(ev.before[std::size_t(k)].position.x(), ev.before[std::size_t(k)].position.y(), z);
+                for (const BallState* s : {&ev.before[std::size_t(k)], &ev.after[std::size_t(k)]}) {
+                    const Vec2 p = ball.mass * s->velocity;
+                    if (kArrowMetresPerNewtonSecond * p.norm() < 1e-4) continue;
+                    QVERIFY(next < layer.arrows.size());
+                    const LayerArrow& a = layer.arrows[next++];
+                    QVERIFY(near(a.from, centre));
+                    QVERIFY2(near((a.to - a.from) / kArrowMetresPerNewtonSecond, Vec3(p.x(), p.y(), 0.0)), qPrintable(text(a.to)));
+                    QVERIFY2(a.label.startsWith((s == &ev.before[std::size_t(k)] ? QStringLiteral("p ") : QStringLiteral("p′ ")) +
+                                                QString::fromStdString(ball.id) + QStringLiteral(" = ")),
+                             qPrintable(a.label));
+                    QVERIFY(a.label.endsWith(QStringLiteral("%1 N·s").arg(p.norm(), 0, 'f', 3)));
+                }
+            }
+            QCOMPARE(layer.arrows.size(), next + 2);
+            // The impulse is the first ball's change of momentum: on screen, p′ = p + J.
+            const Ball& first = r.balls[std::size_t(ev.balls[0])];
+            const Vec2 change = first.mass * (ev.after[0].velocity - ev.before[0].velocity);
+            QVERIFY2((change - ev.impulse.head<2>()).norm() <= 1e-9, qPrintable(QString::number((change - ev.impulse.head<2>()).norm())));
+        }
+        QVERIFY(collisions >= 1);
+        QVERIFY(others >= 1);
+        if (example == QLatin1String("two-rail-kick.json")) QVERIFY(vertical >= 1);  // Han 2005 cushions
+    }
+
+    // Selecting a collision puts its layer in the view (and the transport's next-event step does
+    // too); a transition, a ball or no event clears it; View > Overlays > Collision Arrows hides it.
+    void arrowsFollowTheSelection()
+    {
+        TableView* view = window_->tableView();
+        QAction* toggle = window_->findChild<QAction*>(QStringLiteral("collisionArrowsAction"));
+        QVERIFY(toggle && toggle->isCheckable() && !toggle->toolTip().isEmpty());
+        const auto* overlays = window_->findChild<QMenu*>(QStringLiteral("overlaysMenu"));
+        QVERIFY(overlays && overlays->actions().contains(toggle));
+        toggle->setChecked(true);
+        const auto r = window_->document()->result();
+        const int hit = firstEvent(*r, EventKind::BallBall);
+        const int roll = firstEvent(*r, EventKind::SlideToRoll);
+        QVERIFY(hit >= 0 && roll >= 0);
+        auto layer = [view]() -> const ViewLayer* {
+            const auto it = view->layers().find(kEventArrowsLayer);
+            return it == view->layers().end() ? nullptr : &it->second;
+        };
+        QVERIFY(!layer());
+        window_->selection()->selectEvent(hit);
+        QVERIFY(layer());
+        QVERIFY(layer()->visible);
+        const ViewLayer expected = eventArrowsLayer(explain::explain(*r, hit, window_->document()->setup().shot));
+        QCOMPARE(layer()->arrows.size(), expected.arrows.size());
+        for (std::size_t k = 0; k < expected.arrows.size(); ++k) {
+            QVERIFY(near(layer()->arrows[k].from, expected.arrows[k].from, 0.0));
+            QVERIFY(near(layer()->arrows[k].to, expected.arrows[k].to, 0.0));
+            QCOMPARE(layer()->arrows[k].label, expected.arrows[k].label);
+        }
+        window_->selection()->selectEvent(roll);  // a transition: nothing to draw
+        QVERIFY(!layer());
+        window_->selection()->selectEvent(hit);
+        QVERIFY(layer());
+        window_->selection()->selectBall(0);  // the event is no longer selected
+        QVERIFY(!layer());
+        window_->selection()->selectEvent(hit);
+        window_->selection()->selectEvent(-1);
+        QVERIFY(!layer());
+
+        // The transport's step lands on the collision and selects it.
+        window_->playback()->toStart();
+        QAction* next = window_->transportBar()->nextEventAction();
+        for (int k = 0; k < int(r->events.size()) && window_->selection()->event() != hit; ++k) next->trigger();
+        QCOMPARE(window_->selection()->event(), hit);
+        QVERIFY(layer());
+        next->trigger();
+        QVERIFY(window_->selection()->event() != hit);
+        QCOMPARE(layer() != nullptr, isCollision(r->events[std::size_t(window_->selection()->event())].kind));
+
+        // The toggle hides the arrows and shows them again; a collision selected while hidden stays hidden.
+        window_->selection()->selectEvent(hit);
+        toggle->setChecked(false);
+        QVERIFY(layer() && !layer()->visible);
+        window_->selection()->selectEvent(roll);
+        window_->selection()->selectEvent(hit);
+        QVERIFY(layer() && !layer()->visible);
+        toggle->setChecked(true);
+        QVERIFY(layer() && layer()->visible);
+        // A new document: nothing selected, no arrows.
+        QVERIFY(window_->openFile(kHalfBall));
+        window_->document()->waitForResult();
+        QVERIFY(!layer());
     }
 
 private:

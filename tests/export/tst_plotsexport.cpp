@@ -11,14 +11,20 @@
 #include "outcome/OutcomePanel.h"
 #include "plots/PlotsChartView.h"
 #include "plots/PlotsPanel.h"
+#include "view/Screenshot.h"
+#include "view/TableView.h"
 
 #include "Curves.h"
 
+#include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QFileDialog>
 #include <QLabel>
 #include <QLineSeries>
 #include <QMenu>
 #include <QProcess>
+#include <QSpinBox>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -38,6 +44,23 @@ QByteArray run(const QString& program, const QStringList& arguments, int* status
     if (status) *status = p.exitCode();
     if (err) *err = p.readAllStandardError();
     return p.readAllStandardOutput();
+}
+
+// The share of pixels (0..1) whose colour differs by more than `tolerance` (0..255) in a channel.
+double differingShare(const QImage& a, const QImage& b, int tolerance = 0)
+{
+    if (a.size() != b.size()) return 1.0;
+    const QImage x = a.convertToFormat(QImage::Format_ARGB32), y = b.convertToFormat(QImage::Format_ARGB32);
+    qsizetype differing = 0;
+    for (int row = 0; row < x.height(); ++row) {
+        const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(row));
+        const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(row));
+        for (int col = 0; col < x.width(); ++col)
+            if (std::abs(qRed(p[col]) - qRed(q[col])) > tolerance || std::abs(qGreen(p[col]) - qGreen(q[col])) > tolerance ||
+                std::abs(qBlue(p[col]) - qBlue(q[col])) > tolerance)
+                ++differing;
+    }
+    return static_cast<double>(differing) / (static_cast<double>(x.width()) * x.height());
 }
 
 QByteArray readAll(const QString& path)
@@ -64,6 +87,7 @@ private slots:
     void eventsJsonEqualsSimulate();
     void cancelledExportKeepsTheFile();
     void headlessDiagrams();
+    void viewPngFromTheCurrentCamera();
 
 private:
     QTemporaryDir dir_;
@@ -280,6 +304,91 @@ void TestPlotsExport::headlessDiagrams()
     run(binary("cuelab"), {QStringLiteral("--screenshot"), QStringLiteral("/proc/d.svg"), examplePath("two-rail-kick.json")}, &status, &err);
     QCOMPARE(status, 1);
     QVERIFY2(err.contains("/proc/d.svg: cannot write"), err.constData());
+}
+
+// File > Export > View as PNG offers the table view's own camera first and uses it by default: the
+// image written is the view's orbit camera exactly (its pose, time, overlays and layers), not a
+// preset, and at the view's own size it looks as the live view does.
+void TestPlotsExport::viewPngFromTheCurrentCamera()
+{
+    TableView* view = window_->tableView();
+    window_->playback()->setTime(0.45);
+    QCOMPARE(view->time(), 0.45);
+    view->setOverlayVisible(Overlay::Trails, false);  // a switch the presets' default rendering keeps on
+    ViewLayer marks;
+    marks.arrows.push_back({Vec3(1.0, 0.4, 0.03), Vec3(1.4, 0.7, 0.03), QColor(255, 255, 255), 4.0f, QStringLiteral("mark")});
+    view->setLayer(QStringLiteral("test"), marks);
+    // A pose no preset has: turned, lowered and closer, looking at a point off the table's centre.
+    view->camera().orbit(57.0f, -31.0f);
+    view->camera().zoomTowards(QVector3D(0.9f, 0.5f, 0.0f), 0.7f);
+    const CameraPose pose = view->camera().pose();
+
+    // Drive the dialog as a user who keeps the default camera and asks for 640x400.
+    QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
+    const QString path = dir_.filePath(QStringLiteral("view.png"));
+    QString defaultChoice;
+    QTimer driver;
+    QObject::connect(&driver, &QTimer::timeout, [&] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (!modal) return;
+        if (modal->objectName() == QLatin1String("exportViewPngDialog")) {
+            auto* camera = modal->findChild<QComboBox*>(QStringLiteral("exportViewCamera"));
+            defaultChoice = camera ? camera->currentText() : QStringLiteral("<no camera box>");
+            modal->findChild<QSpinBox*>(QStringLiteral("exportViewWidth"))->setValue(640);
+            modal->findChild<QSpinBox*>(QStringLiteral("exportViewHeight"))->setValue(400);
+            static_cast<QDialog*>(modal)->accept();
+        } else if (auto* files = qobject_cast<QFileDialog*>(modal)) {
+            files->selectFile(path);
+            static_cast<QDialog*>(files)->accept();  // QFileDialog::accept, protected there
+        }
+    });
+    driver.start(50);
+    window_->findChild<QAction*>(QStringLiteral("exportViewPng"))->trigger();
+    driver.stop();
+    QCOMPARE(defaultChoice, QStringLiteral("Current view"));
+    QImage written;
+    QVERIFY2(written.load(path), qPrintable(path));
+    QCOMPARE(written.size(), QSize(640, 400));
+
+    // The renderer set up by hand as the view is, from the view's pose: the same image, pixel for pixel.
+    SceneImageRenderer renderer;
+    for (const auto& [name, layer] : view->layers()) renderer.setLayer(name, layer);
+    std::bitset<kOverlayCount> overlays = defaultOverlays();
+    overlays.reset(static_cast<std::size_t>(Overlay::Trails));
+    renderer.setOverlays(overlays);
+    renderer.setSelectedBall(view->selectedBall());
+    renderer.setHighlightedEvent(view->highlightedEvent());
+    QImage expected;
+    QString error;
+    QVERIFY2(renderer.render(view->scene(), 0.45, pose, QSize(640, 400), &expected, &error), qPrintable(error));
+    QCOMPARE(differingShare(written, expected), 0.0);
+    // ... and unlike every preset's picture.
+    for (const CameraPreset preset : {CameraPreset::Top, CameraPreset::Player, CameraPreset::Side}) {
+        QImage other;
+        QVERIFY2(renderer.render(view->scene(), 0.45, preset, QSize(640, 400), &other, &error), qPrintable(error));
+        const double share = differingShare(written, other, 8);
+        QVERIFY2(share > 0.2, qPrintable(QStringLiteral("preset %1: only %2 of the pixels differ").arg(int(preset)).arg(share)));
+    }
+
+    // At the view's own size the picture is what the live view shows (up to the antialiasing of
+    // its lines and labels), and far from the closest preset.
+    const QImage live = view->grabFramebuffer();
+    QImage same;
+    QVERIFY2(renderCurrentView(*view, live.size(), &same, &error), qPrintable(error));
+    const double liveShare = differingShare(same, live, 24);
+    double presetShare = 1.0;
+    for (const CameraPreset preset : {CameraPreset::Top, CameraPreset::Player, CameraPreset::Side}) {
+        QImage other;
+        QVERIFY2(rendererLike(*view).render(view->scene(), 0.45, preset, live.size(), &other, &error), qPrintable(error));
+        presetShare = std::min(presetShare, differingShare(other, live, 24));
+    }
+    qInfo("current view vs live view: %.4f of the pixels differ; the closest preset: %.4f", liveShare, presetShare);
+    QVERIFY2(liveShare < 0.02, qPrintable(QString::number(liveShare)));
+    QVERIFY(presetShare > 0.2);
+
+    view->clearLayer(QStringLiteral("test"));
+    view->setOverlayVisible(Overlay::Trails, true);
+    view->setCameraPreset(CameraPreset::Top, false);
 }
 
 QTEST_MAIN(TestPlotsExport)

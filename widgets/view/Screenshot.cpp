@@ -4,6 +4,7 @@
 #include "OverlayLabels.h"
 #include "SceneFraming.h"
 #include "TableRenderer.h"
+#include "TableView.h"
 
 #include <QGuiApplication>
 #include <QOffscreenSurface>
@@ -22,7 +23,33 @@ bool renderSceneToImage(const ViewScene& scene, double time, CameraPreset preset
     return SceneImageRenderer().render(scene, time, preset, size, out, error);
 }
 
+SceneImageRenderer rendererLike(const TableView& view)
+{
+    SceneImageRenderer r;
+    for (const auto& [name, layer] : view.layers()) r.setLayer(name, layer);
+    std::bitset<kOverlayCount> overlays;
+    for (int i = 0; i < kOverlayCount; ++i) overlays.set(static_cast<std::size_t>(i), view.overlayVisible(static_cast<Overlay>(i)));
+    r.setOverlays(overlays);
+    r.setSelectedBall(view.selectedBall());
+    r.setHighlightedEvent(view.highlightedEvent());
+    r.setPathScope(view.pathScope());
+    r.setLabelScope(view.labelScope());
+    return r;
+}
+
+bool renderCurrentView(const TableView& view, QSize size, QImage* out, QString* error)
+{
+    return rendererLike(view).render(view.scene(), view.time(), view.camera().pose(), size, out, error);
+}
+
 bool SceneImageRenderer::render(const ViewScene& scene, double time, CameraPreset preset, QSize size, QImage* out,
+                                QString* error) const
+{
+    const float aspect = size.height() > 0 ? static_cast<float>(size.width()) / static_cast<float>(size.height()) : 1.0f;
+    return render(scene, time, OrbitCamera::presetPose(preset, presetFrameFor(scene, aspect)), size, out, error);
+}
+
+bool SceneImageRenderer::render(const ViewScene& scene, double time, const CameraPose& pose, QSize size, QImage* out,
                                 QString* error) const
 {
     auto fail = [error](const QString& message) {
@@ -66,7 +93,7 @@ bool SceneImageRenderer::render(const ViewScene& scene, double time, CameraPrese
             if (renderer.initialize(&problem)) {
                 const float aspect = static_cast<float>(size.width()) / static_cast<float>(size.height());
                 OrbitCamera camera;
-                camera.setPose(OrbitCamera::presetPose(preset, presetFrameFor(scene, aspect)));
+                camera.setPose(pose);
                 renderer.setScene(scene);
                 renderer.setLayers(layers_);
                 RenderFrame frame;
@@ -78,12 +105,13 @@ bool SceneImageRenderer::render(const ViewScene& scene, double time, CameraPrese
                 frame.time = std::clamp(time, 0.0, std::max(scene.result->endTime, 0.0));
                 frame.overlays = overlays_;
                 frame.selectedBall = selectedBall_;
+                frame.highlightedEvent = highlightedEvent_;
                 frame.pathScope = pathScope_;
                 renderer.render(frame);
                 *out = fbo.toImage().convertToFormat(QImage::Format_ARGB32_Premultiplied);
                 QPainter painter(out);
                 paintOverlayLabels(painter, scene,
-                                   LabelFrame{frame.viewProjection, size, frame.time, frame.overlays, -1, selectedBall_,
+                                   LabelFrame{frame.viewProjection, size, frame.time, frame.overlays, highlightedEvent_, selectedBall_,
                                               labelScope_, &layers_});
                 painter.end();
                 ok = true;

@@ -1,14 +1,17 @@
 // The Explain dock (the selected event's mathematics, its time-of-impact polynomial, momenta and
-// energy), the Lesson dock (the setup's name and notes) and File > Export > Explanation….
+// energy), the selected collision's arrows in the table view (View > Overlays > Collision Arrows),
+// the Lesson dock (the setup's name and notes) and File > Export > Explanation….
 
 #include "Features.h"
 #include "MainWindow.h"
 
 #include "editor/Document.h"
 #include "editor/Selection.h"
+#include "explain/EventArrows.h"
 #include "explain/ExplainExport.h"
 #include "explain/ExplainPanel.h"
 #include "lesson/LessonPanel.h"
+#include "view/TableView.h"
 
 #include <QAction>
 #include <QFileDialog>
@@ -16,6 +19,9 @@
 #include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
+#include <QSettings>
+
+#include <memory>
 
 namespace cuelab {
 
@@ -49,6 +55,51 @@ void exportExplanation(MainWindow& w, ExplainPanel* panel)
         QMessageBox::warning(&w, QObject::tr("Export explanation"), error);
 }
 
+const QString kArrowsKey = QStringLiteral("overlays/collisionArrows");
+
+// The arrows of the selected collision in the table view, from the Explain dock's derivation of it.
+// Stepping the transport from event to event selects the event it lands on, so they follow it too.
+// Cleared when the selected event is not a collision and when no event is selected (the dock keeps
+// showing its last event then; the arrows, drawn where the collision happened, do not stay).
+void installEventArrows(MainWindow& w, ExplainPanel* panel)
+{
+    auto* toggle = new QAction(QObject::tr("Collision &Arrows"), &w);
+    toggle->setObjectName(QStringLiteral("collisionArrowsAction"));
+    toggle->setCheckable(true);
+    toggle->setChecked(QSettings().value(kArrowsKey, true).toBool());
+    const QString tip = QObject::tr("In the table view: the selected collision's contact point, contact normal and "
+                                    "impulse, and each ball's momentum before and after, as labelled arrows");
+    toggle->setToolTip(tip);
+    toggle->setStatusTip(tip);
+    auto* overlays = w.findChild<QMenu*>(QStringLiteral("overlaysMenu"));
+    (overlays ? overlays : w.menu(WindowMenu::View))->addAction(toggle);
+
+    struct Shown {
+        int event = -1;  // the event whose arrows are in the view, -1 none
+        bool visible = true;
+    };
+    auto shown = std::make_shared<Shown>();
+    const auto update = [&w, panel, toggle, shown](bool rebuild) {
+        const std::optional<explain::Explanation>& e = panel->explanation();
+        const bool selected = e && w.selection()->event() == e->event;
+        const int event = selected && isCollision(e->kind) ? e->event : -1;
+        if (!rebuild && event == shown->event && toggle->isChecked() == shown->visible) return;
+        shown->event = event;
+        shown->visible = toggle->isChecked();
+        if (event < 0) return w.tableView()->clearLayer(kEventArrowsLayer);
+        ViewLayer layer = eventArrowsLayer(*e);
+        layer.visible = shown->visible;
+        w.tableView()->setLayer(kEventArrowsLayer, std::move(layer));
+    };
+    QObject::connect(panel, &ExplainPanel::explanationChanged, &w, [update] { update(true); });
+    QObject::connect(w.selection(), &Selection::eventChanged, &w, [update] { update(false); });
+    QObject::connect(toggle, &QAction::toggled, &w, [update](bool on) {
+        QSettings().setValue(kArrowsKey, on);
+        update(false);
+    });
+    update(true);
+}
+
 }  // namespace
 
 void installExplain(MainWindow& w)
@@ -59,6 +110,7 @@ void installExplain(MainWindow& w)
     beside.area = Qt::RightDockWidgetArea;
     beside.tabifyWith = QStringLiteral("InspectorDock");
     w.addPanel(panel, QObject::tr("Explain"), QStringLiteral("ExplainDock"), beside);
+    installEventArrows(w, panel);
 
     auto* lesson = new LessonPanel(w.document());
     lesson->setObjectName(QStringLiteral("lessonPanel"));

@@ -106,11 +106,14 @@ std::shared_ptr<const SimulationResult> currentResult(MainWindow& window)
     return r;
 }
 
+constexpr int kCurrentView = -1;  // the camera box's item for the table view's own camera (else a CameraPreset)
+
 void exportViewPng(MainWindow& window)
 {
     std::shared_ptr<const SimulationResult> result = currentResult(window);
     if (!result) return;
     QDialog dialog(&window);
+    dialog.setObjectName(QStringLiteral("exportViewPngDialog"));
     dialog.setWindowTitle(tr("Export the View as PNG"));
     auto* width = new QSpinBox(&dialog);
     auto* height = new QSpinBox(&dialog);
@@ -118,11 +121,18 @@ void exportViewPng(MainWindow& window)
         s->setRange(16, 8192);
         s->setSuffix(tr(" px"));
     }
+    width->setObjectName(QStringLiteral("exportViewWidth"));
+    height->setObjectName(QStringLiteral("exportViewHeight"));
     width->setValue(1920);
     height->setValue(1080);
     width->setToolTip(tr("Image width in pixels"));
     height->setToolTip(tr("Image height in pixels"));
+    // The camera: the table view's own, as the user left it (the default), or a preset.
     auto* camera = new QComboBox(&dialog);
+    camera->setObjectName(QStringLiteral("exportViewCamera"));
+    camera->addItem(tr("Current view"), QVariant::fromValue(kCurrentView));
+    camera->setItemData(0, tr("The table view's own camera, time, overlays, layers and selection, exactly as shown"),
+                        Qt::ToolTipRole);
     camera->addItem(tr("Top (whole table)"), QVariant::fromValue(static_cast<int>(CameraPreset::Top)));
     camera->addItem(tr("Player (behind the cue ball)"), QVariant::fromValue(static_cast<int>(CameraPreset::Player)));
     camera->addItem(tr("Side"), QVariant::fromValue(static_cast<int>(CameraPreset::Side)));
@@ -137,12 +147,17 @@ void exportViewPng(MainWindow& window)
     if (dialog.exec() != QDialog::Accepted) return;
     const QString path = askPath(window, tr("Export the View as PNG"), QStringLiteral(".png"), tr("PNG images (*.png)"));
     if (path.isEmpty()) return;
-    ViewScene scene = window.tableView()->scene();
+    const TableView& view = *window.tableView();
+    const QSize size(width->value(), height->value());
+    const int choice = camera->currentData().toInt();
     QImage image;
     QString error;
     // The view's own renderer, offscreen, at the chosen size (an OpenGL context: the GUI thread).
-    if (!renderSceneToImage(scene, window.playback()->time(), static_cast<CameraPreset>(camera->currentData().toInt()),
-                            QSize(width->value(), height->value()), &image, &error)) {
+    const bool rendered = choice == kCurrentView
+                              ? renderCurrentView(view, size, &image, &error)
+                              : renderSceneToImage(view.scene(), window.playback()->time(), static_cast<CameraPreset>(choice),
+                                                   size, &image, &error);
+    if (!rendered) {
         QMessageBox::warning(&window, tr("Export"), error);
         return;
     }
@@ -191,7 +206,7 @@ void installExport(MainWindow& window)
 
     QAction* png = menu->addAction(tr("View as &PNG..."), w, [w] { exportViewPng(*w); });
     png->setObjectName(QStringLiteral("exportViewPng"));
-    png->setStatusTip(tr("Render the table view at a chosen size into a PNG image"));
+    png->setStatusTip(tr("Render the table view at a chosen size into a PNG image, from its current camera or a preset"));
     QAction* svg = menu->addAction(tr("Shot Diagram as &SVG..."), w, [w] { exportDiagram(*w, false); });
     svg->setObjectName(QStringLiteral("exportDiagramSvg"));
     svg->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+E")));

@@ -1,0 +1,69 @@
+#include "EventArrows.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cuelab {
+
+namespace {
+
+constexpr double kShortestArrow = 1e-4;        // m: shorter arrows (a ball at rest) are not drawn
+constexpr double kVerticalImpulseShown = 5e-4;  // N·s: a smaller vertical impulse rounds to 0.000 in the label
+
+// The context lupdate gives tr() calls in functions of namespace cuelab (resources/translations).
+QString tr(const char* text) { return QCoreApplication::translate("cuelab", text); }
+
+QString newtonSeconds(double value) { return QString::number(value, 'f', 3); }
+
+}  // namespace
+
+double arrowPlaneHeight(const explain::Explanation& e)
+{
+    double top = 0.0;
+    for (const explain::Body& b : e.bodies) top = std::max(top, 2.0 * b.radius);
+    return top + kArrowPlaneLift;
+}
+
+ViewLayer eventArrowsLayer(const explain::Explanation& e, const EventArrowColours& colours)
+{
+    ViewLayer layer;
+    if (!isCollision(e.kind) || !e.hasContact || e.bodies.empty()) return layer;
+    const double z = arrowPlaneHeight(e);
+    const Vec3 contact(e.contactPoint.x(), e.contactPoint.y(), z);
+
+    LayerMarker& marker = layer.markers.emplace_back();
+    marker.position = contact;
+    marker.colour = colours.contact;
+    marker.size = 12.0f;
+    marker.label = tr("contact; 1 N·s = %1 m").arg(kArrowMetresPerNewtonSecond);
+
+    for (const explain::Body& b : e.bodies) {
+        const QString id = QString::fromStdString(b.id);
+        const Vec3 centre(b.before.position.x(), b.before.position.y(), z);
+        const Vec2 before = b.momentumBefore(), after = b.momentumAfter();
+        if (kArrowMetresPerNewtonSecond * before.norm() >= kShortestArrow)
+            layer.arrows.push_back({centre, centre + kArrowMetresPerNewtonSecond * Vec3(before.x(), before.y(), 0.0),
+                                    colours.momentumBefore, 3.5f,
+                                    tr("p %1 = %2 N·s").arg(id, newtonSeconds(before.norm()))});
+        if (kArrowMetresPerNewtonSecond * after.norm() >= kShortestArrow)
+            layer.arrows.push_back({centre, centre + kArrowMetresPerNewtonSecond * Vec3(after.x(), after.y(), 0.0),
+                                    colours.momentumAfter, 3.5f,
+                                    tr("p′ %1 = %2 N·s").arg(id, newtonSeconds(after.norm()))});
+    }
+    // The impulse by its horizontal part (see the header), its vertical part, if any, in the label;
+    // then the normal, drawn last, on top: it lies along the line of centres, under the second
+    // ball's momentum after a frictionless hit.
+    const Vec3 horizontal(e.impulse.x(), e.impulse.y(), 0.0);
+    const QString magnitude = newtonSeconds(horizontal.norm());
+    layer.arrows.push_back({contact, contact + kArrowMetresPerNewtonSecond * horizontal, colours.impulse, 4.0f,
+                            std::abs(e.impulse.z()) < kVerticalImpulseShown
+                                ? tr("J = %1 N·s").arg(magnitude)
+                                : tr("J = %1 N·s, vertical %2 N·s").arg(magnitude, newtonSeconds(e.impulse.z()))});
+    const Vec3 normal(e.normal.x(), e.normal.y(), 0.0);
+    layer.arrows.push_back({contact, contact + kNormalArrowLength * normal, colours.normal, 2.0f, tr("n")});
+    return layer;
+}
+
+}  // namespace cuelab
