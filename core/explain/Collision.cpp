@@ -44,6 +44,7 @@ void addGroupStep(Explanation& e, const Event& ev)
         b.out("v" + l + "_after", "v″" + sym, ev.after[k].velocity, "m/s")
             .out("w" + l + "_after", "ω″" + sym, ev.after[k].spin, "rad/s");
     }
+    b.out("J", "J", ev.impulse, "N s");
 }
 
 }  // namespace
@@ -135,8 +136,8 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
             .out("v_a_after", "v″_a", va, "m/s")
             .out("v_b_after", "v″_b", vb, "m/s")
             .out("J", "J", J, "N s");
-        addGroupStep(e, ev);
     }
+    if (ev.held || ev.grouped) addGroupStep(e, ev);
     addStateAfterStep(e);
     addEnergyStep(e, "The collision turns some energy into sound and heat (restitution e < 1, friction).");
     addMomentumStep(e, "The impulses on the two balls are equal and opposite, so their horizontal momentum is "
@@ -226,8 +227,8 @@ void explainCushion(const SimulationResult& r, int index, Explanation& e)
             .out("hold", "ΔP", in.mass * separation, "N s")
             .out("v_after", "v″", Vec2(res.after.velocity - separation * in.normal), "m/s")
             .out("J", "J", J, "N s");
-        addGroupStep(e, ev);
     }
+    if (ev.held || ev.grouped) addGroupStep(e, ev);
     addStateAfterStep(e);
     addEnergyStep(e, "The cushion absorbs part of the energy (restitution e < 1, friction at the contact).");
     addMomentumStep(e, "The cushion pushes the ball: the change of its momentum is the cushion's horizontal "

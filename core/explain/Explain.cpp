@@ -81,6 +81,12 @@ SegmentBefore segmentBefore(const SimulationResult& r, int ball, int index)
         for (std::size_t q = timeline.size(); q-- > 0;) {
             if (timeline[q].start > t) continue;
             const BallState s = segmentState(timeline[q], R, r.physics, t - timeline[q].start);
+            // A transition ends the very segment it explains (the segment it begins starts from a
+            // state that may equal its before-state bit for bit).
+            if (isTransition(ev.kind)) {
+                const Transition tr = nextTransition(timeline[q].state, R, r.physics, timeline[q].push);
+                if (tr.after == kNever || timeline[q].start + tr.after != t) continue;
+            }
             if (s.position == before.position && s.velocity == before.velocity && s.spin == before.spin) {
                 k = q;
                 break;

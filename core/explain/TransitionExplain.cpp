@@ -108,7 +108,7 @@ void explainTransition(const SimulationResult& r, int index, Explanation& e)
         .out("r_after", "r′", last.position, "m")
         .out("v_after", "v′", last.velocity, "m/s")
         .out("w_after", "ω′", last.spin, "rad/s");
-    if (pushed) {
+    if (pushed || ev.grouped) {
         // The group is solved again at the transition (Contact.h): the simulator goes on from these.
         StepBuilder(e.steps, "The held group is solved again",
                     "A ball of a held push changed its motion, so the contact forces of its group are solved "

@@ -20,7 +20,7 @@ struct Response {
 bool restsOnCloth(const BallState& s, double radius)
 {
     if (s.motion == MotionState::Sliding) return false;
-    if (s.motion == MotionState::Rolling) return s.velocity.norm() <= kSpeedEpsilon;
+    if (s.motion == MotionState::Rolling) return s.velocity.norm() <= kRollOffSpeed;
     return classify(s, radius) != MotionState::Sliding && classify(s, radius) != MotionState::Rolling;
 }
 
@@ -129,7 +129,10 @@ std::vector<double> seatContacts(std::vector<ContactBall>& balls, const std::vec
     const std::size_t n = balls.size();
     std::vector<Response> resp(n);
     PhysicsParams none;
-    for (std::size_t i = 0; i < n; ++i) resp[i] = responseOf(balls[i], none);
+    for (std::size_t i = 0; i < n; ++i) {
+        resp[i] = responseOf(balls[i], none);
+        if (resp[i].atRest) resp[i].c = 0.0;  // a ball at rest is not set moving by a re-seat: the cloth holds it
+    }
     Eigen::MatrixXd A;
     Eigen::VectorXd b;
     buildSystem(balls, links, resp, A, b);
@@ -149,7 +152,7 @@ std::vector<double> seatContacts(std::vector<ContactBall>& balls, const std::vec
         if (dv[i].isZero(0.0)) continue;
         BallState& s = balls[i].state;
         s.velocity += dv[i];
-        if (s.motion != MotionState::Sliding) {  // rolling (or rolling off from rest): u stays 0
+        if (s.motion != MotionState::Sliding) {  // rolling: u stays 0
             s.motion = MotionState::Rolling;
             s.spin.x() = -s.velocity.y() / balls[i].radius;
             s.spin.y() = s.velocity.x() / balls[i].radius;

@@ -57,6 +57,10 @@ inline constexpr double kSegmentGap = 1e-9;
 // or two balls rolling side by side at one speed) stays held with no force.
 inline constexpr double kRestingAcceleration = 1e-9;
 
+// m/s: a pushed rolling ball slower than this counts as rolling off from rest (its rolling
+// resistance acts against the push, not along a velocity that is rounding).
+inline constexpr double kRollOffSpeed = 1e-9;
+
 // s: the longest held segment (the group is solved again at least this often).
 inline constexpr double kMaxHeldSegment = 0.25;
 
@@ -101,7 +105,7 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
 
 // Re-seats held contacts: the normal impulses that bring every link's relative normal velocity
 // (vn, m/s, > 0 parting) to zero together, applied to the balls (velocities, and the spins of rolling
-// balls, which keep rolling; a ball at rest that is moved rolls). Removing relative normal velocity
+// balls, which keep rolling; a ball at rest is held by the cloth and takes no part). Removing relative normal velocity
 // never adds energy (it is -1/2 vn.A+ vn). Returns the impulses (N s per link, > 0 pushing apart).
 std::vector<double> seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
                                  const std::vector<double>& vn);

@@ -39,8 +39,16 @@ double circleContactTime(const Vec2& d0, const Vec2& d1, const Vec2& d2, double 
         // not opening (normal speed below kRestingSpeed) while the accelerations press the bodies
         // together: |d|^2 then falls from s = 0 on, a double root at 0 no root finder reports.
         const double normalSpeed = d0.dot(d1) / dist;
-        if (normalSpeed < 0.0) return 0.0;
-        if (normalSpeed <= kRestingSpeed && d1.squaredNorm() + 2.0 * d0.dot(d2) < 0.0) return 0.0;
+        if (normalSpeed < -kRestingSpeed) return 0.0;
+        const double press = d1.squaredNorm() + 2.0 * d0.dot(d2);  // (|d|^2)'' / 2 at s = 0
+        if (normalSpeed <= kRestingSpeed && press < 0.0) return 0.0;
+        // Parting so slowly that the accelerations bring the bodies back before the gap has opened
+        // past kContactTolerance: |d|'' = (press - vn^2) / |d| < 0, the gap's largest value is
+        // gap + vn^2 / (2 |d|''|). That is a resting contact too (a root finder cannot see a gap of
+        // 1e-18 m come back down), so the contact is now.
+        const double curvature = (press - normalSpeed * normalSpeed) / dist;
+        if (curvature < 0.0 && (dist - reach) + normalSpeed * normalSpeed / (-2.0 * curvature) <= kContactTolerance)
+            return 0.0;
     }
     return firstFallingRoot(distanceQuartic(d0, d1, d2, reach), horizon);
 }
@@ -99,7 +107,12 @@ double cushionTime(const Path& p, double radius, const CushionSegment& seg, doub
     auto onSegment = [&](double s) { return onCushionSegment(p, seg, s); };
     // Touching: a contact now if the ball approaches, or rests against the nose (normal speed below
     // kRestingSpeed) while its acceleration presses it in.
-    if (std::abs(g0) <= kContactTolerance && (g1 < 0.0 || (g1 <= kRestingSpeed && g2 < 0.0)) && onSegment(0.0))
+    if (std::abs(g0) <= kContactTolerance && (g1 < -kRestingSpeed || (g1 <= kRestingSpeed && g2 < 0.0)) && onSegment(0.0))
+        return 0.0;
+    // Parting so slowly that it comes back before the gap has opened past kContactTolerance (its
+    // largest value g0 + g1^2 / (4 |g2|)): a resting contact, now (see circleContactTime).
+    if (std::abs(g0) <= kContactTolerance && g1 > 0.0 && g2 < 0.0 && g0 + g1 * g1 / (-4.0 * g2) <= kContactTolerance &&
+        onSegment(0.0))
         return 0.0;
 
     // Roots of the quadratic, stably (no cancellation between -g1 and the square root).

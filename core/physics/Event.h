@@ -52,6 +52,9 @@ struct Event {
     // that took the law's small separation speed away; it is included in `impulse`.
     bool held = false;
     double holdImpulse = 0.0;
+    // The event's balls were solved together with other held contacts (a group of three or more
+    // bodies): their after-states include the impulses that re-seat those contacts too.
+    bool grouped = false;
 };
 
 }  // namespace cuelab

@@ -1,5 +1,7 @@
 #include "Motion.h"
 
+#include "Contact.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -189,7 +191,7 @@ Vec2 forcedDirection(const BallState& s, double radius, const Vec2& push)
         return n > 0.0 ? Vec2(u / n) : Vec2(Vec2::Zero());
     }
     const double v = s.velocity.norm();
-    if (v > kSpeedEpsilon) return s.velocity / v;  // (slower: rolling off from rest, along the push)
+    if (v > kRollOffSpeed) return s.velocity / v;  // (slower: rolling off from rest, along the push)
     const double q = push.norm();
     return q > 0.0 ? Vec2(push / q) : Vec2(Vec2::Zero());
 }

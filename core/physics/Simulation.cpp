@@ -5,6 +5,7 @@
 #include "Simulation.h"
 
 #include "BallBallCollision.h"
+#include "BallContact.h"
 #include "BroadPhase.h"
 #include "CueImpact.h"
 #include "CushionCollision.h"
@@ -14,6 +15,8 @@
 #include "Contact.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -96,9 +99,10 @@ private:
     // After an event: solves the held group its balls belong to (with a contact that may begin
     // holding, `candidate`) and gives every ball of that group its new segment. Returns 0 when no
     // group is touched (the caller segments the balls freely), 1 when settled, 2 when the candidate
-    // is not pressed and `forceHold` is false (nothing changed).
+    // is not pressed and `forceHold` is false and it touches no held group (nothing changed), 3 when
+    // such a candidate was seated with the group it touches but not held.
     int settle(double t, const std::vector<int>& eventBalls, const std::vector<BallState>& eventStates,
-               const HeldContact* candidate, bool forceHold);
+               const HeldContact* candidate, bool forceHold, double candidateSeparation = 0.0);
     void finishEvent(double t, const Event& e);
     double turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts, double t) const;
 
@@ -129,6 +133,7 @@ private:
     std::vector<HeldContact> held_;   // the contacts held now, in the order they were formed
     std::vector<int> heldCount_;      // per ball, how many of held_ involve it
     std::vector<double> regroupAt_;   // s, when a held group is solved again (kNever if none)
+    std::size_t lastGroupSize_ = 0;   // how many contacts the last settle() solved
 };
 
 Path Simulator::pathNow(int i, double t) const
@@ -335,6 +340,10 @@ bool pushedTransitionKind(MotionState before, MotionState after, EventKind& kind
         else return false;
         return true;
     }
+    if (before == MotionState::Spinning && after == MotionState::Stationary) {
+        kind = EventKind::SpinToStop;
+        return true;
+    }
     return false;
 }
 
@@ -373,7 +382,7 @@ double Simulator::turnLimit(const std::vector<int>& members, const std::vector<H
         if (s.motion == MotionState::Sliding) {
             x0 = slipVelocity(s, radius(m));
             if (x0.norm() > 0.0) rate = q - (3.5 * p_.muSlide * g) * x0.normalized();
-        } else if (s.motion == MotionState::Rolling && !s.velocity.isZero(0.0)) {
+        } else if (s.motion == MotionState::Rolling && s.velocity.norm() > kRollOffSpeed) {  // (slower: from rest)
             x0 = s.velocity;
             rate = (5.0 / 7.0) * q - (p_.muRoll * g) * x0.normalized();
         }
@@ -404,7 +413,7 @@ double Simulator::turnLimit(const std::vector<int>& members, const std::vector<H
             rel0 = pb.c0 - pa.c0;
             rel1 = pb.c1 - pa.c1;
             rel2 = pb.c2 - pa.c2;
-            D = radius(h.a) + radius(h.other);
+            D = touchDistance(radius(h.a), radius(h.other));
         } else {
             const JawTip& jaw = table_.jaws[at(h.other)];
             rel0 = jaw.centre - pa.c0;
@@ -427,8 +436,9 @@ double Simulator::turnLimit(const std::vector<int>& members, const std::vector<H
 }
 
 int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::vector<BallState>& eventStates,
-                      const HeldContact* candidate, bool forceHold)
+                      const HeldContact* candidate, bool forceHold, double candidateSeparation)
 {
+    lastGroupSize_ = 0;
     bool touched = candidate != nullptr;
     for (int b : eventBalls) touched = touched || heldCount_[at(b)] > 0;
     if (!touched) return 0;
@@ -463,10 +473,28 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
     auto local = [&](int b) {
         return static_cast<int>(std::find(members.begin(), members.end(), b) - members.begin());
     };
+    std::vector<std::pair<std::size_t, int>> logged;  // transitions of other members due now: event, ball
     for (std::size_t m = 0; m < members.size(); ++m) {
         const int b = members[m];
         const auto ev = std::find(eventBalls.begin(), eventBalls.end(), b);
-        balls[m].state = ev != eventBalls.end() ? eventStates[static_cast<std::size_t>(ev - eventBalls.begin())] : stateNow(b, t);
+        if (ev != eventBalls.end()) {
+            balls[m].state = eventStates[static_cast<std::size_t>(ev - eventBalls.begin())];
+        } else if (end_[at(b)] <= t) {
+            // Its own transition is due at this very instant: it happens first (its event is logged
+            // here, so that solving the group now does not swallow it).
+            Event tr;
+            tr.time = t;
+            tr.balls[0] = b;
+            tr.before[0] = stateNow(b, t);
+            tr.after[0] = applyTransition(state_[at(b)], radius(b), p_, push_[at(b)]);
+            balls[m].state = tr.after[0];
+            if (pushedTransitionKind(state_[at(b)].motion, tr.after[0].motion, tr.kind)) {
+                logged.emplace_back(r_.events.size(), b);
+                r_.events.push_back(tr);
+            }
+        } else {
+            balls[m].state = stateNow(b, t);
+        }
         balls[m].radius = radius(b);
         balls[m].mass = mass(b);
     }
@@ -491,7 +519,7 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
             const Vec2 d = sb.position - sa.position;
             link.b = local(h.other);
             link.normal = d.normalized();
-            gap = d.norm() - radius(h.a) - radius(h.other);
+            gap = d.norm() - touchDistance(radius(h.a), radius(h.other));
             vn = (sb.velocity - sa.velocity).dot(link.normal);
         } else if (h.body == ContactBody::Cushion) {
             const CushionSegment& seg = table_.cushions[at(h.other)];
@@ -515,17 +543,42 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
     for (std::size_t k : fromHeld) consider(held_[k], false);
     if (candidate) consider(*candidate, true);
 
+    lastGroupSize_ = links.size() + (members.size() - eventBalls.size());  // contacts, and others re-segmented
     bool seat = false;
     for (double vn : normalSpeeds) seat = seat || std::abs(vn) > 1e-14;  // m/s: rounding is left alone
     if (seat) seatContacts(balls, links, normalSpeeds);
     ContactSolution sol;
     if (!links.empty()) sol = solveContacts(balls, links, p_);
+    bool seatedOnly = false;
+    (void)candidateSeparation;
     if (candidate) {
         const bool pressed = !links.empty() && contacts.back() == *candidate && sol.active.back();
-        if (!pressed && !forceHold) return 2;
-        if (!links.empty() && contacts.back() == *candidate) sol.active.back() = 1;
+        // A resting candidate (no approach, up to kRestingSpeed, or a law that does not part the
+        // bodies) is held even when the solve does not press it (with no force: its bodies part as
+        // they will), so that it cannot be found again and again at one instant; the next solve
+        // releases it.
+        if (!pressed && !forceHold) {
+            // A pair on its own keeps its law's result. In a held group the candidate (parting slower
+            // than kHoldSpeed) is seated with the others instead, its separation taken away as theirs
+            // are: micro-bounces inside a pressed group are inelastic, and re-seating the others
+            // cannot drive it back in at this instant (a ball wedged between a rail and a jaw). It is
+            // not held; the next solve sees it as any touching pair.
+            if (fromHeld.empty()) return 2;
+            seatedOnly = true;
+        } else if (!links.empty() && contacts.back() == *candidate) {
+            sol.active.back() = 1;
+        }
     }
 
+#ifdef CUELAB_DEBUG_CONTACT
+    if (std::getenv("CONTACT_DEBUG")) {
+        std::fprintf(stderr, "settle t=%.12g cand=%d", t, candidate ? 1 : 0);
+        for (std::size_t k = 0; k < links.size(); ++k)
+            std::fprintf(stderr, " [%d-%d body%d N=%.3g g=%.3g act=%d vn=%.3g]", contacts[k].a, contacts[k].other, int(contacts[k].body),
+                         sol.force.empty() ? 0.0 : sol.force[k], sol.accel.empty() ? 0.0 : sol.accel[k], sol.active.empty() ? -1 : int(sol.active[k]), normalSpeeds[k]);
+        std::fprintf(stderr, "\n");
+    }
+#endif
     // Commit: the group's contacts are replaced by those that are active.
     for (std::size_t r = fromHeld.size(); r-- > 0;) {
         const HeldContact& h = held_[fromHeld[r]];
@@ -572,7 +625,11 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
     }
     for (int b : members) predictOwn(b, t);
     for (int b : members) predictPairs(b, t);
-    return 1;
+    for (const auto& [index, b] : logged) {
+        r_.events[index].after[0] = state_[at(b)];
+        r_.events[index].grouped = true;
+    }
+    return seatedOnly ? 3 : 1;
 }
 
 void Simulator::finishEvent(double t, const Event& e)
@@ -585,8 +642,10 @@ void Simulator::finishEvent(double t, const Event& e)
             balls.push_back(e.balls[k]);
             states.push_back(e.after[k]);
         }
+    const std::size_t index = r_.events.size() - 1;
     if (settle(t, balls, states, nullptr, false) == 1) {
-        for (std::size_t k = 0; k < balls.size(); ++k) r_.events.back().after[k] = state_[at(balls[k])];
+        for (std::size_t k = 0; k < balls.size(); ++k) r_.events[index].after[k] = state_[at(balls[k])];
+        r_.events[index].grouped = lastGroupSize_ > 0;
         return;
     }
     for (std::size_t k = 0; k < balls.size(); ++k) beginSegment(balls[k], t, states[k]);
@@ -683,9 +742,20 @@ void Simulator::process(const Candidate& c)
             h.impulse.head<2>() -= (mass(i) * separation) * normal;
             h.held = true;
             h.holdImpulse = mass(i) * separation;
+            const std::size_t index = r_.events.size();
             r_.events.push_back(h);
-            if (settle(t, {i}, {h.after[0]}, &candidate, e.approachSpeed <= kRestingSpeed) == 1) {
-                r_.events.back().after[0] = state_[at(i)];
+            // Forced when the approach was nil or the law does not even part them: then holding is the
+            // only way not to meet again at this instant.
+            const bool force = e.approachSpeed <= kRestingSpeed || separation <= kRestingSpeed;
+#ifdef CUELAB_DEBUG_CONTACT
+            if (std::getenv("CONTACT_DEBUG")) std::fprintf(stderr, "cushion hold t=%.15g sep=%.3g force=%d\n", t, separation, int(force));
+#endif
+            const int settled = settle(t, {i}, {h.after[0]}, &candidate, force, separation);
+            if (settled == 1 || settled == 3) {
+                Event& logged = r_.events[index];
+                logged.after[0] = state_[at(i)];
+                logged.grouped = lastGroupSize_ > 1;
+                if (settled == 3) logged.held = false;
                 return;
             }
             r_.events.pop_back();
@@ -717,11 +787,17 @@ void Simulator::process(const Candidate& c)
             h.impulse.head<2>() += extra * res.normal;
             h.held = true;
             h.holdImpulse = extra;
+            const std::size_t index = r_.events.size();
             r_.events.push_back(h);
             const HeldContact candidate{i, ContactBody::Ball, j};
-            if (settle(t, {i, j}, {h.after[0], h.after[1]}, &candidate, e.approachSpeed <= kRestingSpeed) == 1) {
-                r_.events.back().after[0] = state_[at(i)];
-                r_.events.back().after[1] = state_[at(j)];
+            const bool force = e.approachSpeed <= kRestingSpeed || separation <= kRestingSpeed;
+            const int settled = settle(t, {i, j}, {h.after[0], h.after[1]}, &candidate, force, separation);
+            if (settled == 1 || settled == 3) {
+                Event& logged = r_.events[index];
+                logged.after[0] = state_[at(i)];
+                logged.after[1] = state_[at(j)];
+                logged.grouped = lastGroupSize_ > 1;
+                if (settled == 3) logged.held = false;
                 return;
             }
             r_.events.pop_back();

@@ -221,6 +221,17 @@ inline BallState continued(const SimulationResult& r, int index, const MotionSeg
 inline std::string timelineProblem(const SimulationResult& r, double positionTol = 1e-9, double velocityTol = 1e-9)
 {
     constexpr double kSeat = 0.01;  // m/s, Contact.h: kHoldSpeed
+    // The instants at which a held group was solved: a segment of some ball begins or ends a push
+    // there, or an event there held a pair or was solved with a group.
+    std::vector<double> groupTimes;
+    for (const auto& timeline : r.timelines)
+        for (std::size_t k = 0; k < timeline.size(); ++k)
+            if (!timeline[k].push.isZero(0.0) || (k > 0 && !timeline[k - 1].push.isZero(0.0)))
+                groupTimes.push_back(timeline[k].start);
+    for (const Event& e : r.events)
+        if (e.held || e.grouped) groupTimes.push_back(e.time);
+    std::sort(groupTimes.begin(), groupTimes.end());
+    auto grouped = [&](double t) { return std::binary_search(groupTimes.begin(), groupTimes.end(), t); };
     for (std::size_t i = 0; i < r.timelines.size(); ++i) {
         const int index = static_cast<int>(i);
         std::vector<const Event*> mine;
@@ -230,22 +241,31 @@ inline std::string timelineProblem(const SimulationResult& r, double positionTol
         const std::string who = "ball " + std::to_string(i) + ": ";
         if (tl.empty()) return who + "no timeline";
         if (tl.front().start != 0.0) return who + "the timeline does not begin at 0";
-        std::size_t used = 0;
+        std::vector<double> times;  // of its events, in order
+        for (const Event* e : mine) times.push_back(e->time);
         for (std::size_t k = 0; k + 1 < tl.size(); ++k) {
-            const MotionSegment& next = tl[k + 1];
-            const std::string where = who + "segment " + std::to_string(k + 1) + " at t = " + std::to_string(next.start) + ": ";
-            if (next.start < tl[k].start) return where + "starts before the previous one";
-            const Event* e = used < mine.size() && mine[used]->time == next.start ? mine[used] : nullptr;
-            const bool pushed = !tl[k].push.isZero(0.0) || !next.push.isZero(0.0);
-            if (e) {
-                ++used;
-            } else {
-                bool atEvent = false;
-                for (const Event& other : r.events) atEvent = atEvent || other.time == next.start;
-                if (!pushed && !atEvent) return where + "begins without an event and outside a push";
+            const MotionSegment& seg = tl[k + 1];
+            const std::string where = who + "segment " + std::to_string(k + 1) + " at t = " + std::to_string(seg.start) + ": ";
+            if (seg.start < tl[k].start) return where + "starts before the previous one";
+            // Its events at this instant: the segment may belong to any of them.
+            const Event* e = nullptr;
+            bool kick = false;
+            const auto range = std::equal_range(times.begin(), times.end(), seg.start);
+            for (auto it = range.first; it != range.second; ++it) {
+                const Event* here = mine[static_cast<std::size_t>(it - times.begin())];
+                e = e ? e : here;
+                kick = kick || isCollision(here->kind) || here->kind == EventKind::CueStrike;
             }
-            const BallState end = continued(r, index, tl[k], next.start);
-            const BallState& begin = next.state;
+            const bool group = grouped(seg.start);
+            if (!e && !group) return where + "begins without an event and outside a held group";
+            if (!group) {  // outside a held group, one segment per event of the ball at this instant
+                std::size_t segments = 0;
+                for (std::size_t q = k + 1; q >= 1 && tl[q].start == seg.start; --q) ++segments;
+                if (segments > static_cast<std::size_t>(range.second - range.first))
+                    return where + "more segments than events of the ball at this instant";
+            }
+            const BallState end = continued(r, index, tl[k], seg.start);
+            const BallState& begin = seg.state;
             const double dp = (end.position - begin.position).norm();
             const double dv = (end.velocity - begin.velocity).norm();
             if (e && e->kind == EventKind::BallPocket) {
@@ -255,16 +275,20 @@ inline std::string timelineProblem(const SimulationResult& r, double positionTol
                 if (begin.motion != MotionState::Pocketed) return where + "a pocket event leaves it on the table";
                 continue;
             }
-            if (end.motion == MotionState::Pocketed) return where + "moves again after its pocketing";
+            if (end.motion == MotionState::Pocketed && begin.motion != MotionState::Pocketed)
+                return where + "moves again after its pocketing";
             if (dp > positionTol) return where + "jumps " + std::to_string(dp) + " m";
-            const bool kick = e && (isCollision(e->kind) || e->kind == EventKind::CueStrike);
-            const double allowed = kick ? kNever : (pushed || !e) ? kSeat : velocityTol;
+            // A held group's contacts are re-seated when it is solved (Contact.h): at most kHoldSpeed.
+            const double allowed = kick ? kNever : group ? kSeat : velocityTol;
             if (dv > allowed)
                 return where + "velocity jumps " + std::to_string(dv) + " m/s at a " +
                        (e ? std::string(toString(e->kind)) : std::string("re-solved push"));
         }
-        if (used != mine.size())
-            return who + std::to_string(mine.size() - used) + " of its events begin no segment";
+        std::size_t at = 1;
+        for (const Event* e : mine) {
+            while (at < tl.size() && tl[at].start < e->time) ++at;
+            if (at >= tl.size() || tl[at].start != e->time) return who + "its " + std::string(toString(e->kind)) + " at t = " + std::to_string(e->time) + " begins no segment";
+        }
     }
     return {};
 }

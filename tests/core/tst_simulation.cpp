@@ -263,7 +263,13 @@ void TestSimulation::cradle()
             fastest = s[static_cast<std::size_t>(i)].velocity.norm();
             who = i;
         }
-    QCOMPARE(who, count);
+    // When the instant's collisions are over no pair of the line approaches: the speeds do not fall
+    // along it, so the last ball is the fastest (with e = 0.5 the whole line collapses to one speed,
+    // held together: then it ties).
+    for (int i = 0; i < count; ++i)
+        QVERIFY(s[static_cast<std::size_t>(i + 1)].velocity.x() >= s[static_cast<std::size_t>(i)].velocity.x() - 1e-9);
+    QVERIFY(s[static_cast<std::size_t>(count)].velocity.norm() >= fastest - 1e-9);
+    if (e >= 0.9) QCOMPARE(who, count);
     if (e == 1.0) QVERIFY(std::abs(fastest - first->before[0].velocity.norm()) < 1e-9);
     const double momentumBefore = first->before[0].velocity.x();
     double momentumAfter = 0.0;

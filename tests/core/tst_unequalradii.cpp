@@ -452,7 +452,7 @@ void TestUnequalRadii::randomMixedRadii()
             ++collisions;
             if (r.balls[static_cast<std::size_t>(e.balls[0])].radius != r.balls[static_cast<std::size_t>(e.balls[1])].radius)
                 ++mixed;
-            QVERIFY2(e.approachSpeed > -kRestingSpeed, where.constData());
+            QVERIFY2(e.approachSpeed > -kRestingSpeed || (e.held && e.approachSpeed > -1e-4), where.constData());
             // A collision never adds energy, beyond the separation floor's bounded kick.
             QVERIFY2(energyOf(e, r, true) <= energyOf(e, r, false) * (1 + 1e-12) + 1e-7, where.constData());
         }

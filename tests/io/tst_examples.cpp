@@ -101,7 +101,9 @@ void TestExamples::loadsAndSimulatesToRest_data()
     QTest::newRow("one-cushion bank") << "one-cushion-bank.json" << QStringList{"1:pocket-b"};
     QTest::newRow("two-rail kick") << "two-rail-kick.json" << none;
     QTest::newRow("8-ball break") << "8-ball-break.json" << none;
-    QTest::newRow("9-ball break") << "9-ball-break.json" << QStringList{"4:pocket-b"};
+    // (With the 1 mm/s separation floor the 4 dropped in pocket-b; the floor's kicks were what sent
+    // it there. Holding the rack's pushes instead, nothing drops: docs/sustained-contact.md.)
+    QTest::newRow("9-ball break") << "9-ball-break.json" << none;
     QTest::newRow("Newton's cradle") << "newtons-cradle.json" << none;
     QTest::newRow("snooker plant") << "snooker-plant.json" << QStringList{"red-2:pocket-tr"};
     QTest::newRow("three-cushion carom") << "three-cushion.json" << none;

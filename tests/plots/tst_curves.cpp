@@ -141,6 +141,13 @@ void TestCurves::energyNeverRisesBetweenEvents()
             for (std::size_t i = 0; i + 1 < piece.samples.size(); ++i) {
                 const double e0 = valueOf(Quantity::KineticEnergy, piece.samples[i].state, R, m);
                 const double e1 = valueOf(Quantity::KineticEnergy, piece.samples[i + 1].state, R, m);
+                // A ball held in a push (Contact.h) is worked on by the contact force: its own energy
+                // may rise while the group's falls (tst_properties and tst_contact check the total).
+                const std::vector<MotionSegment>& tl = r.timelines[static_cast<std::size_t>(b)];
+                const double tMid = 0.5 * (piece.samples[i].time + piece.samples[i + 1].time);
+                auto seg = std::upper_bound(tl.begin(), tl.end(), tMid,
+                                            [](double time, const MotionSegment& sg) { return time < sg.start; });
+                if (seg != tl.begin() && !std::prev(seg)->push.isZero(0.0)) continue;
                 QVERIFY2(e1 <= e0 + 1e-12 * std::max(top, 1e-9),
                          qPrintable(QStringLiteral("%1 ball %2 t=%3: %4 -> %5").arg(file).arg(b)
                                         .arg(piece.samples[i].time, 0, 'g', 17).arg(e0, 0, 'g', 17).arg(e1, 0, 'g', 17)));
