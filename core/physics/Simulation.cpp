@@ -15,8 +15,6 @@
 #include "Contact.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -570,15 +568,6 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
         }
     }
 
-#ifdef CUELAB_DEBUG_CONTACT
-    if (std::getenv("CONTACT_DEBUG")) {
-        std::fprintf(stderr, "settle t=%.12g cand=%d", t, candidate ? 1 : 0);
-        for (std::size_t k = 0; k < links.size(); ++k)
-            std::fprintf(stderr, " [%d-%d body%d N=%.3g g=%.3g act=%d vn=%.3g]", contacts[k].a, contacts[k].other, int(contacts[k].body),
-                         sol.force.empty() ? 0.0 : sol.force[k], sol.accel.empty() ? 0.0 : sol.accel[k], sol.active.empty() ? -1 : int(sol.active[k]), normalSpeeds[k]);
-        std::fprintf(stderr, "\n");
-    }
-#endif
     // Commit: the group's contacts are replaced by those that are active.
     for (std::size_t r = fromHeld.size(); r-- > 0;) {
         const HeldContact& h = held_[fromHeld[r]];
@@ -635,6 +624,17 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
 void Simulator::finishEvent(double t, const Event& e)
 {
     r_.events.push_back(e);
+    bool held = false;
+    for (std::size_t k = 0; k < 2; ++k) held = held || (e.balls[k] >= 0 && heldCount_[at(e.balls[k])] > 0);
+    if (!held) {  // the common case: no push involved, no group to solve
+        for (std::size_t k = 0; k < 2; ++k)
+            if (e.balls[k] >= 0) beginSegment(e.balls[k], t, e.after[k]);
+        for (std::size_t k = 0; k < 2; ++k)
+            if (e.balls[k] >= 0) predictOwn(e.balls[k], t);
+        for (std::size_t k = 0; k < 2; ++k)
+            if (e.balls[k] >= 0) predictPairs(e.balls[k], t);
+        return;
+    }
     std::vector<int> balls;
     std::vector<BallState> states;
     for (std::size_t k = 0; k < 2; ++k)
@@ -747,9 +747,6 @@ void Simulator::process(const Candidate& c)
             // Forced when the approach was nil or the law does not even part them: then holding is the
             // only way not to meet again at this instant.
             const bool force = e.approachSpeed <= kRestingSpeed || separation <= kRestingSpeed;
-#ifdef CUELAB_DEBUG_CONTACT
-            if (std::getenv("CONTACT_DEBUG")) std::fprintf(stderr, "cushion hold t=%.15g sep=%.3g force=%d\n", t, separation, int(force));
-#endif
             const int settled = settle(t, {i}, {h.after[0]}, &candidate, force, separation);
             if (settled == 1 || settled == 3) {
                 Event& logged = r_.events[index];
