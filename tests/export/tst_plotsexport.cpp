@@ -20,6 +20,8 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFileInfo>
+#include <QLineEdit>
 #include <QLabel>
 #include <QLineSeries>
 #include <QMenu>
@@ -338,7 +340,11 @@ void TestPlotsExport::viewPngFromTheCurrentCamera()
             modal->findChild<QSpinBox*>(QStringLiteral("exportViewHeight"))->setValue(400);
             static_cast<QDialog*>(modal)->accept();
         } else if (auto* files = qobject_cast<QFileDialog*>(modal)) {
-            files->selectFile(path);
+            // selectFile() with a whole path moves the directory but may keep the proposed name in
+            // the name field (seen under load): set both, then accept as the Save button does.
+            files->setDirectory(QFileInfo(path).absolutePath());
+            files->selectFile(QFileInfo(path).fileName());
+            if (auto* edit = files->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"))) edit->setText(QFileInfo(path).fileName());
             static_cast<QDialog*>(files)->accept();  // QFileDialog::accept, protected there
         }
     });
