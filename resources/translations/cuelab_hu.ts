@@ -48,6 +48,10 @@
         <translation>v_rel %1, |J| %2</translation>
     </message>
     <message>
+        <source>, held (a push)</source>
+        <translation>, tartós érintkezés (tolás)</translation>
+    </message>
+    <message>
         <source>v %1</source>
         <translation>v %1</translation>
     </message>

@@ -3,6 +3,7 @@
 // simultaneous collisions) into one expandable row, and filters by kind, ball and least speed.
 
 #include "editor/Document.h"
+#include "editor/EventTableModel.h"
 #include "editor/EventTreeModel.h"
 #include "editor/EventsPanel.h"
 #include "editor/Playback.h"
@@ -56,6 +57,7 @@ std::vector<int> listed(const EventTreeModel& m)
 class TestEventsPanel : public QObject {
     Q_OBJECT
 private slots:
+    void marksThePushes();
     void followsTheTransport();
     void groupsTheRackChain();
     void filters_data();
@@ -210,6 +212,22 @@ void TestEventsPanel::selectingAChildSelectsItsEvent()
     panel.setSelectedEvent(event);
     QVERIFY(panel.table()->isExpanded(group));
     QCOMPARE(panel.selectedEvent(), event);
+}
+
+// Newton's cradle pushes (docs/sustained-contact.md): the collisions that hold a pair say so in their
+// key values, and only they.
+void TestEventsPanel::marksThePushes()
+{
+    const auto r = simulateExample("newtons-cradle.json");
+    QVERIFY(r);
+    int held = 0;
+    for (const Event& e : r->events) {
+        if (!isCollision(e.kind)) continue;
+        const bool says = EventTableModel::details(*r, e).contains(QStringLiteral("held (a push)"));
+        QCOMPARE(says, e.held);
+        held += e.held ? 1 : 0;
+    }
+    QVERIFY(held > 0);
 }
 
 QTEST_MAIN(TestEventsPanel)

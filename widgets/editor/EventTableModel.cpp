@@ -67,9 +67,13 @@ QString EventTableModel::agents(const SimulationResult& result, const Event& e)
 
 QString EventTableModel::details(const SimulationResult&, const Event& e)
 {
-    if (isCollision(e.kind))
-        return QObject::tr("v_rel %1, |J| %2")
-            .arg(formatQuantity(e.approachSpeed, QStringLiteral("m/s"), 3), formatQuantity(e.impulse.norm(), QStringLiteral("N·s"), 4));
+    if (isCollision(e.kind)) {
+        const QString values = QObject::tr("v_rel %1, |J| %2")
+                                   .arg(formatQuantity(e.approachSpeed, QStringLiteral("m/s"), 3),
+                                        formatQuantity(e.impulse.norm(), QStringLiteral("N·s"), 4));
+        // A collision that begins a push (Contact.h: the pair is held in contact from here).
+        return e.held ? values + QObject::tr(", held (a push)") : values;
+    }
     if (e.kind == EventKind::CueStrike)
         return QObject::tr("v %1").arg(formatQuantity(e.after[0].velocity.norm(), QStringLiteral("m/s"), 3));
     if (e.kind == EventKind::BallPocket)
