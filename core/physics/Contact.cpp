@@ -184,7 +184,7 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
     // A ball at rest either rolls off (when 5/7 |F| / m beats its rolling resistance mu_r g, which
     // then acts against the direction of F) or stays put, taking the force like a wall. Which one
     // depends on the forces: a few rounds of a fixed point, each a full solve.
-    for (int round = 0; round < 8; ++round) {
+    auto solveWith = [&] {
         buildSystem(balls, links, resp, A, b);
         out.converged = solveLcp(A, b, N, out.active);
         std::fill(force.begin(), force.end(), Vec2::Zero());
@@ -193,7 +193,11 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
             if (links[k].a >= 0) force[static_cast<std::size_t>(links[k].a)] -= f * links[k].normal;
             if (links[k].b >= 0) force[static_cast<std::size_t>(links[k].b)] += f * links[k].normal;
         }
-        bool changed = false;
+    };
+    bool settled = false;
+    for (int round = 0; round < 16 && !settled; ++round) {
+        solveWith();
+        settled = true;
         for (std::size_t i = 0; i < n; ++i) {
             Response& r = resp[i];
             if (!r.atRest) continue;
@@ -202,13 +206,24 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
             const Vec2 dir = rolls ? Vec2(force[i].normalized()) : Vec2(Vec2::Zero());
             const double c = rolls ? 5.0 / 7.0 : 0.0;
             if (c != r.c || (dir - r.restDirection).norm() > 1e-15) {
-                changed = true;
+                settled = false;
                 r.c = c;
                 r.restDirection = dir;
                 r.a0 = -(p.muRoll * p.gravity) * dir;
             }
         }
-        if (!changed) break;
+    }
+    if (!settled) {
+        // No fixed point (the direction a ball at rest would roll off in keeps changing with the
+        // forces): those balls are held still instead, like walls, and the forces solved once more, so
+        // that the motion the forces give is the one the contacts were solved for.
+        for (Response& r : resp)
+            if (r.atRest) {
+                r.c = 0.0;
+                r.a0 = Vec2::Zero();
+                r.restDirection = Vec2::Zero();
+            }
+        solveWith();
     }
     const Eigen::VectorXd g = b + A * N;
     out.accel.resize(links.size());
