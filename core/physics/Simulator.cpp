@@ -1,0 +1,425 @@
+// The event loop (issue 3): next event -> evolve its agents to its time -> resolve it -> re-predict
+// only the balls it involved. Balls evolve lazily: each keeps the start time and state of its
+// current motion segment, and everything it will do is predicted from that segment's closed form.
+// The groups of held contacts (a push) are in HeldContacts.cpp.
+
+#include "Simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace cuelab::detail {
+
+Path Simulator::pathNow(int i, double t) const
+{
+    // The segment's polynomial shifted to the origin t: p(tau0 + s) expanded in s.
+    return path_[at(i)].shifted(t - start_[at(i)]);
+}
+
+bool Simulator::atRest(int i) const
+{
+    const MotionState m = state_[at(i)].motion;
+    return m == MotionState::Stationary || m == MotionState::Pocketed;
+}
+
+void Simulator::beginSegment(int i, double t, const BallState& s, const Vec2& push)
+{
+    BallState st = s;
+    const bool free = push.isZero(0.0);
+    if (free && st.motion != MotionState::Pocketed) st.motion = classify(st, radius(i));
+    start_[at(i)] = t;
+    state_[at(i)] = st;
+    push_[at(i)] = push;
+    path_[at(i)] = pathOf(st, radius(i), p_, push);
+    const Transition tr = nextTransition(st, radius(i), p_, push);
+    end_[at(i)] = tr.after == kNever ? kNever : t + tr.after;
+    box_[at(i)] = boxOf(path_[at(i)], std::min(tr.after, regroupAt_[at(i)] - t));
+    r_.timelines[at(i)].push_back(MotionSegment{t, st, push});
+}
+
+void Simulator::predictOwn(int i, double now)
+{
+    Candidate best;
+    best.ball = i;
+    const BallState& s = state_[at(i)];
+    const Path p = pathNow(i, now);
+    window_[at(i)] = boxOf(p, 0.0);
+    horizon_[at(i)] = end_[at(i)];
+    if (s.motion == MotionState::Pocketed) {
+        own_[at(i)] = best;
+        grid_.remove(i);
+        return;
+    }
+    if (end_[at(i)] != kNever) best = Candidate{end_[at(i)], 0, i, Agent::Transition, 0};
+    // A held group is solved again before a frozen direction turns too far (Refresh, index 1).
+    if (regroupAt_[at(i)] < best.time) best = Candidate{regroupAt_[at(i)], 0, i, Agent::Refresh, 1};
+    const bool moving = s.motion == MotionState::Sliding || s.motion == MotionState::Rolling;
+    if (moving) {
+        const double horizon = end_[at(i)] - now;
+        const double R = radius(i);
+        const Box& box = box_[at(i)];
+        auto consider = [&](double ds, int category, Agent agent, int index) {
+            if (ds == kNever) return;
+            const Candidate c{now + ds, category, i, agent, index};
+            if (earlier(c, best)) best = c;
+        };
+        for (std::size_t k = 0; k < table_.pockets.size(); ++k)
+            if (boxNearCircle(box, table_.pockets[k].radius, table_.pockets[k].centre))
+                consider(pocketTime(p, table_.pockets[k], horizon), 0, Agent::Pocket, static_cast<int>(k));
+        const bool held = heldCount_[at(i)] > 0;
+        for (std::size_t k = 0; k < table_.cushions.size(); ++k)
+            if (boxNearSegment(box, R, table_.cushions[k]) && !(held && heldWall(i, ContactBody::Cushion, static_cast<int>(k))))
+                consider(cushionTime(p, R, table_.cushions[k], horizon), 1, Agent::Cushion, static_cast<int>(k));
+        for (std::size_t k = 0; k < table_.jaws.size(); ++k)
+            if (boxNearCircle(box, R + table_.jaws[k].radius, table_.jaws[k].centre) && !(held && heldWall(i, ContactBody::Jaw, static_cast<int>(k))))
+                consider(jawTime(p, R, table_.jaws[k], horizon), 1, Agent::Jaw, static_cast<int>(k));
+        // The pair window ends at the ball's own next event (it is re-predicted there anyway) or after
+        // kLookahead of travel, whichever comes first; |r(t) - r(now)| <= |v(now)| (t - now) while
+        // the ball decelerates.
+        const double speed = p.c1.norm();
+        const double lookahead = speed > 0.0 ? now + kLookahead / speed : kNever;
+        // (At an absurd speed the window would round to nothing: then it ends at the own event.)
+        if (lookahead > now && lookahead < best.time) best = Candidate{lookahead, 0, i, Agent::Refresh, 0};
+        horizon_[at(i)] = best.time;
+        window_[at(i)] = boxOf(p, best.time - now);
+    }
+    own_[at(i)] = best;
+    Box grown = window_[at(i)];
+    grown.lo.array() -= radius(i);
+    grown.hi.array() += radius(i);
+    grid_.place(i, grown);
+}
+
+double Simulator::pairTime(int i, int j, double now) const
+{
+    const BallState& a = state_[at(i)];
+    const BallState& b = state_[at(j)];
+    if (a.motion == MotionState::Pocketed || b.motion == MotionState::Pocketed) return kNever;
+    const bool aMoves = a.motion == MotionState::Sliding || a.motion == MotionState::Rolling;
+    const bool bMoves = b.motion == MotionState::Sliding || b.motion == MotionState::Rolling;
+    if (!aMoves && !bMoves) return kNever;
+    if (heldCount_[at(i)] > 0 && heldCount_[at(j)] > 0 && heldPair(i, j)) return kNever;  // held together
+    if (!boxesMeet(window_[at(i)], radius(i), window_[at(j)], radius(j))) return kNever;
+    const double horizon = std::min(horizon_[at(i)], horizon_[at(j)]) - now;
+    if (horizon < 0.0) return kNever;  // j is refreshed at this very instant, and predicts the pair then
+    const double s = ballBallTime(pathNow(i, now), radius(i), pathNow(j, now), radius(j), horizon);
+    return s == kNever ? kNever : now + s;
+}
+
+void Simulator::updateQueue(int i)
+{
+    Candidate best = own_[at(i)];
+    const int j = rowPartner_[at(i)];
+    if (j >= 0 && rowMin_[at(i)] != kNever) {
+        const Candidate c{rowMin_[at(i)], 1, std::min(i, j), Agent::Ball, std::max(i, j)};
+        if (earlier(c, best)) best = c;
+    }
+    queue_.set(i, best);
+}
+
+void Simulator::rescanRow(int j)
+{
+    // Recomputes j's earliest partner from its partner list, dropping the entries that are stale.
+    std::vector<int>& list = partners_[at(j)];
+    double m = kNever;
+    int q = -1;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const int other = list[k];
+        const double t = pair(j, other);
+        if (t == kNever) continue;
+        bool duplicate = false;
+        for (std::size_t d = 0; d < kept && !duplicate; ++d) duplicate = list[d] == other;
+        if (duplicate) continue;
+        list[kept++] = other;
+        if (t < m || (t == m && other < q)) {
+            m = t;
+            q = other;
+        }
+    }
+    list.resize(kept);
+    rowMin_[at(j)] = m;
+    rowPartner_[at(j)] = q;
+    updateQueue(j);
+}
+
+void Simulator::predictPairs(int i, double now)
+{
+    // Forget i's old pair predictions; the partners whose earliest pair was with i look again.
+    std::vector<int>& mine = partners_[at(i)];
+    for (int j : mine) {
+        if (pair(i, j) == kNever) continue;
+        pair(i, j) = pair(j, i) = kNever;
+        if (rowPartner_[at(j)] == i) rescanRow(j);
+    }
+    mine.clear();
+
+    double best = kNever;
+    int partner = -1;
+    if (state_[at(i)].motion != MotionState::Pocketed) {
+        Box grown = window_[at(i)];
+        grown.lo.array() -= radius(i);
+        grown.hi.array() += radius(i);
+        grid_.forEachNear(i, grown, [&](int j) {
+            const double t = pairTime(i, j, now);
+            if (t == kNever) return;
+            pair(i, j) = pair(j, i) = t;
+            mine.push_back(j);
+            partners_[at(j)].push_back(i);
+            if (t < best || (t == best && j < partner)) {
+                best = t;
+                partner = j;
+            }
+            if (t < rowMin_[at(j)] || (t == rowMin_[at(j)] && i < rowPartner_[at(j)])) {
+                rowMin_[at(j)] = t;
+                rowPartner_[at(j)] = i;
+                updateQueue(j);
+            }
+        });
+    }
+    rowMin_[at(i)] = best;
+    rowPartner_[at(i)] = partner;
+    updateQueue(i);
+}
+
+void Simulator::finishEvent(double t, const Event& e)
+{
+    r_.events.push_back(e);
+    bool held = false;
+    for (std::size_t k = 0; k < 2; ++k) held = held || (e.balls[k] >= 0 && heldCount_[at(e.balls[k])] > 0);
+    if (!held) {  // the common case: no push involved, no group to solve
+        for (std::size_t k = 0; k < 2; ++k)
+            if (e.balls[k] >= 0) beginSegment(e.balls[k], t, e.after[k]);
+        for (std::size_t k = 0; k < 2; ++k)
+            if (e.balls[k] >= 0) predictOwn(e.balls[k], t);
+        for (std::size_t k = 0; k < 2; ++k)
+            if (e.balls[k] >= 0) predictPairs(e.balls[k], t);
+        return;
+    }
+    std::vector<int> balls;
+    std::vector<BallState> states;
+    for (std::size_t k = 0; k < 2; ++k)
+        if (e.balls[k] >= 0) {
+            balls.push_back(e.balls[k]);
+            states.push_back(e.after[k]);
+        }
+    const std::size_t index = r_.events.size() - 1;
+    if (settle(t, balls, states, nullptr, false) == 1) {
+        for (std::size_t k = 0; k < balls.size(); ++k) r_.events[index].after[k] = state_[at(balls[k])];
+        r_.events[index].grouped = lastGroupSize_ > 0;
+        return;
+    }
+    for (std::size_t k = 0; k < balls.size(); ++k) beginSegment(balls[k], t, states[k]);
+    for (int b : balls) predictOwn(b, t);
+    for (int b : balls) predictPairs(b, t);
+}
+
+void Simulator::process(const Candidate& c)
+{
+    const double t = c.time;
+    const int i = c.ball;
+    if (c.agent == Agent::Refresh) {
+        if (c.index == 1) {  // a held group is solved again (no event)
+            if (settle(t, {i}, {stateNow(i, t)}, nullptr, false) == 0) {
+                regroupAt_[at(i)] = kNever;
+                predictOwn(i, t);
+                predictPairs(i, t);
+            }
+            return;
+        }
+        predictOwn(i, t);
+        predictPairs(i, t);
+        return;
+    }
+    Event e;
+    e.time = t;
+    e.balls[0] = i;
+    e.before[0] = stateNow(i, t);
+    switch (c.agent) {
+    case Agent::Refresh:  // handled above
+    case Agent::Transition: {
+        const Vec2 push = push_[at(i)];
+        if (!push.isZero(0.0)) {
+            // The end of a pushed state: an event when the ball's motion changes, then the group is
+            // solved again either way.
+            const BallState after = applyTransition(state_[at(i)], radius(i), p_, push);
+            EventKind kind = EventKind::SlideToRoll;
+            if (pushedTransitionKind(state_[at(i)].motion, after.motion, kind)) {
+                e.kind = kind;
+                e.after[0] = after;
+                finishEvent(t, e);
+                return;
+            }
+            if (settle(t, {i}, {after}, nullptr, false) == 0) {
+                beginSegment(i, t, after);
+                predictOwn(i, t);
+                predictPairs(i, t);
+            }
+            return;
+        }
+        e.after[0] = applyTransition(state_[at(i)], radius(i), p_);
+        e.kind = nextTransition(state_[at(i)], radius(i), p_).kind;
+        break;
+    }
+    case Agent::Pocket: {
+        const Pocket& pocket = table_.pockets[at(c.index)];
+        e.kind = EventKind::BallPocket;
+        e.pocket = c.index;
+        e.after[0] = BallState{};
+        e.after[0].position = pocket.centre;
+        e.after[0].motion = MotionState::Pocketed;
+        e.after[0].pocket = c.index;
+        e.contactPoint = e.before[0].position;
+        break;
+    }
+    case Agent::Cushion:
+    case Agent::Jaw: {
+        Vec2 normal;  // from the cushion towards the ball
+        HeldContact candidate{i, ContactBody::Cushion, c.index};
+        if (c.agent == Agent::Cushion) {
+            const CushionSegment& seg = table_.cushions[at(c.index)];
+            normal = seg.normal;
+            e.kind = EventKind::BallCushion;
+            e.cushion = c.index;
+        } else {
+            const JawTip& jaw = table_.jaws[at(c.index)];
+            normal = (e.before[0].position - jaw.centre).normalized();
+            e.kind = EventKind::BallJaw;
+            e.jaw = c.index;
+            candidate.body = ContactBody::Jaw;
+        }
+        CushionResult res = resolveCushion(e.before[0], normal, radius(i), mass(i), table_.cushionHeight, p_);
+        res.after.motion = classify(res.after, radius(i));
+        e.after[0] = res.after;
+        e.contactPoint = e.before[0].position - radius(i) * normal;
+        e.normal = -normal;
+        e.approachSpeed = res.approachSpeed;
+        e.impulse = res.impulse;
+        const double separation = res.after.velocity.dot(normal);
+        if (separation < kHoldSpeed) {
+            Event h = e;
+            h.after[0].velocity -= separation * normal;
+            h.after[0].motion = classify(h.after[0], radius(i));
+            h.impulse.head<2>() -= (mass(i) * separation) * normal;
+            h.held = true;
+            h.holdImpulse = mass(i) * separation;
+            const std::size_t index = r_.events.size();
+            r_.events.push_back(h);
+            // Forced when the approach was nil or the law does not even part them: then holding is the
+            // only way not to meet again at this instant.
+            const bool force = e.approachSpeed <= kRestingSpeed || separation <= kRestingSpeed;
+            const int settled = settle(t, {i}, {h.after[0]}, &candidate, force, separation);
+            if (settled == 1 || settled == 3) {
+                Event& logged = r_.events[index];
+                logged.after[0] = state_[at(i)];
+                logged.grouped = lastGroupSize_ > 1;
+                if (settled == 3) logged.held = false;
+                return;
+            }
+            r_.events.pop_back();
+        }
+        break;
+    }
+    case Agent::Ball: {
+        const int j = c.index;
+        e.kind = EventKind::BallBall;
+        e.balls[1] = j;
+        e.before[1] = stateNow(j, t);
+        BallBallResult res = resolveBallBall({e.before[0], radius(i), mass(i)}, {e.before[1], radius(j), mass(j)}, p_);
+        res.a.motion = classify(res.a, radius(i));
+        res.b.motion = classify(res.b, radius(j));
+        e.after[0] = res.a;
+        e.after[1] = res.b;
+        e.contactPoint = res.contactPoint;
+        e.normal = res.normal;
+        e.approachSpeed = res.approachSpeed;
+        e.impulse = res.impulse;
+        const double separation = (res.b.velocity - res.a.velocity).dot(res.normal);
+        if (separation < kHoldSpeed) {
+            Event h = e;
+            const double extra = separation / (1.0 / mass(i) + 1.0 / mass(j));  // N s
+            h.after[0].velocity += (extra / mass(i)) * res.normal;
+            h.after[1].velocity -= (extra / mass(j)) * res.normal;
+            h.after[0].motion = classify(h.after[0], radius(i));
+            h.after[1].motion = classify(h.after[1], radius(j));
+            h.impulse.head<2>() += extra * res.normal;
+            h.held = true;
+            h.holdImpulse = extra;
+            const std::size_t index = r_.events.size();
+            r_.events.push_back(h);
+            const HeldContact candidate{i, ContactBody::Ball, j};
+            const bool force = e.approachSpeed <= kRestingSpeed || separation <= kRestingSpeed;
+            const int settled = settle(t, {i, j}, {h.after[0], h.after[1]}, &candidate, force, separation);
+            if (settled == 1 || settled == 3) {
+                Event& logged = r_.events[index];
+                logged.after[0] = state_[at(i)];
+                logged.after[1] = state_[at(j)];
+                logged.grouped = lastGroupSize_ > 1;
+                if (settled == 3) logged.held = false;
+                return;
+            }
+            r_.events.pop_back();
+        }
+        break;
+    }
+    }
+    finishEvent(t, e);
+}
+
+void Simulator::run(const std::optional<CueStrike>& shot)
+{
+    for (int i = 0; i < n_; ++i) beginSegment(i, 0.0, r_.balls[at(i)].state);
+
+    if (shot) {
+        const int i = r_.ballIndex(shot->ball);
+        if (i >= 0 && state_[at(i)].motion != MotionState::Pocketed) {
+            const CueImpactResult strike = resolveCueStrike(state_[at(i)], radius(i), mass(i), *shot);
+            Event e;
+            e.kind = EventKind::CueStrike;
+            e.time = 0.0;
+            e.balls[0] = i;
+            e.before[0] = state_[at(i)];
+            e.after[0] = strike.after;
+            e.contactPoint = strike.contactPoint;
+            e.normal = strike.heading;
+            e.approachSpeed = shot->speed;
+            e.impulse = strike.impulse;
+            r_.events.push_back(e);
+            beginSegment(i, 0.0, strike.after);
+        }
+    }
+    for (int i = 0; i < n_; ++i) predictOwn(i, 0.0);
+    for (int i = 0; i < n_; ++i) predictPairs(i, 0.0);
+
+    double lastEvent = 0.0;
+    long long steps = 0;  // events and internal refreshes: a bound on the loop whatever happens
+    for (;;) {
+        const Candidate c = queue_.top();
+        if (c.time == kNever || c.time > limit_) break;
+        if (static_cast<long long>(r_.events.size()) >= maxEvents_ || ++steps > 50 * maxEvents_ + 1000) {
+            r_.status = SimulationStatus::EventLimit;
+            r_.endTime = lastEvent;
+            std::ostringstream msg;
+            msg << "the simulation stopped after " << maxEvents_ << " events at t = " << lastEvent
+                << " s with balls still moving (event limit reached)";
+            r_.error = msg.str();
+            return;
+        }
+        process(c);
+        if (c.agent != Agent::Refresh) lastEvent = c.time;
+    }
+    bool rest = true;
+    for (int i = 0; i < n_; ++i) rest = rest && atRest(i);
+    if (rest) {
+        r_.status = SimulationStatus::AllAtRest;
+        r_.endTime = r_.events.empty() ? 0.0 : lastEvent;
+    } else {
+        r_.status = SimulationStatus::ReachedUntil;
+        r_.endTime = limit_;
+    }
+}
+
+
+}  // namespace cuelab::detail

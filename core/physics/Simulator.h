@@ -1,0 +1,136 @@
+#pragma once
+// Internal to the simulator (not installed, not for other modules): the event loop's state and its
+// steps. Simulator.cpp holds the event loop and the predictions, HeldContacts.cpp the groups of held
+// contacts (Contact.h), Simulation.cpp the public entry points.
+
+#include "Simulation.h"
+
+#include "BallBallCollision.h"
+#include "BallContact.h"
+#include "BroadPhase.h"
+#include "Contact.h"
+#include "CueImpact.h"
+#include "CushionCollision.h"
+#include "Detection.h"
+#include "EventQueue.h"
+#include "Motion.h"
+
+#include <optional>
+#include <vector>
+
+namespace cuelab::detail {
+
+// m: how far ahead a moving ball's pair predictions look. Predicting pairs only over the next
+// kLookahead of travel keeps the box of each ball small, so the grid and the boxes cull almost
+// every pair even on a large table with many balls; the price is one internal refresh per
+// kLookahead travelled.
+constexpr double kLookahead = 1.0;
+
+// m: side of the broad-phase grid's cells, about half the longest window of a moving ball.
+constexpr double kCellSize = 0.5;
+
+class Simulator {
+public:
+    Simulator(SimulationResult& result, double limit, long long maxEvents)
+        : r_(result), table_(result.table), p_(result.physics), n_(static_cast<int>(result.balls.size())),
+          limit_(limit), maxEvents_(maxEvents)
+    {
+        const std::size_t n = static_cast<std::size_t>(n_);
+        start_.assign(n, 0.0);
+        state_.resize(n);
+        path_.resize(n);
+        end_.assign(n, kNever);
+        box_.resize(n);
+        own_.resize(n);
+        horizon_.assign(n, kNever);
+        window_.resize(n);
+        pair_.assign(n * n, kNever);
+        partners_.assign(n, {});
+        rowMin_.assign(n, kNever);
+        rowPartner_.assign(n, -1);
+        push_.assign(n, Vec2::Zero());
+        heldCount_.assign(n, 0);
+        regroupAt_.assign(n, kNever);
+        queue_.reset(n_);
+        double margin = 0.0;  // pockets and jaws lie beyond the cushion noses
+        for (const Pocket& k : table_.pockets) margin = std::max(margin, k.radius);
+        margin += 0.1;
+        grid_.reset(Vec2(-margin, -margin), Vec2(table_.length + margin, table_.width + margin), kCellSize, n_);
+        r_.timelines.assign(n, {});
+        // Room for a typical run, so that the event loop rarely allocates.
+        for (std::size_t i = 0; i < n; ++i) {
+            r_.timelines[i].reserve(16);
+            partners_[i].reserve(8);
+        }
+    }
+
+    void run(const std::optional<CueStrike>& shot);
+
+private:
+    double radius(int i) const { return r_.balls[static_cast<std::size_t>(i)].radius; }
+    double mass(int i) const { return r_.balls[static_cast<std::size_t>(i)].mass; }
+    std::size_t at(int i) const { return static_cast<std::size_t>(i); }
+    double& pair(int i, int j) { return pair_[at(i) * at(n_) + at(j)]; }
+
+    BallState stateNow(int i, double t) const
+    {
+        return evolve(state_[at(i)], radius(i), p_, t - start_[at(i)], push_[at(i)]);
+    }
+    Path pathNow(int i, double t) const;
+    void beginSegment(int i, double t, const BallState& s, const Vec2& push = Vec2::Zero());
+    void predictOwn(int i, double now);
+    void predictPairs(int i, double now);
+    void rescanRow(int j);
+    void updateQueue(int i);
+    double pairTime(int i, int j, double now) const;
+    void process(const Candidate& c);
+    bool atRest(int i) const;
+
+    // Sustained contact (Contact.h).
+    bool heldPair(int i, int j) const;
+    bool heldWall(int i, ContactBody body, int index) const;
+    void release(std::size_t k);
+    // After an event: solves the held group its balls belong to (with a contact that may begin
+    // holding, `candidate`) and gives every ball of that group its new segment. Returns 0 when no
+    // group is touched (the caller segments the balls freely), 1 when settled, 2 when the candidate
+    // is not pressed and `forceHold` is false and it touches no held group (nothing changed), 3 when
+    // such a candidate was seated with the group it touches but not held.
+    int settle(double t, const std::vector<int>& eventBalls, const std::vector<BallState>& eventStates,
+               const HeldContact* candidate, bool forceHold, double candidateSeparation = 0.0);
+    void finishEvent(double t, const Event& e);
+    double turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts, double t) const;
+
+    SimulationResult& r_;
+    const Table& table_;
+    const PhysicsParams& p_;
+    int n_;
+    double limit_;
+    long long maxEvents_;
+
+    // Flat per-ball arrays: the current motion segment and its predictions.
+    std::vector<double> start_;      // s, when the segment began
+    std::vector<BallState> state_;   // the state at start_
+    std::vector<Path> path_;         // position over the segment, from start_
+    std::vector<double> end_;        // s, absolute time of the transition that ends the segment
+    std::vector<Box> box_;           // where the centre can be during the segment
+    std::vector<Candidate> own_;     // next transition, pocket, cushion or jaw event, or refresh
+    std::vector<double> horizon_;    // s, absolute end of the ball's prediction window
+    std::vector<Box> window_;        // where the centre can be from the last prediction to horizon_
+    std::vector<double> pair_;       // n x n, next contact time of each pair (symmetric), kNever if none
+    std::vector<std::vector<int>> partners_;  // per ball, the balls it may have a finite pair_ with
+    std::vector<double> rowMin_;     // per ball, the earliest of its row of pair_
+    std::vector<int> rowPartner_;    // and the partner (the smallest index among ties)
+    BoxGrid grid_;
+    EventQueue queue_;
+
+    std::vector<Vec2> push_;          // m/s^2, the contact force over the mass of a held ball's segment
+    std::vector<HeldContact> held_;   // the contacts held now, in the order they were formed
+    std::vector<int> heldCount_;      // per ball, how many of held_ involve it
+    std::vector<double> regroupAt_;   // s, when a held group is solved again (kNever if none)
+    std::size_t lastGroupSize_ = 0;   // how many contacts the last settle() solved
+};
+
+// The kind of a pushed state's end, when its label changes (false when the push only turned it).
+bool pushedTransitionKind(MotionState before, MotionState after, EventKind& kind);
+
+}  // namespace cuelab::detail
