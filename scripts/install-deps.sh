@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++                      # build tools
+  ccache                                     # one compiler cache shared by every build folder
   qt6-base-dev qt6-base-dev-tools            # Qt 6.4: Core, Gui, Widgets, OpenGL, Test
   libqt6opengl6-dev                          # Qt6::OpenGLWidgets (QOpenGLWidget)
   libgl-dev libgl1-mesa-dri                  # OpenGL headers; Mesa's llvmpipe software renderer
