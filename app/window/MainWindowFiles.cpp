@@ -8,6 +8,8 @@
 
 #include "editor/Document.h"
 
+#include "RealPlay.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QCoreApplication>
@@ -20,6 +22,20 @@
 #include <QStatusBar>
 
 namespace cuelab {
+
+namespace {
+
+// The values of the opened setup beyond real play (core/setup/RealPlay.h), as `cuelab-cli validate`
+// words them, joined for the status bar; empty when there are none. Shown once, when the file opens.
+QString realPlayWarnings(const Setup& setup)
+{
+    QStringList lines;
+    for (const SetupWarning& w : setupWarnings(setup))
+        lines << QString::fromStdString(w.path.empty() ? w.message : w.path + ": " + w.message);
+    return lines.join(QStringLiteral("; "));
+}
+
+}  // namespace
 
 QStringList MainWindow::bundledExamples()
 {
@@ -95,7 +111,10 @@ bool MainWindow::openFile(const QString& path)
     }
     recentMenu_->add(document_->filePath());
     QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(path).absolutePath());
-    statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(document_->filePath())), window::kStatusMessageMs);
+    const QString opened = tr("Opened %1").arg(QDir::toNativeSeparators(document_->filePath()));
+    const QString warnings = realPlayWarnings(document_->setup());
+    if (warnings.isEmpty()) statusBar()->showMessage(opened, window::kStatusMessageMs);
+    else statusBar()->showMessage(tr("%1. Beyond real play: %2").arg(opened, warnings), 3 * window::kStatusMessageMs);
     return true;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // What a legal setup is, written once (CONTRACT.md, "A file is refused ... when"): every value rule
-// (finite numbers within plausible bounds (SetupBounds), radius and mass > 0, frictions >= 0,
+// (finite numbers within safe bounds (SetupBounds), radius and mass > 0, frictions >= 0,
 // restitutions in [0, 1], unique non-empty ids,
 // a shot that names a ball with its tip on the ball, ...) and the table geometry (rails with room
 // for their pockets, cushions lower than the balls, every ball on the playing surface, in no pocket,
@@ -21,23 +21,25 @@ namespace cuelab {
 // Two bodies may overlap by at most this much: a frozen rack touches "exactly" only up to rounding.
 inline constexpr double kOverlapTolerance = 1e-9;  // m (CONTRACT.md)
 
-// Plausible upper bounds of the numbers with a physical meaning (docs/setup-format.md, "Ranges"): a
-// finite but absurd value (a shot at 1e300 m/s) is refused like a non-finite one, instead of giving
-// overflowing, "null" results. Each bound lies well beyond real play and at or beyond the editor's own
-// range for the field.
+// Upper bounds of the numbers with a physical meaning (docs/setup-format.md, "Upper bounds"), set
+// where arithmetic stops being safe, never where play stops being realistic (CONTRACT.md, Extensions
+// version 2: every file legal under version 1 stays legal; at least lengths 1 km, speeds 1000 m/s,
+// spins 1e5 rad/s). A finite but absurd value (a shot at 1e300 m/s) is refused like a non-finite one,
+// instead of giving overflowing, "null" results. A value beyond real play but within these bounds
+// loads; RealPlay.h names those ranges and warns about such values.
 struct SetupBounds {
-    static constexpr double speed = 20.0;           // m/s: shot.speed (a hard break is 11-12 m/s), |ball velocity|
-    static constexpr double spin = 2000.0;          // rad/s: |ball spin| (a pool ball rolling at 20 m/s turns at 700 rad/s)
-    static constexpr double tableSize = 10.0;       // m: table.length, table.width (a snooker table is 3.569 m)
-    static constexpr double cushionHeight = 1.0;    // m: table.cushion_height (and below 2R of every ball anyway)
-    static constexpr double radius = 0.5;           // m: balls[].radius (pool 0.028575 m)
-    static constexpr double mass = 5.0;             // kg: balls[].mass (pool 0.17 kg)
-    static constexpr double gravity = 100.0;        // m/s^2: physics.gravity (10 g)
-    static constexpr double friction = 10.0;        // physics.mu_*, ball_ball.friction, ball_cushion.friction (cloth 0.005-0.4)
-    static constexpr double heading = 3600.0;       // degrees: |shot.heading| (ten turns)
-    static constexpr double cueMass = 5.0;          // kg: shot.cue_mass (a cue is about 0.5 kg); end_mass <= cue_mass
-    static constexpr double frameDt = 10.0;         // s: simulation.frame_dt
-    static constexpr double maxTime = 86400.0;      // s: simulation.max_time (a day; the default is 600 s)
+    static constexpr double speed = 1000.0;         // m/s: shot.speed, |ball velocity|
+    static constexpr double spin = 1e5;             // rad/s: |ball spin|
+    static constexpr double tableSize = 1000.0;     // m: table.length, table.width
+    static constexpr double cushionHeight = 1000.0; // m: table.cushion_height (and below 2R of every ball anyway)
+    static constexpr double radius = 500.0;         // m: balls[].radius (a 1 km ball: the largest a 1 km table holds)
+    static constexpr double mass = 1e6;             // kg: balls[].mass
+    static constexpr double gravity = 1e4;          // m/s^2: physics.gravity (1000 g)
+    static constexpr double friction = 1000.0;      // physics.mu_*, ball_ball.friction, ball_cushion.friction
+    static constexpr double heading = 1e6;          // degrees: |shot.heading|
+    static constexpr double cueMass = 1e6;          // kg: shot.cue_mass; end_mass <= cue_mass
+    static constexpr double frameDt = 1e6;          // s: simulation.frame_dt
+    static constexpr double maxTime = 1e6;          // s: simulation.max_time (11.6 days; the default is 600 s)
 };
 
 // One broken rule.
