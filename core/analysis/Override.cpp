@@ -1,5 +1,8 @@
 #include "Override.h"
 
+#include "NumberText.h"
+#include "resolve/CushionModel.h"
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -7,13 +10,15 @@
 namespace cuelab::analysis {
 
 enum class Parameter::Field : int {
-    ShotBall, ShotSpeed, ShotHeading, ShotElevation, ShotSide, ShotHeight, ShotCueMass,
+    ShotBall, ShotSpeed, ShotHeading, ShotElevation, ShotSide, ShotHeight, ShotCueMass, ShotEndMass,
     Gravity, MuSlide, MuRoll, MuSpin,
     BallBallModel, BallBallRestitution, BallBallFriction,
     BallCushionModel, BallCushionRestitution, BallCushionFriction,
+    CushionModelParameter,  // a registered model's own parameter (CushionModels.cpp): physics.ball_cushion.<key>
     TableKind, TablePockets, TableLength, TableWidth, TableCushionHeight,
     BallX, BallY, BallVx, BallVy, BallWx, BallWy, BallWz, BallRadius, BallMass,
     MaxTime, FrameDt,
+    Name, Notes,
 };
 
 namespace {
@@ -36,6 +41,8 @@ constexpr std::array kKeys{
     KeyInfo{"shot.side", Field::ShotSide, Type::Number},
     KeyInfo{"shot.height", Field::ShotHeight, Type::Number},
     KeyInfo{"shot.cue_mass", Field::ShotCueMass, Type::Number},
+    // 0, like the key absent, is no squirt (docs/setup-format.md).
+    KeyInfo{"shot.end_mass", Field::ShotEndMass, Type::Number},
     KeyInfo{"physics.gravity", Field::Gravity, Type::Number},
     KeyInfo{"physics.mu_slide", Field::MuSlide, Type::Number},
     KeyInfo{"physics.mu_roll", Field::MuRoll, Type::Number},
@@ -47,6 +54,7 @@ constexpr std::array kKeys{
     KeyInfo{"physics.ball_cushion.model", Field::BallCushionModel, Type::Text},
     KeyInfo{"physics.ball_cushion.restitution", Field::BallCushionRestitution, Type::Number},
     KeyInfo{"physics.ball_cushion.friction", Field::BallCushionFriction, Type::Number},
+    // physics.ball_cushion.<key> of the model's own parameters follow here, from the registry.
     KeyInfo{"table.kind", Field::TableKind, Type::Text},
     KeyInfo{"table.pockets", Field::TablePockets, Type::Bool},
     KeyInfo{"table.length", Field::TableLength, Type::Number},
@@ -54,7 +62,11 @@ constexpr std::array kKeys{
     KeyInfo{"table.cushion_height", Field::TableCushionHeight, Type::Number},
     KeyInfo{"simulation.max_time", Field::MaxTime, Type::Number},
     KeyInfo{"simulation.frame_dt", Field::FrameDt, Type::Number},
+    KeyInfo{"name", Field::Name, Type::Text},
+    KeyInfo{"notes", Field::Notes, Type::Text},
 };
+
+constexpr std::string_view kCushionPrefix = "physics.ball_cushion.";
 
 // The keys of one ball: balls.<id>.<name>.
 constexpr std::array kBallKeys{
@@ -74,7 +86,7 @@ const KeyInfo& infoOf(Field field)
     return kKeys[0];
 }
 
-bool isShotField(Field f) { return f >= Field::ShotBall && f <= Field::ShotCueMass; }
+bool isShotField(Field f) { return f >= Field::ShotBall && f <= Field::ShotEndMass; }
 
 std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
 
@@ -89,12 +101,58 @@ OverrideError badValue(std::string_view key, std::string_view value, const std::
             std::string(key) + ": expected " + expected + ", found " + quoted(value)};
 }
 
-std::string numberText(double x)
+std::string joined(const std::vector<std::string>& items, std::string_view separator)
 {
-    std::array<char, 32> buffer{};
-    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), x);
-    return ec == std::errc() ? std::string(buffer.data(), end) : std::string("nan");
+    std::string out;
+    for (const std::string& item : items) out += (out.empty() ? "" : std::string(separator)) + item;
+    return out;
 }
+
+// "mirror, han2005, mathavan2010 or stronge": the registry's names (CushionModels.cpp), in its order.
+std::string cushionModelNames()
+{
+    std::vector<std::string> names;
+    for (const CushionModelEntry& e : cushionModels()) names.emplace_back(e.name);
+    const std::string last = names.back();
+    names.pop_back();
+    return joined(names, ", ") + " or " + last;
+}
+
+// "pool-9ft, pool-8ft, pool-7ft, snooker or carom", from the table kinds themselves.
+std::string tableKindNames()
+{
+    std::vector<std::string> names;
+    for (TableKind k : {TableKind::Pool9ft, TableKind::Pool8ft, TableKind::Pool7ft, TableKind::Snooker, TableKind::Carom})
+        names.emplace_back(toString(k));
+    const std::string last = names.back();
+    names.pop_back();
+    return joined(names, ", ") + " or " + last;
+}
+
+// The registered model that has the parameter `key` ("steps"), and the parameter; nullptrs if none.
+std::pair<const CushionModelEntry*, const CushionModelParameter*> findModelParameter(std::string_view key)
+{
+    for (const CushionModelEntry& e : cushionModels())
+        for (const CushionModelParameter& q : e.parameters)
+            if (q.key == key) return {&e, &q};
+    return {nullptr, nullptr};
+}
+
+// The valid keys of `setup`, for an unknown key's message: every setup-wide key, the current model's
+// parameters, and the ball keys with the setup's ids.
+std::string validKeys(const Setup& setup)
+{
+    std::vector<std::string> keys;
+    for (const std::string& k : overridableKeys(setup, false))
+        if (k.rfind("balls.", 0) != 0) keys.push_back(k);
+    std::string text = "valid keys: " + joined(keys, ", ");
+    if (setup.balls.empty()) return text;
+    std::vector<std::string> ids;
+    for (const Ball& b : setup.balls) ids.push_back(b.id);
+    return text + ", balls.<id>.x|y|vx|vy|wx|wy|wz|radius|mass with <id> one of " + joined(ids, ", ");
+}
+
+std::string numberText(double x) { return roundTripText(x); }
 
 // The motion label must agree with the numbers after velocity, spin or radius change.
 void reclassify(Ball& ball) { ball.state.motion = classify(ball.state, ball.radius); }
@@ -126,6 +184,21 @@ std::variant<Parameter, OverrideError> Parameter::resolve(const Setup& setup, st
             return unknownKey(key, "the setup has no shot to override");
         return Parameter(std::string(key), k.field, -1);
     }
+    // A cushion model's own parameter, from the registry: a key of the setup's current model only, as
+    // in the file (a model's key with another model is refused there as a typo would be).
+    if (key.substr(0, kCushionPrefix.size()) == kCushionPrefix) {
+        const auto [owner, parameter] = findModelParameter(key.substr(kCushionPrefix.size()));
+        if (parameter) {
+            const CushionModelEntry& current = cushionModel(setup.physics.ballCushionModel);
+            if (owner != &current)
+                return unknownKey(key, "a parameter of the " + std::string(owner->name) + " model, and the setup's model is " +
+                                           std::string(current.name) + "; set physics.ball_cushion.model=" +
+                                           std::string(owner->name) + " first");
+            Parameter p(std::string(key), Field::CushionModelParameter, -1);
+            p.member_ = parameter->field;
+            return p;
+        }
+    }
     constexpr std::string_view ballsPrefix = "balls.";
     if (key.substr(0, ballsPrefix.size()) == ballsPrefix) {
         const std::string_view rest = key.substr(ballsPrefix.size());
@@ -136,15 +209,23 @@ std::variant<Parameter, OverrideError> Parameter::resolve(const Setup& setup, st
         int index = -1;
         for (std::size_t i = 0; i < setup.balls.size(); ++i)
             if (setup.balls[i].id == id) index = static_cast<int>(i);
-        if (index < 0) return unknownKey(key, "there is no ball " + quoted(id));
+        if (index < 0) {
+            std::vector<std::string> ids;
+            for (const Ball& b : setup.balls) ids.push_back(quoted(b.id));
+            return unknownKey(key, "there is no ball " + quoted(id) +
+                                       (ids.empty() ? std::string("; the setup has no balls") : "; the balls are " + joined(ids, ", ")));
+        }
         for (const KeyInfo& k : kBallKeys)
             if (name == k.name) return Parameter(std::string(key), k.field, index);
         return unknownKey(key, "a ball has x, y, vx, vy, wx, wy, wz, radius and mass");
     }
-    return unknownKey(key, "expected shot.*, physics.*, table.*, balls.<id>.* or simulation.*; see docs/analysis.md");
+    return unknownKey(key, validKeys(setup));
 }
 
-Parameter::Type Parameter::type() const { return infoOf(field_).type; }
+Parameter::Type Parameter::type() const
+{
+    return field_ == Field::CushionModelParameter ? Type::Number : infoOf(field_).type;
+}
 
 double Parameter::number(const Setup& s) const
 {
@@ -156,6 +237,7 @@ double Parameter::number(const Setup& s) const
     case Field::ShotSide: return s.shot->side;
     case Field::ShotHeight: return s.shot->height;
     case Field::ShotCueMass: return s.shot->cueMass;
+    case Field::ShotEndMass: return s.shot->endMass;
     case Field::Gravity: return s.physics.gravity;
     case Field::MuSlide: return s.physics.muSlide;
     case Field::MuRoll: return s.physics.muRoll;
@@ -164,6 +246,7 @@ double Parameter::number(const Setup& s) const
     case Field::BallBallFriction: return s.physics.ballBallFriction;
     case Field::BallCushionRestitution: return s.physics.cushionRestitution;
     case Field::BallCushionFriction: return s.physics.cushionFriction;
+    case Field::CushionModelParameter: return s.physics.*member_;
     case Field::TableLength: return s.table.length.value_or(makeTable(s.table.kind).length);
     case Field::TableWidth: return s.table.width.value_or(makeTable(s.table.kind).width);
     case Field::TableCushionHeight: return s.table.cushionHeight.value_or(makeTable(s.table.kind).cushionHeight);
@@ -186,6 +269,8 @@ std::string Parameter::text(const Setup& s) const
 {
     switch (field_) {
     case Field::ShotBall: return s.shot->ball;
+    case Field::Name: return s.name;
+    case Field::Notes: return s.notes;
     case Field::BallBallModel: return std::string(toString(s.physics.ballBallModel));
     case Field::BallCushionModel: return std::string(toString(s.physics.ballCushionModel));
     case Field::TableKind: return std::string(toString(s.table.kind));
@@ -207,6 +292,7 @@ void Parameter::setNumber(Setup& s, double x) const
     case Field::ShotSide: s.shot->side = x; break;
     case Field::ShotHeight: s.shot->height = x; break;
     case Field::ShotCueMass: s.shot->cueMass = x; break;
+    case Field::ShotEndMass: s.shot->endMass = x; break;
     case Field::Gravity: s.physics.gravity = x; break;
     case Field::MuSlide: s.physics.muSlide = x; break;
     case Field::MuRoll: s.physics.muRoll = x; break;
@@ -218,6 +304,7 @@ void Parameter::setNumber(Setup& s, double x) const
         break;
     case Field::BallCushionRestitution: s.physics.cushionRestitution = x; break;
     case Field::BallCushionFriction: s.physics.cushionFriction = x; break;
+    case Field::CushionModelParameter: s.physics.*member_ = x; break;
     case Field::TableLength: s.table.length = x; break;
     case Field::TableWidth: s.table.width = x; break;
     case Field::TableCushionHeight: s.table.cushionHeight = x; break;
@@ -253,14 +340,16 @@ std::optional<OverrideError> Parameter::setText(Setup& s, std::string_view value
         else return badValue(key_, value, "frictionless or frictional");
         return std::nullopt;
     case Field::BallCushionModel:
-        if (value == "mirror") s.physics.ballCushionModel = BallCushionModel::Mirror;
-        else if (value == "han2005") s.physics.ballCushionModel = BallCushionModel::Han2005;
-        else return badValue(key_, value, "mirror or han2005");
+        // Every registered model (CushionModels.cpp), by its name in files.
+        if (const CushionModelEntry* model = findCushionModel(value)) s.physics.ballCushionModel = model->model;
+        else return badValue(key_, value, cushionModelNames());
         return std::nullopt;
+    case Field::Name: s.name = std::string(value); return std::nullopt;
+    case Field::Notes: s.notes = std::string(value); return std::nullopt;
     case Field::TableKind: {
         TableKind kind{};
         if (!parseTableKind(value, kind))
-            return badValue(key_, value, "pool-9ft, pool-8ft, pool-7ft, snooker or carom");
+            return badValue(key_, value, tableKindNames());
         // Balls that followed the old kind's default follow the new one (see Override.h).
         const Table before = makeTable(s.table.kind), after = makeTable(kind);
         for (Ball& b : s.balls) {
@@ -309,6 +398,10 @@ std::vector<std::string> overridableKeys(const Setup& setup, bool numbersOnly)
         if (numbersOnly && k.type != Type::Number) continue;
         if (isShotField(k.field) && !setup.shot) continue;
         keys.emplace_back(k.name);
+        // The current cushion model's own parameters, from the registry, after its common ones.
+        if (k.field == Field::BallCushionFriction)
+            for (const CushionModelParameter& q : cushionModel(setup.physics.ballCushionModel).parameters)
+                keys.push_back(std::string(kCushionPrefix) + std::string(q.key));
     }
     for (const Ball& b : setup.balls)
         for (const KeyInfo& k : kBallKeys) keys.push_back("balls." + b.id + "." + k.name);

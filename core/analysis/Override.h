@@ -4,13 +4,19 @@
 // Analysis dock.
 //
 // KEY is a dotted path of the setup file's own names:
-//   shot.ball|speed|heading|elevation|side|height|cue_mass
+//   shot.ball|speed|heading|elevation|side|height|cue_mass|end_mass
 //   physics.gravity|mu_slide|mu_roll|mu_spin
 //   physics.ball_ball.model|restitution|friction      (friction: a number or "alciatore")
-//   physics.ball_cushion.model|restitution|friction
+//   physics.ball_cushion.model|restitution|friction   (model: every name of the registry,
+//                                                      core/physics/resolve/CushionModels.cpp)
+//   physics.ball_cushion.<parameter>                  (the current model's own, from the registry:
+//                                                      steps for mathavan2010, omega_ratio for stronge)
 //   table.kind|pockets|length|width|cushion_height
 //   balls.<id>.x|y|vx|vy|wx|wy|wz|radius|mass         (<id> may itself contain dots)
 //   simulation.max_time|frame_dt
+//   name|notes                                        (text)
+// so that every key of a setup file can be overridden (CONTRACT.md, Extensions version 2). An unknown
+// key's message lists the valid ones; an unknown model lists the registered ones.
 //
 // Applying an override only checks that the key exists and that the value has the key's type (a
 // finite number, true/false, a model or table-kind name, a ball id). Whether the setup is still
@@ -81,6 +87,7 @@ private:
     std::string key_;
     Field field_;
     int ball_ = -1;  // index into Setup::balls for balls.<id>.* keys
+    double PhysicsParams::*member_ = nullptr;  // a cushion model's own parameter (its registry entry's field)
 };
 
 // Resolves `key` and sets it from text: the whole of `--set KEY=VALUE`.

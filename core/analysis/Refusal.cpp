@@ -1,7 +1,6 @@
 #include "Refusal.h"
 
-#include <array>
-#include <charconv>
+#include "NumberText.h"
 
 namespace cuelab::analysis {
 
@@ -12,12 +11,7 @@ std::string refusalMessage(const std::string& setupName, const SetupProblem& pro
     return out + ": " + problem.message;
 }
 
-std::string roundTrip(double value)
-{
-    std::array<char, 32> buffer{};
-    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    return ec == std::errc() ? std::string(buffer.data(), end) : std::string("null");
-}
+std::string roundTrip(double value) { return roundTripText(value); }
 
 std::optional<std::string> unfinishedReason(const SimulationResult& result, const Setup& setup, double until)
 {

@@ -18,7 +18,8 @@ std::string refusalMessage(const std::string& setupName, const SetupProblem& pro
 // caller asked for (until >= 0, not beyond max_time) is finishing.
 std::optional<std::string> unfinishedReason(const SimulationResult& result, const Setup& setup, double until);
 
-// The shortest text that reads back to exactly `value` ("0.1", "600", "1e-05").
+// The shortest text that reads back to exactly `value` ("0.1", "600", "1e-05"): roundTripText
+// (core/setup/NumberText.h), the one formatter.
 std::string roundTrip(double value);
 
 }  // namespace cuelab::analysis

@@ -1,10 +1,9 @@
 #include "EngineParts.h"
 
 #include "BallContact.h"
+#include "NumberText.h"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 
 namespace cuelab::compare::detail {
 
@@ -58,11 +57,6 @@ double worstOverlap(const std::vector<BallSample>& balls, const std::vector<doub
     return worst;
 }
 
-std::string number(double value)
-{
-    std::array<char, 32> buf{};
-    const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), value);
-    return std::string(buf.data(), r.ptr);
-}
+std::string number(double value) { return roundTripText(value); }
 
 }  // namespace cuelab::compare::detail

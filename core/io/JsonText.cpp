@@ -1,8 +1,9 @@
 #include "JsonText.h"
 
+#include "NumberText.h"
+
 #include <array>
 #include <cassert>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -10,12 +11,9 @@ namespace cuelab::io {
 
 std::string roundTripNumber(double value)
 {
-    if (!std::isfinite(value)) return "null";
-    // Without a format argument std::to_chars writes the shortest text that round-trips
-    // (C++17 [charconv.to.chars]); 32 characters hold any double in that form.
-    std::array<char, 32> buffer{};
-    const std::to_chars_result r = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    return std::string(buffer.data(), r.ptr);
+    // JSON has no form for not-a-number and the infinities; the rest as every number prints
+    // (core/setup/NumberText.h).
+    return std::isfinite(value) ? roundTripText(value) : std::string("null");
 }
 
 void JsonWriter::newline()
@@ -89,6 +87,12 @@ void JsonWriter::value(double number)
 }
 
 void JsonWriter::value(int number)
+{
+    beforeValue();
+    out_ += std::to_string(number);
+}
+
+void JsonWriter::value(long long number)
 {
     beforeValue();
     out_ += std::to_string(number);

@@ -8,8 +8,9 @@
 
 namespace cuelab::io {
 
-// The shortest decimal text that parses back to exactly `value` (std::to_chars), e.g. "0.1", "600",
-// "1e-05", "-0". Not-a-number and infinities have no JSON form: they print as "null".
+// The shortest decimal text that parses back to exactly `value` (cuelab::roundTripText, the one
+// formatter), e.g. "0.1", "600", "1e-05", "-0". Not-a-number and infinities have no JSON form: they
+// print as "null".
 std::string roundTripNumber(double value);
 
 // A streaming JSON writer. Objects and arrays are laid out either one member per line (Block) or
@@ -27,6 +28,7 @@ public:
 
     void value(double number);
     void value(int number);
+    void value(long long number);  // a whole number, in digits ("100000", never "1e+05")
     void value(bool flag);
     void value(std::string_view text);
     void value(const char* text) { value(std::string_view(text)); }

@@ -7,7 +7,13 @@
 #include "Override.h"
 #include "Refusal.h"
 
+#include "resolve/CushionModel.h"
+
+#include <QFile>
 #include <QTest>
+
+#include <algorithm>
+#include <cmath>
 
 using namespace cuelab;
 using namespace cuelab::analysis;
@@ -28,6 +34,10 @@ private slots:
     void illegalOverrideIsRefused();
     void assignmentAndNumbers();
     void everyListedKeyResolves();
+    void everyRegisteredModel();
+    void modelParametersFromTheRegistry();
+    void unknownKeyListsTheValidOnes();
+    void docsListEveryModelAndParameter();
 };
 
 void TestOverride::numericKeys_data()
@@ -35,7 +45,7 @@ void TestOverride::numericKeys_data()
     QTest::addColumn<QString>("key");
     QTest::addColumn<double>("value");
     for (const char* key :
-         {"shot.speed", "shot.heading", "shot.elevation", "shot.side", "shot.height", "shot.cue_mass",
+         {"shot.speed", "shot.heading", "shot.elevation", "shot.side", "shot.height", "shot.cue_mass", "shot.end_mass",
           "physics.gravity", "physics.mu_slide", "physics.mu_roll", "physics.mu_spin", "physics.ball_ball.restitution",
           "physics.ball_ball.friction", "physics.ball_cushion.restitution", "physics.ball_cushion.friction",
           "table.length", "table.width", "table.cushion_height", "balls.cue.x", "balls.cue.y", "balls.1.vx",
@@ -198,11 +208,89 @@ void TestOverride::everyListedKeyResolves()
 {
     const Setup setup = test::example("half-ball-cut.json");
     const auto keys = overridableKeys(setup, false);
-    QCOMPARE(static_cast<int>(keys.size()), 24 + 2 * 9);
+    // 24 keys of issue 11, shot.end_mass, name and notes (han2005 has no parameters of its own), 9 per ball
+    QCOMPARE(static_cast<int>(keys.size()), 27 + 2 * 9);
     for (const std::string& key : keys) QVERIFY2(std::holds_alternative<Parameter>(Parameter::resolve(setup, key)), key.c_str());
     Setup noShot = setup;
     noShot.shot.reset();
     QVERIFY(std::holds_alternative<OverrideError>(Parameter::resolve(noShot, "shot.speed")));
+}
+
+// physics.ball_cushion.model takes every name of the registry (CushionModels.cpp), as a file does.
+void TestOverride::everyRegisteredModel()
+{
+    QVERIFY(cushionModels().size() >= 4);
+    for (const CushionModelEntry& e : cushionModels()) {
+        Setup setup = test::example("half-ball-cut.json");
+        QVERIFY2(!applyOverride(setup, "physics.ball_cushion.model", e.name), std::string(e.name).c_str());
+        QVERIFY(setup.physics.ballCushionModel == e.model);
+        auto p = Parameter::resolve(setup, "physics.ball_cushion.model");
+        QCOMPARE(std::get<Parameter>(p).text(setup), std::string(e.name));
+    }
+    // The refusal lists them, in the registry's order.
+    Setup setup = test::example("half-ball-cut.json");
+    const auto error = applyOverride(setup, "physics.ball_cushion.model", "strong");
+    QVERIFY(error && error->kind == OverrideError::Kind::BadValue);
+    QCOMPARE(error->message, std::string("physics.ball_cushion.model: expected mirror, han2005, mathavan2010 or stronge, found \"strong\""));
+}
+
+// Each model's own parameters are keys while that model is chosen; with another model the key says
+// whose it is (a file refuses it then too).
+void TestOverride::modelParametersFromTheRegistry()
+{
+    for (const CushionModelEntry& e : cushionModels()) {
+        for (const CushionModelParameter& q : e.parameters) {
+            const std::string key = "physics.ball_cushion." + std::string(q.key);
+            Setup setup = test::example("half-ball-cut.json");  // han2005
+            const auto wrongModel = applyOverride(setup, key, "1.5");
+            QVERIFY2(wrongModel && wrongModel->kind == OverrideError::Kind::UnknownKey, key.c_str());
+            QVERIFY2(wrongModel->message.find("set physics.ball_cushion.model=" + std::string(e.name) + " first") != std::string::npos,
+                     wrongModel->message.c_str());
+            QVERIFY(!applyOverride(setup, "physics.ball_cushion.model", e.name));
+            const auto keys = overridableKeys(setup, true);
+            QVERIFY2(std::find(keys.begin(), keys.end(), key) != keys.end(), key.c_str());
+            // A value inside the parameter's range: the middle of it, a whole number for a whole one.
+            const double value = q.integer ? std::floor((q.min + q.max) / 2.0) : (q.min + q.max) / 2.0;
+            QVERIFY(!applyOverride(setup, key, roundTrip(value)));
+            QCOMPARE(setup.physics.*(q.field), value);
+            QVERIFY(!firstSetupProblem(setup));
+            // Beyond the range: the validator refuses it with the file's message.
+            QVERIFY(!applyOverride(setup, key, roundTrip(q.max + 1.0)));
+            const auto problem = firstSetupProblem(setup);
+            QVERIFY(problem);
+            QCOMPARE(problem->path, key);
+        }
+    }
+}
+
+void TestOverride::unknownKeyListsTheValidOnes()
+{
+    Setup setup = test::example("half-ball-cut.json");
+    const auto error = applyOverride(setup, "shot.sped", "1");
+    QVERIFY(error);
+    for (const char* key : {"shot.speed", "shot.end_mass", "physics.ball_cushion.model", "table.kind", "simulation.max_time",
+                            "name", "balls.<id>.x|y|vx|vy|wx|wy|wz|radius|mass with <id> one of cue, 1"})
+        QVERIFY2(error->message.find(key) != std::string::npos, (std::string(key) + " in " + error->message).c_str());
+    const auto noBall = applyOverride(setup, "balls.9.x", "1");
+    QVERIFY(noBall);
+    QVERIFY2(noBall->message.find("the balls are \"cue\", \"1\"") != std::string::npos, noBall->message.c_str());
+}
+
+// docs/analysis.md's key table names every registered model and every model parameter's key, so the
+// page follows the registry (a new model without its row fails here).
+void TestOverride::docsListEveryModelAndParameter()
+{
+    QFile file(QStringLiteral(CUELAB_SOURCE_DIR "/docs/analysis.md"));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(file.readAll());
+    for (const CushionModelEntry& e : cushionModels()) {
+        QVERIFY2(text.contains(QStringLiteral("`%1`").arg(QString::fromUtf8(e.name.data(), static_cast<int>(e.name.size())))),
+                 std::string(e.name).c_str());
+        for (const CushionModelParameter& q : e.parameters)
+            QVERIFY2(text.contains(QStringLiteral("`physics.ball_cushion.%1`").arg(QString::fromUtf8(q.key.data(), static_cast<int>(q.key.size())))),
+                     std::string(q.key).c_str());
+    }
+    QVERIFY(text.contains(QStringLiteral("`shot.end_mass`")));
 }
 
 QTEST_GUILESS_MAIN(TestOverride)

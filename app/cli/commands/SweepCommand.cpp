@@ -37,7 +37,7 @@ std::string sweepLine(const analysis::ShotResult& shot, const analysis::SweepSpe
     JsonWriter w;
     w.beginObject(Layout::Line);
     w.key("index");
-    w.value(static_cast<double>(shot.index));
+    w.value(shot.index);  // a whole number (CONTRACT.md, Extensions version 2: never "1e+05")
     w.key("set");
     w.beginObject(Layout::Line);
     for (std::size_t j = 0; j < spec.variations.size(); ++j) {
