@@ -5,7 +5,8 @@
 #   scripts/fuzz.sh --ci            a short, reproducible run of both targets (fixed seed and runs; CI)
 #   scripts/fuzz.sh [SECONDS]       a long run of each target (default 3600 s each), on all cores
 # A crash leaves its input in build-fuzz/artifacts/; copy it into tests/fuzz/corpus/ once fixed, so that
-# tst_fuzzreplay keeps checking it in every build.
+# tst_fuzzreplay keeps checking it in every build. A long run's worker logs (fuzz-N.log) go to
+# build-fuzz/logs/TARGET/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${CUELAB_FUZZ_BUILD_DIR:-$root/build-fuzz}
@@ -42,7 +43,11 @@ for target in fuzz_setup fuzz_simulate; do
     "$build/$target" "${common[@]}" -seed=13 -runs="$runs" "$corpus" 2>&1 | tail -n 25
   else
     jobs=$(nproc)
-    "$build/$target" "${common[@]}" -max_total_time="$seconds" -jobs="$jobs" -workers="$jobs" "$corpus" \
-      2>&1 | tail -n 40
+    # With -jobs libFuzzer writes each worker's fuzz-N.log into the current folder: run it in the fuzz
+    # build's own folder for the target, never in the repository.
+    logs="$build/logs/$target"
+    mkdir -p "$logs"
+    (cd "$logs" && "$build/$target" "${common[@]}" -max_total_time="$seconds" -jobs="$jobs" -workers="$jobs" "$corpus" \
+      2>&1 | tail -n 40)
   fi
 done

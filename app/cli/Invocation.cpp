@@ -114,19 +114,10 @@ bool Invocation::simulate(const Setup& setup, double until, SimulationResult& re
     if (parser_.isSet(QStringLiteral("max-events")))
         options.maxEvents = parser_.value(QStringLiteral("max-events")).toLongLong();  // checked by Cli.cpp
     result = cuelab::simulate(setup, options);
-    if (result.status == SimulationStatus::EventLimit) {
-        fail(QStringLiteral("%1: the simulation was cut short at t = %2 s: %3")
-                 .arg(setupName(), QString::fromStdString(io::roundTripNumber(result.endTime)),
-                      QString::fromStdString(result.error)),
-             SimulationUnfinished);
-        return false;
-    }
-    // Stopping at the time the user asked for is success; stopping at max_time with balls moving is not.
-    const bool stoppedAtRequest = until >= 0.0 && until <= setup.simulation.maxTime;
-    if (result.status == SimulationStatus::ReachedUntil && !stoppedAtRequest) {
-        fail(QStringLiteral("%1: balls still move at max_time = %2 s (raise simulation.max_time in the setup)")
-                 .arg(setupName(), QString::fromStdString(io::roundTripNumber(setup.simulation.maxTime))),
-             SimulationUnfinished);
+    // The event cap, or max_time with balls moving, is unfinished; stopping at the time the user asked
+    // for is success. The words are the sweep's and the Analysis dock's (core/analysis/Refusal.h).
+    if (const auto why = analysis::unfinishedReason(result, setup, until)) {
+        fail(setupName() + QStringLiteral(": ") + QString::fromStdString(*why), SimulationUnfinished);
         return false;
     }
     return true;

@@ -35,6 +35,7 @@
 
 #include "EngineParts.h"
 
+#include "BallContact.h"
 #include "CueImpact.h"
 
 #include <box2d/box2d.h>
@@ -95,7 +96,8 @@ public:
         if (c->GetManifold()->pointCount == 0) return;
         if (twoBalls) {
             const b2Vec2 gap = c->GetFixtureB()->GetBody()->GetPosition() - c->GetFixtureA()->GetBody()->GetPosition();
-            const double reach = (*radii)[static_cast<std::size_t>(a.index)] + (*radii)[static_cast<std::size_t>(b.index)];
+            // The sampler's measure (Sampler.cpp, worstOverlap): 2 sqrt(Ra Rb), Ra + Rb for equal radii.
+            const double reach = touchDistance((*radii)[static_cast<std::size_t>(a.index)], (*radii)[static_cast<std::size_t>(b.index)]);
             worstOverlap = std::max(worstOverlap, reach - static_cast<double>(gap.Length()) / scale);
         }
         b2WorldManifold wm;

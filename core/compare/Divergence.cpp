@@ -52,17 +52,27 @@ Divergence measureDivergence(const EngineRun& exact, const EngineRun& run)
     return d;
 }
 
-Comparison compareEngines(const Setup& setup, const EngineSettings& settings, const Progress& progress)
+EngineRun exactRunFor(const Setup& setup, const EngineSettings& settings)
 {
-    Comparison c;
     EngineSettings exact;
     exact.engine = EngineKind::Exact;
     exact.sampleDt = resolved(settings).sampleDt;
-    c.exact = runEngine(setup, exact);
+    return runEngine(setup, exact);
+}
+
+Comparison compareWith(const Setup& setup, const EngineSettings& settings, EngineRun exact, const Progress& progress)
+{
+    Comparison c;
+    c.exact = std::move(exact);
     c.run = settings.engine == EngineKind::Exact ? c.exact : runEngine(setup, settings, progress);
     if (c.run.cancelled || c.exact.samples.empty() || c.run.samples.empty()) return c;
     c.divergence = measureDivergence(c.exact, c.run);
     return c;
+}
+
+Comparison compareEngines(const Setup& setup, const EngineSettings& settings, const Progress& progress)
+{
+    return compareWith(setup, settings, exactRunFor(setup, settings), progress);
 }
 
 }  // namespace cuelab::compare

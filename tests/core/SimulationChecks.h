@@ -3,6 +3,7 @@
 // table, momentum, energy, and the continuity of the timelines.
 
 #include "BallContact.h"
+#include "Contact.h"
 #include "Motion.h"
 #include "Simulation.h"
 
@@ -220,7 +221,7 @@ inline BallState continued(const SimulationResult& r, int index, const MotionSeg
 // of the group's contacts, at most kHoldSpeed. Returns "" or what broke (ball, segment, numbers).
 inline std::string timelineProblem(const SimulationResult& r, double positionTol = 1e-9, double velocityTol = 1e-9)
 {
-    constexpr double kSeat = 0.01;  // m/s, Contact.h: kHoldSpeed
+    constexpr double kSeat = kHoldSpeed;  // m/s (Contact.h)
     // The instants at which a held group was solved: a segment of some ball begins or ends a push
     // there, or an event there held a pair or was solved with a group.
     std::vector<double> groupTimes;

@@ -18,22 +18,18 @@ CompareOutcome runComparison(Setup setup, compare::EngineSettings settings, quin
     CompareOutcome out;
     out.generation = generation;
     try {
-        auto c = std::make_shared<compare::Comparison>();
-        compare::EngineSettings exact;
-        exact.engine = compare::EngineKind::Exact;
-        exact.sampleDt = compare::resolved(settings).sampleDt;
-        c->exact = compare::runEngine(setup, exact);
+        // compareEngines (core/compare) in its two parts, to report progress and stop in between.
+        compare::EngineRun exact = compare::exactRunFor(setup, settings);
         if (current->load() != generation) return out;
         progress->store(5);
         // The other engines usually run a little longer than the exact one (no slide phase).
-        const double expected = std::max(1.0, 1.3 * c->exact.endTime);
+        const double expected = std::max(1.0, 1.3 * exact.endTime);
         const compare::Progress report = [&](double t) {
             progress->store(std::clamp(5 + static_cast<int>(90.0 * t / expected), 5, 95));
             return current->load() == generation;
         };
-        c->run = settings.engine == compare::EngineKind::Exact ? c->exact : compare::runEngine(setup, settings, report);
+        auto c = std::make_shared<compare::Comparison>(compare::compareWith(setup, settings, std::move(exact), report));
         if (c->run.cancelled || current->load() != generation) return out;
-        c->divergence = compare::measureDivergence(c->exact, c->run);
         progress->store(100);
         out.comparison = std::move(c);
     } catch (const std::exception& e) {
