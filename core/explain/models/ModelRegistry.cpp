@@ -15,6 +15,8 @@ constexpr std::pair<BallBallModel, BallBallExplainer> kBallBall[] = {
 constexpr std::pair<BallCushionModel, CushionExplainer> kCushion[] = {
     {BallCushionModel::Mirror, explainMirror},
     {BallCushionModel::Han2005, explainHan2005},
+    {BallCushionModel::Mathavan2010, explainMathavan2010},
+    {BallCushionModel::Stronge, explainStronge},
 };
 
 }  // namespace

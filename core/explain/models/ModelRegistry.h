@@ -44,5 +44,7 @@ BallBallResult explainFrictionless(const BallBallInput& in, std::vector<Step>& s
 BallBallResult explainFrictional(const BallBallInput& in, std::vector<Step>& steps);
 CushionResult explainMirror(const CushionInput& in, std::vector<Step>& steps);
 CushionResult explainHan2005(const CushionInput& in, std::vector<Step>& steps);
+CushionResult explainMathavan2010(const CushionInput& in, std::vector<Step>& steps);
+CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps);
 
 }  // namespace cuelab::explain

@@ -1,0 +1,238 @@
+// Ball-cushion, Stronge's compliant frictional impact (core/physics/resolve/StrongeCushion.h; pooltool's
+// stronge_compliant): the contact at the equator meets the cushion through a normal spring (unloading
+// stiffer by 1/e²) and a tangential one (ω_t/ω_n = omega_ratio). The tangential contact sticks while
+// its spring force stays below μ F_n and slips otherwise. The phases below are the simulator's
+// (strongeTangentialVelocity), operation for operation (the resolver has no trace to ask), with the
+// switch times recorded; tst_explain checks that the result equals the simulator's event to 1e-12,
+// and the final tangential velocity here equals strongeTangentialVelocity's own bit for bit.
+#include "ModelRegistry.h"
+#include "StepBuilder.h"
+
+#include "Motion.h"
+#include "resolve/StrongeCushion.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace cuelab::explain {
+
+namespace {
+
+struct NormalSpring {
+    double A = 0.0, e = 1.0;
+    static constexpr double tc = std::numbers::pi / 2.0;
+    double end() const { return tc * (1.0 + e); }
+    double force(double t) const
+    {
+        if (t <= tc) return A * std::sin(t);
+        return e > 0.0 ? A * std::cos((t - tc) / e) : 0.0;
+    }
+    double rate(double t) const
+    {
+        if (t <= tc) return A * std::cos(t);
+        return e > 0.0 ? -(A / e) * std::sin((t - tc) / e) : 0.0;
+    }
+    double impulse(double t) const
+    {
+        if (t <= tc) return A * (1.0 - std::cos(t));
+        return e > 0.0 ? A * (1.0 + e * std::sin((t - tc) / e)) : A;
+    }
+};
+
+struct Mode {
+    bool stick = false;
+    int s = 1;
+    double start = 0.0;
+    double v0 = 0.0;
+    double u0 = 0.0;
+};
+
+struct Phase {
+    bool stick = false;
+    double start = 0.0;  // in 1/ω_n
+    double v0 = 0.0;     // tangential contact velocity at its start, m/s
+};
+
+// strongeTangentialVelocity with its phases recorded.
+double tangentialVelocity(double vn0, double vt0, double mu, double e, double omegaRatio, double betaT,
+                          std::vector<Phase>& phases, bool& chattered)
+{
+    chattered = false;
+    if (!(vn0 < 0.0) || !(vt0 > 0.0) || !(mu > 0.0)) return vt0;
+    const double betaN = 1.0;
+    const NormalSpring F{-vn0 / betaN, e};
+    const double r = omegaRatio;
+    const double kappa = r * r / betaT;
+    const double tEnd = F.end();
+    const auto velocity = [&](const Mode& m, double t) {
+        if (m.stick) {
+            const double tau = t - m.start;
+            return m.v0 * std::cos(r * tau) - m.u0 * r * std::sin(r * tau);
+        }
+        return m.v0 - m.s * mu * betaT * (F.impulse(t) - F.impulse(m.start));
+    };
+    const auto deflection = [&](const Mode& m, double t) {
+        if (m.stick) {
+            const double tau = t - m.start;
+            return m.u0 * std::cos(r * tau) + (m.v0 / r) * std::sin(r * tau);
+        }
+        return m.s * mu * F.force(t) / kappa;
+    };
+    const auto holds = [&](const Mode& m, double t) {
+        if (m.stick) return mu * F.force(t) - kappa * std::abs(deflection(m, t));
+        return m.s * (velocity(m, t) - m.s * mu * F.rate(t) / kappa);
+    };
+    Mode mode;
+    mode.v0 = vt0;
+    mode.stick = !(vt0 > mu * F.rate(0.0) / kappa);
+    phases.push_back({mode.stick, 0.0, vt0});
+    constexpr int kSamples = 256;
+    constexpr int kMaxSwitches = 64;
+    for (int switches = 0; switches < kMaxSwitches; ++switches) {
+        const double h = (tEnd - mode.start) / kSamples;
+        double lo = mode.start, hi = -1.0;
+        for (int k = 1; k <= kSamples; ++k) {
+            const double t = k == kSamples ? tEnd : mode.start + k * h;
+            if (holds(mode, t) < 0.0) {
+                hi = t;
+                break;
+            }
+            lo = t;
+        }
+        if (hi < 0.0) return velocity(mode, tEnd);
+        for (int it = 0; it < 200; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            if (mid <= lo || mid >= hi) break;
+            (holds(mode, mid) < 0.0 ? hi : lo) = mid;
+        }
+        const double t = lo;
+        Mode next;
+        next.start = t;
+        next.v0 = velocity(mode, t);
+        if (mode.stick) {
+            next.stick = false;
+            next.s = deflection(mode, t) >= 0.0 ? 1 : -1;
+        } else {
+            next.stick = true;
+            next.u0 = deflection(mode, t);
+        }
+        mode = next;
+        phases.push_back({mode.stick, mode.start, mode.v0});
+    }
+    chattered = true;
+    mode.stick = false;
+    mode.s = mode.v0 >= 0.0 ? 1 : -1;
+    const double v = velocity(mode, tEnd);
+    return mode.s * v < 0.0 ? 0.0 : v;
+}
+
+}  // namespace
+
+CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
+{
+    const PhysicsParams& p = in.params;
+    const double R = in.radius;
+    const double m = in.mass;
+    const Vec3 N(in.normal.x(), in.normal.y(), 0.0);
+    const Vec3 rc = -R * N;
+    const Vec3 v(in.before.velocity.x(), in.before.velocity.y(), 0.0);
+    const Vec3 u = v + in.before.spin.cross(rc);
+    const double vn0 = u.dot(N);
+    CushionResult result;
+    result.after = in.before;
+    result.approachSpeed = -in.before.velocity.dot(in.normal);
+    const Vec3 ut = u - vn0 * N;
+    const double vt0 = ut.norm();
+    StepBuilder(steps, "Contact at the equator",
+                "As in pooltool, the ball meets the cushion at its equator, along the cushion's normal N. The "
+                "velocity of the contact point splits into its approach v_n (< 0 approaching) and its slip v_t.",
+                "u = v + ω × r_c,  r_c = −R N,   v_n = u·N,   v_t = |u − v_n N|")
+        .in("v", "v", Vec2(in.before.velocity), "m/s")
+        .in("w", "ω", in.before.spin, "rad/s")
+        .in("R", "R", R, "m")
+        .out("u", "u", u, "m/s")
+        .out("u_n", "v_n", vn0, "m/s")
+        .out("u_t", "v_t", vt0, "m/s");
+    if (!(vn0 < 0.0)) {
+        StepBuilder(steps, "No approach", "The contact point does not move into the cushion: no impulse.",
+                    "v′ = v,   ω′ = ω")
+            .out("v_after", "v′", result.after.velocity, "m/s")
+            .out("w_after", "ω′", result.after.spin, "rad/s");
+        return result;
+    }
+
+    constexpr double betaT = 3.5;
+    const double mu = p.cushionFriction, e = p.cushionRestitution, ratio = p.strongeOmegaRatio;
+    const double kappa = ratio * ratio / betaT;
+    const double A = -vn0;  // the normal spring's amplitude per unit effective mass (beta_n = 1), time in 1/ω_n
+    StepBuilder(steps, "Normal and tangential springs",
+                "Time runs in units of 1/ω_n. The normal spring's force per unit effective mass is A sin t while it "
+                "compresses (to t = π/2) and A cos((t − π/2)/e) while it unloads, stiffer by 1/e², so the contact "
+                "leaves at −e v_n (ends at (1 + e) π/2). The tangential spring has frequency ω_t = r ω_n, its "
+                "stiffness per unit effective mass κ = r²/β_t with β_t = 1 + m R²/I = 7/2.",
+                "A = −v_n,   κ = r²/β_t,   t_end = (1 + e) π/2")
+        .in("e", "e", e)
+        .in("r", "ω_t/ω_n", ratio)
+        .in("mu", "μ", mu)
+        .out("A", "A", A, "m/s")
+        .out("kappa", "κ", kappa)
+        .out("t_end", "t_{end}", NormalSpring{A, e}.end());
+
+    std::vector<Phase> phases;
+    bool chattered = false;
+    const double vtRaw = tangentialVelocity(vn0, vt0, mu, e, ratio, betaT, phases, chattered);
+    {
+        StepBuilder phaseStep(steps, "Stick and slip",
+                              "At t = 0 the contact slips if its slip outruns what the growing friction limit can hold "
+                              "(v_t > μ A/κ), else it sticks. A stick ends when the spring force reaches μ F_n (the "
+                              "contact then slips the way the spring pulls); a slip ends when the contact's velocity "
+                              "reaches what the spring alone would give (it then sticks, holding its deflection). "
+                              "Each switch time is a root of the phases' closed forms (sampled, then bisected).",
+                              "stick: v(t) = v₀ cos(r τ) − u₀ r sin(r τ);   slip: v(t) = v₀ ∓ μ β_t (P_n(t) − P_n(t₀))");
+        phaseStep.in("mu_A_over_kappa", "μ A/κ", mu * A / kappa, "m/s");
+        phaseStep.out("phases", "phases", static_cast<double>(phases.size()));
+        for (std::size_t k = 0; k < phases.size() && k < 12; ++k) {
+            const std::string i = std::to_string(k + 1);
+            phaseStep.out("phase" + i + "_stick", "stick_{" + i + "}", phases[k].stick ? 1.0 : 0.0);
+            phaseStep.out("phase" + i + "_start", "t_{" + i + "}", phases[k].start);
+            phaseStep.out("phase" + i + "_v", "v_{t," + i + "}", phases[k].v0, "m/s");
+        }
+        phaseStep.out("chattered", "chattering", chattered ? 1.0 : 0.0);
+        phaseStep.out("v_t_end", "v_t′", vtRaw, "m/s");
+    }
+    const double vtf = std::clamp(vtRaw, -vt0, vt0);
+    const double Jn = -(1.0 + e) * m * vn0;
+    Vec3 impulse = Jn * N;
+    Vec3 dw = Vec3::Zero();
+    double Jt = 0.0;
+    if (vt0 > 0.0) {
+        const Vec3 t = ut / vt0;
+        Jt = m * (vtf - vt0) / betaT;
+        impulse += Jt * t;
+        dw = rc.cross(Jt * t) / ballInertia(m, R);
+    }
+    StepBuilder(steps, "Impulses",
+                "The normal impulse returns the approach e times; the tangential one changes the slip from v_t to "
+                "v_t′ (at most |v_t|: a rounding guard keeps the tangential energy from growing).",
+                "J_n = −(1 + e) m v_n,   J_t = m (v_t′ − v_t)/β_t")
+        .in("m", "m", m, "kg")
+        .out("J_n", "J_n", Jn, "N s")
+        .out("J_t", "J_t", Jt, "N s");
+    result.after.velocity = in.before.velocity + impulse.head<2>() / m;
+    result.after.spin = in.before.spin + dw;
+    result.after.motion = classify(result.after, R);
+    result.impulse = impulse;
+    StepBuilder(steps, "Velocity and spin after",
+                "The impulse over mass changes the velocity (its vertical part goes into the cloth), its torque "
+                "about the centre over I = 2/5 m R² the spin.",
+                "v′ = v + J/m,   ω′ = ω + (r_c × J_t t̂)/I")
+        .out("v_after", "v′", result.after.velocity, "m/s")
+        .out("w_after", "ω′", result.after.spin, "rad/s")
+        .out("J", "J", result.impulse, "N s");
+    return result;
+}
+
+}  // namespace cuelab::explain
