@@ -72,6 +72,8 @@ struct Collision {
     int ball = -1;        // index into the setup's balls
     int other = -1;       // BallBall: the other ball's index (ball < other)
     std::string agent;    // BallCushion: the cushion or jaw id; BallPocket: the pocket id
+    int event = -1;       // exact engine: the index of this collision in the simulation's events (a
+                          // person reads it as #event+1, as in the Events list); -1 for the others
 };
 
 // A ball at a sample time. A pocketed ball sits at its pocket's centre.

@@ -41,8 +41,10 @@ EngineRun runExact(const Setup& setup, const EngineSettings& settings, const Pro
     run.steps = static_cast<long long>(r.events.size());
     const Table& table = r.table;
 
-    for (const Event& e : r.events) {
+    for (std::size_t i = 0; i < r.events.size(); ++i) {
+        const Event& e = r.events[i];
         Collision c;
+        c.event = static_cast<int>(i);
         c.time = e.time;
         c.ball = e.balls[0];
         switch (e.kind) {

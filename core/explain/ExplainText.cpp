@@ -120,7 +120,7 @@ std::string stepMarkdown(const Step& s, int number)
 
 std::string heading(const Explanation& e)
 {
-    return e.title + " (event " + std::to_string(e.event) + ", t = " + readable(e.time) + " s)";
+    return e.title + " (event " + eventNumber(e.event) + ", t = " + readable(e.time) + " s)";
 }
 
 std::string quantitiesHtml(const std::vector<Quantity>& qs, bool result)
@@ -135,6 +135,8 @@ std::string quantitiesHtml(const std::vector<Quantity>& qs, bool result)
 }
 
 }  // namespace
+
+std::string eventNumber(int index) { return "#" + std::to_string(index + 1); }
 
 std::string readable(double value)
 {

@@ -10,6 +10,10 @@
 
 namespace cuelab::explain {
 
+// The number a person reads for event `index` (0-based, as in JSON and `--event N`): "#1" for the
+// first event (CONTRACT.md, Extensions version 2: everything a person reads numbers events from 1).
+std::string eventNumber(int index);
+
 // A number for people: 6 significant digits ("0.292614", "1.2e-07"), "∞" for infinity.
 std::string readable(double value);
 

@@ -843,8 +843,8 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>Δt (ms)</translation>
     </message>
     <message>
-        <source>The collisions each method found, in order. Δt is the engine&apos;s time minus the exact one, in milliseconds, while the two sequences agree; the first row where they differ is marked. Double-click a row to go to its time.</source>
-        <translation>Az egyes módszerek által talált ütközések, sorrendben. Δt a motor időpontja mínusz a pontos, milliszekundumban, amíg a két sorozat egyezik; az első eltérő sor meg van jelölve. Dupla kattintással a sor időpontjára ugrik.</translation>
+        <source>The collisions each method found, in order; # is the exact run&apos;s event number, as in the Events list. Δt is the engine&apos;s time minus the exact one, in milliseconds, while the two sequences agree; the first row where they differ is marked. Double-click a row to go to its time.</source>
+        <translation>Az egyes módszerek által talált ütközések, sorrendben; a # a pontos futás eseményszáma, ahogy az Események listában. Δt a motor időpontja mínusz a pontos, milliszekundumban, amíg a két sorozat egyezik; az első eltérő sor meg van jelölve. Dupla kattintással a sor időpontjára ugrik.</translation>
     </message>
     <message>
         <source>%1 t (s)</source>
@@ -884,6 +884,10 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
 </context>
 <context>
     <name>cuelab::ComparePanel</name>
+    <message>
+        <source>The collisions part after the exact run&apos;s last one (%1 of %2 agree; largest time difference %3 ms).</source>
+        <translation>Az ütközések a pontos futás utolsó ütközése után válnak el (%2-ból %1 egyezik; a legnagyobb időkülönbség %3 ms).</translation>
+    </message>
     <message>
         <source>Ghosts in the table view</source>
         <translation>Szellemek az asztalnézetben</translation>
@@ -981,8 +985,8 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>Nyugalomban a(z) %1 golyó %2 távolságra van attól a helytől, ahol a pontos futás hagyja.</translation>
     </message>
     <message>
-        <source>The collisions part at #%1 (%2 of %3 agree; largest time difference %4 ms).</source>
-        <translation>Az ütközések a #%1-nél válnak el (%3-ból %2 egyezik; a legnagyobb időkülönbség %4 ms).</translation>
+        <source>The collisions part at event %1 (%2 of %3 agree; largest time difference %4 ms).</source>
+        <translation>Az ütközések a(z) %1 eseménynél válnak el (%3-ból %2 egyezik; a legnagyobb időkülönbség %4 ms).</translation>
     </message>
     <message>
         <source>Same %1 collisions in the same order (largest time difference %2 ms).</source>
@@ -1046,6 +1050,10 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
 </context>
 <context>
     <name>cuelab::CushionModelParameters</name>
+    <message>
+        <source>Cost grows in proportion: about 0.1 ms of computing per cushion hit at 1000 steps, about 0.1 s at 1000000, in every shot of a sweep or an Analysis map too.</source>
+        <translation>A költség arányosan nő: 1000 lépésnél párnaütközésenként kb. 0,1 ms számítás, 1000000-nál kb. 0,1 s, egy söprés vagy elemzési térkép minden lövésében is.</translation>
+    </message>
     <message>
         <source>Change %1</source>
         <translation>%1 módosítása</translation>
@@ -1532,6 +1540,10 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
 </context>
 <context>
     <name>cuelab::MainWindow</name>
+    <message>
+        <source>%1. Beyond real play: %2</source>
+        <translation>%1. A valódi játékon túli értékek: %2</translation>
+    </message>
     <message>
         <source>Set the velocity of ball %1</source>
         <translation>A(z) %1 golyó sebességének beállítása</translation>

@@ -1,5 +1,7 @@
 #include "CollisionTable.h"
 
+#include "i18n/DisplayNames.h"
+
 #include <QHeaderView>
 
 namespace cuelab {
@@ -26,9 +28,9 @@ CollisionTable::CollisionTable(QWidget* parent) : QTableWidget(parent)
     horizontalHeader()->setStretchLastSection(true);
     verticalHeader()->hide();
     setSelectionBehavior(QAbstractItemView::SelectRows);
-    setToolTip(tr("The collisions each method found, in order. Δt is the engine's time minus the exact one, in "
-                  "milliseconds, while the two sequences agree; the first row where they differ is marked. "
-                  "Double-click a row to go to its time."));
+    setToolTip(tr("The collisions each method found, in order; # is the exact run's event number, as in the Events "
+                  "list. Δt is the engine's time minus the exact one, in milliseconds, while the two sequences agree; "
+                  "the first row where they differ is marked. Double-click a row to go to its time."));
     connect(this, &QTableWidget::cellDoubleClicked, this, [this](int row, int column) {
         const QTableWidgetItem* i = this->item(row, column);
         if (!i || !i->data(Qt::UserRole).isValid()) i = this->item(row, column <= ExactWhat ? ExactTime : EngineTime);
@@ -67,7 +69,8 @@ void CollisionTable::setComparison(const compare::Comparison& c)
     const int first = c.divergence.firstSequenceDifference.value_or(-1);
     for (int r = 0; r < rows; ++r) {
         const std::size_t k = static_cast<std::size_t>(r);
-        setItem(r, Index, makeItem(QString::number(r)));
+        // The exact run's event number (#N, as the Events list, Explain and the report write it).
+        setItem(r, Index, makeItem(k < a.size() && a[k].event >= 0 ? eventNumber(a[k].event) : QString()));
         if (k < a.size()) {
             setItem(r, ExactTime, makeItem(QString::number(a[k].time, 'f', 4), a[k].time));
             setItem(r, ExactWhat, makeItem(describe(a[k], c.exact.ids)));

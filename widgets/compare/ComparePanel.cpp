@@ -5,6 +5,7 @@
 #include "CompareGhosts.h"
 #include "CompareRunner.h"
 #include "SetupFile.h"
+#include "i18n/DisplayNames.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -237,11 +238,19 @@ void ComparePanel::showResult()
     if (worstBall >= 0)
         lines << tr("At rest, ball %1 lies %2 from where the exact run leaves it.")
                      .arg(QString::fromStdString(c->run.ids[std::size_t(worstBall)]), metres(worstFinal));
-    if (d.firstSequenceDifference)
-        lines << tr("The collisions part at #%1 (%2 of %3 agree; largest time difference %4 ms).")
-                     .arg(*d.firstSequenceDifference)
+    // Where they part, by the exact run's event number (#N, as the Events list writes it).
+    const auto& exact = c->exact.collisions;
+    const std::size_t part = d.firstSequenceDifference ? std::size_t(*d.firstSequenceDifference) : 0;
+    if (d.firstSequenceDifference && part < exact.size())
+        lines << tr("The collisions part at event %1 (%2 of %3 agree; largest time difference %4 ms).")
+                     .arg(eventNumber(exact[part].event))
                      .arg(d.matched.size())
-                     .arg(c->exact.collisions.size())
+                     .arg(exact.size())
+                     .arg(1000.0 * d.maxEventTimeDifference, 0, 'f', 2);
+    else if (d.firstSequenceDifference)
+        lines << tr("The collisions part after the exact run's last one (%1 of %2 agree; largest time difference %3 ms).")
+                     .arg(d.matched.size())
+                     .arg(exact.size())
                      .arg(1000.0 * d.maxEventTimeDifference, 0, 'f', 2);
     else
         lines << tr("Same %1 collisions in the same order (largest time difference %2 ms).")

@@ -89,7 +89,7 @@ QVariant EventTableModel::data(const QModelIndex& index, int role) const
     const Event& e = result_->events[row];
     if (role == Qt::DisplayRole) {
         switch (index.column()) {
-        case IndexColumn: return index.row() + 1;
+        case IndexColumn: return eventNumber(index.row());
         case TimeColumn: return formatNumber(e.time, kTimeDecimals);
         case KindColumn: return displayName(e.kind);
         case AgentsColumn: return agents(*result_, e);

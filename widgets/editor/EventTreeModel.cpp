@@ -200,7 +200,7 @@ QVariant EventTreeModel::groupData(const std::vector<int>& group, int column, in
 {
     if (role == Qt::DisplayRole) {
         switch (column) {
-        case Column::IndexColumn: return QStringLiteral("%1–%2").arg(group.front() + 1).arg(group.back() + 1);
+        case Column::IndexColumn: return QStringLiteral("%1–%2").arg(eventNumber(group.front()), eventNumber(group.back()));
         case Column::TimeColumn:
         case Column::GapColumn: return flat_.data(flat_.index(group.front(), column), role);
         case Column::KindColumn: {

@@ -119,7 +119,7 @@ void InspectorPanel::showEventDetails(const SimulationResult& result, int index)
     if (index < 0 || index >= static_cast<int>(result.events.size())) return showNothing();
     const std::size_t i = static_cast<std::size_t>(index);
     const Event& e = result.events[i];
-    auto* top = add(nullptr, tr("Event %1").arg(index + 1), displayName(e.kind));
+    auto* top = add(nullptr, tr("Event %1").arg(eventNumber(index)), displayName(e.kind));
     add(top, tr("Agents"), EventTableModel::agents(result, e));
     add(top, tr("Time of impact"), formatQuantity(e.time, QStringLiteral("s"), 9),
         tr("Exact time of the event: a root of the polynomial that describes the contact"));

@@ -22,7 +22,7 @@ bool exportExplanations(const QString& path, const SimulationResult& result, con
     std::vector<explain::Explanation> all;
     for (int i : events) {
         if (i < 0 || i >= int(result.events.size())) {
-            if (error) *error = QObject::tr("no event %1 in this shot").arg(i);
+            if (error) *error = QObject::tr("no event %1 in this shot").arg(QString::fromStdString(explain::eventNumber(i)));
             return false;
         }
         all.push_back(explain::explain(result, i, shot));

@@ -3,6 +3,7 @@
 #include "CurvePainter.h"
 #include "ShotDiagram.h"
 #include "ShotOutcome.h"
+#include "i18n/DisplayNames.h"
 
 #include <QFontMetricsF>
 #include <QPageLayout>
@@ -127,17 +128,7 @@ void eventPage(QPainter& p, const SimulationResult& r, int first, int count, boo
     p.setPen(Qt::black);
     p.setFont(font(13));
     for (int i = first; i < std::min<int>(first + count, static_cast<int>(r.events.size())); ++i) {
-        const Event& e = r.events[i];
-        const bool two = e.kind == EventKind::BallBall;
-        QString balls = id(r, e.balls[0]);
-        if (two) balls += QStringLiteral(", ") + id(r, e.balls[1]);
-        QString where;
-        if (e.kind == EventKind::BallCushion) where = QString::fromStdString(r.table.cushions[e.cushion].id);
-        if (e.kind == EventKind::BallJaw) where = QString::fromStdString(r.table.jaws[e.jaw].id);
-        if (e.kind == EventKind::BallPocket) where = QString::fromStdString(r.table.pockets[e.pocket].id);
-        QString speeds = QStringLiteral("%1 \u2192 %2").arg(e.before[0].velocity.norm(), 0, 'f', 3).arg(e.after[0].velocity.norm(), 0, 'f', 3);
-        if (two) speeds += QStringLiteral("; %1 \u2192 %2").arg(e.before[1].velocity.norm(), 0, 'f', 3).arg(e.after[1].velocity.norm(), 0, 'f', 3);
-        const QString row[] = {QString::number(i), QString::number(e.time, 'f', 5), text(toString(e.kind)), balls, where, speeds};
+        const QStringList row = LessonReport::eventRow(r, i);
         for (int c = 0; c < 6; ++c) p.drawText(QPointF(cols[c], y + 14), row[c]);
         y += 31.0;
     }
@@ -166,6 +157,21 @@ void plotsPage(QPainter& p, const SimulationResult& r)
 LessonReport::LessonReport(std::shared_ptr<const SimulationResult> result, QString title, QString notes)
     : result_(std::move(result)), title_(std::move(title)), notes_(std::move(notes))
 {
+}
+
+QStringList LessonReport::eventRow(const SimulationResult& r, int i)
+{
+    const Event& e = r.events[static_cast<std::size_t>(i)];
+    const bool two = e.kind == EventKind::BallBall;
+    QString balls = id(r, e.balls[0]);
+    if (two) balls += QStringLiteral(", ") + id(r, e.balls[1]);
+    QString where;
+    if (e.kind == EventKind::BallCushion) where = QString::fromStdString(r.table.cushions[e.cushion].id);
+    if (e.kind == EventKind::BallJaw) where = QString::fromStdString(r.table.jaws[e.jaw].id);
+    if (e.kind == EventKind::BallPocket) where = QString::fromStdString(r.table.pockets[e.pocket].id);
+    QString speeds = QStringLiteral("%1 \u2192 %2").arg(e.before[0].velocity.norm(), 0, 'f', 3).arg(e.after[0].velocity.norm(), 0, 'f', 3);
+    if (two) speeds += QStringLiteral("; %1 \u2192 %2").arg(e.before[1].velocity.norm(), 0, 'f', 3).arg(e.after[1].velocity.norm(), 0, 'f', 3);
+    return {eventNumber(i), QString::number(e.time, 'f', 5), text(toString(e.kind)), balls, where, speeds};
 }
 
 int LessonReport::eventPages() const

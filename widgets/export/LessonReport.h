@@ -8,6 +8,7 @@
 #include "Simulation.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <memory>
@@ -19,6 +20,9 @@ public:
     LessonReport(std::shared_ptr<const SimulationResult> result, QString title, QString notes);
 
     static constexpr int kEventRowsPerPage = 40;
+    // One row of the event table: #N (from 1, as everywhere a person reads), time, type, balls,
+    // cushion or pocket, speeds before and after.
+    static QStringList eventRow(const SimulationResult& result, int index);
     int eventPages() const;
     int pageCount() const { return 3 + eventPages(); }  // diagram, notes and outcome, events, plots
 

@@ -36,4 +36,6 @@ QString translated(std::string_view name)
 QString displayName(MotionState state) { return translated(toString(state)); }
 QString displayName(EventKind kind) { return translated(toString(kind)); }
 
+QString eventNumber(int index) { return QStringLiteral("#%1").arg(index + 1); }
+
 }  // namespace cuelab

@@ -13,4 +13,9 @@ namespace cuelab {
 QString displayName(MotionState state);
 QString displayName(EventKind kind);
 
+// The number a person reads for event `index` (0-based, as in the result and the JSON): "#1" for the
+// first (CONTRACT.md, Extensions version 2). Every surface of the window (Events list, Inspector,
+// Explain, Compare, plots, the transport, the report, exports) writes event numbers with it.
+QString eventNumber(int index);
+
 }  // namespace cuelab

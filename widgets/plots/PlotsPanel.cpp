@@ -259,7 +259,7 @@ void PlotsPanel::rebuild()
             if (e.kind == EventKind::BallCushion) agents += QStringLiteral(", ") + QString::fromStdString(r.table.cushions[e.cushion].id);
             if (e.kind == EventKind::BallJaw) agents += QStringLiteral(", ") + QString::fromStdString(r.table.jaws[e.jaw].id);
             if (e.kind == EventKind::BallPocket) agents += QStringLiteral(", ") + QString::fromStdString(r.table.pockets[e.pocket].id);
-            m.name = tr("Event %1: %2 (%3) at %4 s").arg(i).arg(displayName(e.kind), agents)
+            m.name = tr("Event %1: %2 (%3) at %4 s").arg(eventNumber(i), displayName(e.kind), agents)
                          .arg(e.time, 0, 'f', 4);
             markers.push_back(m);
             break;  // one marker per event

@@ -5,6 +5,7 @@
 #include "Explain.h"
 #include "ExplainText.h"
 #include "JsonText.h"
+#include "NumberParse.h"
 
 #include <limits>
 
@@ -127,18 +128,26 @@ Command explainCommand()
     c.help = QStringLiteral(
         "  explain SETUP --event N [--format json|markdown]\n"
         "                                        Print the mathematics of event N (0-based, as in\n"
-        "                                        simulate's events) with this run's numbers.\n");
-    c.options = {{QStringLiteral("event"), QStringLiteral("N"), QStringLiteral("The index <N> of the event to explain")},
+        "                                        simulate's events; '#N' counts from 1 as people\n"
+        "                                        read it) with this run's numbers.\n");
+    c.options = {{QStringLiteral("event"), QStringLiteral("N"),
+                  QStringLiteral("The index <N> of the event to explain (0-based), or '#N' as people number it (from 1)")},
                  {QStringLiteral("format"), QStringLiteral("F"), QStringLiteral("Output format <F>: json (default) or markdown")}};
     c.run = [](Invocation& in) -> int {
         if (!in.isSet(QStringLiteral("event"))) return in.usage(QStringLiteral("explain: --event N is required"));
         const QString format = in.isSet(QStringLiteral("format")) ? in.value(QStringLiteral("format")) : QStringLiteral("json");
         if (format != QLatin1String("json") && format != QLatin1String("markdown"))
             return in.usage(QStringLiteral("explain: --format must be json or markdown, not '%1'").arg(format));
+        // N is the 0-based index of JSON (version 1); '#N' is the number a person reads, from 1
+        // (CONTRACT.md, Extensions version 2: '#N' = N - 1).
         QString problem;
-        const std::optional<long long> event =
-            in.wholeNumber(QStringLiteral("event"), 0, std::numeric_limits<int>::max(), &problem);
+        const QString given = in.value(QStringLiteral("event"));
+        const bool personal = given.startsWith(QLatin1Char('#'));
+        std::optional<long long> event =
+            personal ? cmdline::parseWholeNumber(QStringLiteral("event"), given.mid(1), 1, std::numeric_limits<int>::max(), &problem)
+                     : in.wholeNumber(QStringLiteral("event"), 0, std::numeric_limits<int>::max(), &problem);
         if (!event) return in.usage(problem);
+        if (personal) *event -= 1;
         int status = Success;
         const std::optional<Setup> setup = in.loadSetup(&status);
         if (!setup) return status;
@@ -149,7 +158,7 @@ Command explainCommand()
         const long long index = *event;
         if (index >= count) {
             if (count == 0) return in.usage(QStringLiteral("explain: --event '%1': this shot has no events").arg(text));
-            return in.usage(QStringLiteral("explain: --event '%1' is not an event of this shot: give 0 to %2 (%3 events)")
+            return in.usage(QStringLiteral("explain: --event '%1' is not an event of this shot: give 0 to %2, or #1 to #%3 (%3 events)")
                                 .arg(text)
                                 .arg(count - 1)
                                 .arg(count));
