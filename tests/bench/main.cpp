@@ -4,9 +4,12 @@
 // and the sweep engine's (issue 11): "sweep": {"map_100x100": [{"threads": 1, ...}, ...], "million": {...}}.
 //   cuelab-bench               everything but the 10^6-shot sweep
 //   cuelab-bench --sweep       only the sweep figures, with the 10^6-shot sweep (about a minute)
+//   cuelab-bench --cushions    the cost of one cushion hit per model, and of mathavan2010 per step count
+//                              with its rebound error against 10^6 steps (issue 20)
 
 #include "AnalysisBench.h"
 #include "CompareBench.h"
+#include "CushionBench.h"
 #include "QuarticBench.h"
 #include "SimulationBench.h"
 
@@ -54,6 +57,10 @@ int main(int argc, char** argv)
     using namespace cuelab::bench;
     if (argc > 1 && std::strcmp(argv[1], "--sweep") == 0) {
         std::printf("{%s}\n", sweepJson(true).c_str());
+        return 0;
+    }
+    if (argc > 1 && std::strcmp(argv[1], "--cushions") == 0) {
+        std::printf("{%s}\n", cushionJson(runCushionBench()).c_str());
         return 0;
     }
     const BreakFigures b = runBreakBench(200);

@@ -40,6 +40,12 @@ void CushionModelParameters::rebuild()
                                                q.decimals, q.step, QString(), toQString(q.description)},
                                               this);
             box->setObjectName(QStringLiteral("cushionParameter_") + toQString(q.key));
+            // A whole number of integration steps costs time in proportion (Mathavan 2010's `steps`;
+            // measured with `cuelab-bench --cushions`, docs/cushion-models.md).
+            if (q.integer)
+                box->setToolTip(box->toolTip() + QLatin1Char('\n') +
+                                tr("Cost grows in proportion: about 0.1 ms of computing per cushion hit at 1000 steps, "
+                                   "about 0.1 s at 1000000, in every shot of a sweep or an Analysis map too."));
             form_->addRow(toQString(q.key).replace(QLatin1Char('_'), QLatin1Char(' ')), box);
             boxes_.push_back(box);
             connect(box, &QDoubleSpinBox::valueChanged, this, [this, &q](double value) { commit(q, value); });
