@@ -2,6 +2,7 @@
 
 #include "LegalSetup.h"
 #include "Refusal.h"
+#include "ShotOdds.h"
 
 #include <algorithm>
 #include <atomic>
@@ -129,6 +130,8 @@ ShotResult runShot(const SweepSpec& spec, long long index)
 {
     ShotResult shot = runShotWith(spec, gridValues(spec.variations, index));
     shot.index = index;
+    if (spec.odds && spec.base.shot && (shot.status == ShotStatus::Simulated || shot.status == ShotStatus::Unfinished))
+        shot.odds = shotOdds(spec, shot.values, *spec.odds, 1);
     return shot;
 }
 
