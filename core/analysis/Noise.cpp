@@ -54,7 +54,7 @@ const std::vector<NoisePreset>& noisePresets()
     // what each makes of the example shots.
     static const std::vector<NoisePreset> presets = {
         {"fastfiz", "FastFiz's default noise (computational pool tournaments)", 0.185, 0.085, 0.0005, 0.03},
-        {"club", "a club player", 0.5, 0.15, 0.002, 0.5},
+        {"club", "a club player", 0.3, 0.12, 0.0015, 0.3},
         {"pro", "a professional", 0.1, 0.05, 0.0005, 0.1},
     };
     return presets;
