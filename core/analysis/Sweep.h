@@ -64,7 +64,7 @@ struct ShotResult {
 };
 
 struct SweepSpec {
-    Setup base;                       // overrides (--set) already applied and validated
+    Setup base;                       // overrides (--set) already applied and validated: a legal setup
     std::vector<Variation> variations;
     ResolvedGoal goal;
     int shard = 1, shards = 1;        // only indices with index % shards == shard - 1
