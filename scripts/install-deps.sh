@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs exactly the Debian 12 packages CueLab needs to build, run and test, and nothing else.
 # Idempotent: installs only what is missing, and says what it installs. Uses sudo when not root.
+#   scripts/install-deps.sh            what building, running and testing CueLab needs
+#   scripts/install-deps.sh --cluster  and also a batch scheduler for tests/cluster (CI runs it)
 set -euo pipefail
 
 packages=(
@@ -20,6 +22,18 @@ packages=(
   dpkg-dev file                              # cpack -G DEB (dpkg-shlibdeps, file)
   xvfb xauth                                 # a real X server for the GUI tests (xvfb-run)
 )
+
+# tests/cluster/slurm-sweep.sh: a one-node Slurm cluster on localhost and GNU parallel run the sweep
+# scripts of docs/analysis.md. Not needed to build or use CueLab.
+cluster_packages=(
+  slurmctld slurmd slurm-client munge        # Slurm 22.05 and its authentication daemon
+  parallel                                   # GNU parallel
+)
+case "${1:-}" in
+  "") ;;
+  --cluster) packages+=("${cluster_packages[@]}") ;;
+  *) echo "install-deps: unknown option '$1' (expected nothing or --cluster)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

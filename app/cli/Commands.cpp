@@ -12,6 +12,7 @@ Command trajectoryCommand();
 Command explainCommand();
 Command compareCommand();
 Command sweepCommand();
+Command oddsCommand();
 
 const QList<Command>& commands()
 {
@@ -23,6 +24,7 @@ const QList<Command>& commands()
         explainCommand(),
         compareCommand(),
         sweepCommand(),
+        oddsCommand(),
     };
     return all;
 }

@@ -2,6 +2,7 @@
 
 #include "LegalSetup.h"
 #include "Refusal.h"
+#include "ShotOdds.h"
 
 #include <algorithm>
 #include <atomic>
@@ -92,6 +93,48 @@ int threadCount(const SweepSpec& spec)
     return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+namespace {
+
+bool variesTheStrikeOnly(const SweepSpec& spec)
+{
+    if (spec.variations.empty() || !spec.base.shot) return false;
+    for (const Variation& v : spec.variations)
+        if (v.parameter.key().rfind("shot.", 0) != 0) return false;
+    return true;
+}
+
+// The first problem of a shot's setup. The base is legal (SweepSpec), so when only strike values
+// vary, a problem can only be one of the shot's rules, and those read nothing but the shot and the
+// struck ball's id. The validator then runs on a probe: the shot and its ball alone, at the centre of
+// a pocketless table made to hold it. The rules stay core/setup's own; a whole validation (table
+// geometry, every ball, about a quarter of a two-ball shot's time) is only needed when something else
+// varies. The first problem is the same: the shot's rules come before everything but the table,
+// physics and balls, which are those of the legal base.
+std::optional<SetupProblem> problemOf(const Setup& setup, bool strikeOnly)
+{
+    if (!strikeOnly) return firstSetupProblem(setup);
+    Setup probe;
+    probe.physics = setup.physics;
+    probe.simulation = setup.simulation;
+    probe.shot = setup.shot;
+    for (const Ball& b : setup.balls) {
+        if (b.id != setup.shot->ball) continue;
+        Ball ball = b;
+        // A table of at least 1 m and 20 radii, with cushions at one radius (below any ball's top).
+        const double size = std::clamp(20.0 * b.radius, 1.0, SetupBounds::tableSize);
+        probe.table.kind = TableKind::Carom;
+        probe.table.pockets = false;
+        probe.table.length = probe.table.width = size;
+        probe.table.cushionHeight = b.radius;
+        ball.state.position = Vec2(size / 2.0, size / 2.0);
+        probe.balls = {ball};
+        break;
+    }
+    return firstSetupProblem(probe);
+}
+
+}  // namespace
+
 ShotResult runShotWith(const SweepSpec& spec, const std::vector<double>& values)
 {
     ShotResult shot;
@@ -102,7 +145,7 @@ ShotResult runShotWith(const SweepSpec& spec, const std::vector<double>& values)
     }
     Setup setup = spec.base;
     for (std::size_t j = 0; j < spec.variations.size(); ++j) spec.variations[j].parameter.setNumber(setup, values[j]);
-    if (const auto problem = firstSetupProblem(setup)) {
+    if (const auto problem = problemOf(setup, variesTheStrikeOnly(spec))) {
         shot.status = ShotStatus::Refused;
         shot.message = refusalMessage(spec.setupName, *problem);
         return shot;
@@ -129,6 +172,8 @@ ShotResult runShot(const SweepSpec& spec, long long index)
 {
     ShotResult shot = runShotWith(spec, gridValues(spec.variations, index));
     shot.index = index;
+    if (spec.odds && spec.base.shot && (shot.status == ShotStatus::Simulated || shot.status == ShotStatus::Unfinished))
+        shot.odds = shotOdds(spec, shot.values, *spec.odds, 1);
     return shot;
 }
 

@@ -8,6 +8,7 @@
 // counts n_0 ... n_{k-1} takes value i_j of variation j where index = ((i_0 n_1 + i_1) n_2 + ...).
 
 #include "Goal.h"
+#include "Odds.h"
 #include "Override.h"
 #include "ShotOutcome.h"
 
@@ -59,10 +60,11 @@ struct ShotResult {
     double endTime = 0.0;  // s
     ShotOutcome outcome;   // empty unless simulated or unfinished
     bool goalMet = false;  // only a simulated shot can meet the goal
+    std::optional<OddsResult> odds;  // when the spec asks for odds and the shot is legal (ShotOdds.h)
 };
 
 struct SweepSpec {
-    Setup base;                       // overrides (--set) already applied and validated
+    Setup base;                       // overrides (--set) already applied and validated: a legal setup
     std::vector<Variation> variations;
     ResolvedGoal goal;
     int shard = 1, shards = 1;        // only indices with index % shards == shard - 1
@@ -71,6 +73,9 @@ struct SweepSpec {
     std::string setupName;            // names the setup in refusal messages ("cut.json")
     // Optional: shots for which it returns true are not simulated (status Skipped).
     std::function<bool(const std::vector<double>& values)> skip;
+    // Optional: each legal grid point also gets its odds under execution noise (ShotOdds.h),
+    // computed on the thread that runs the point, so the odds too are the same for any thread count.
+    std::optional<OddsRequest> odds;
 };
 
 long long gridSize(const std::vector<Variation>& variations);

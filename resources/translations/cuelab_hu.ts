@@ -1854,6 +1854,272 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     </message>
 </context>
 <context>
+    <name>cuelab::OddsMap</name>
+    <message>
+        <source>not simulated yet</source>
+        <translation>még nincs szimulálva</translation>
+    </message>
+    <message>
+        <source>illegal setup</source>
+        <translation>szabálytalan felállás</translation>
+    </message>
+    <message>
+        <source>%1 % (%2–%3 %), %4 of %5 strikes</source>
+        <translation>%1% (%2–%3%), %5 ütésből %4</translation>
+    </message>
+    <message>
+        <source>No map of odds yet: choose the axes and press Map odds.</source>
+        <translation>Még nincs esélytérkép: válassza ki a tengelyeket, és nyomja meg az Esélytérkép gombot.</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1%</translation>
+    </message>
+    <message>
+        <source>Best (ringed): %1</source>
+        <translation>Legjobb (bekarikázva): %1</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::OddsSection</name>
+    <message>
+        <source>FastFiz defaults</source>
+        <translation>A FastFiz alapértékei</translation>
+    </message>
+    <message>
+        <source>Club player</source>
+        <translation>Klubjátékos</translation>
+    </message>
+    <message>
+        <source>Professional</source>
+        <translation>Profi</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Egyéni</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Irány</translation>
+    </message>
+    <message>
+        <source>Standard deviation of the aim error, degrees</source>
+        <translation>A célzási hiba szórása, fok</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Sebesség</translation>
+    </message>
+    <message>
+        <source>Standard deviation of the cue speed, m/s</source>
+        <translation>A dákósebesség szórása, m/s</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Oldal</translation>
+    </message>
+    <message>
+        <source>Standard deviation of the side tip offset, in ball radii (R)</source>
+        <translation>Az oldalirányú dákóvég-eltolás szórása, golyósugárban (R)</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Magasság</translation>
+    </message>
+    <message>
+        <source>Standard deviation of the height tip offset, in ball radii (R)</source>
+        <translation>A függőleges dákóvég-eltolás szórása, golyósugárban (R)</translation>
+    </message>
+    <message>
+        <source>Elevation</source>
+        <translation>Emelés</translation>
+    </message>
+    <message>
+        <source>Standard deviation of the cue elevation, degrees (an error below the cloth is read as above it)</source>
+        <translation>A dákó emelésének szórása, fok (a posztó alá mutató hibát a posztó fölöttinek veszi)</translation>
+    </message>
+    <message>
+        <source>Odds under execution noise</source>
+        <translation>Esélyek a kivitelezés szórásával</translation>
+    </message>
+    <message>
+        <source>How the player&apos;s strike scatters: normal errors of these standard deviations on every strike parameter (FastFiz&apos;s model). FastFiz&apos;s defaults are those of the computational pool tournaments; the club player and the professional are explained in docs/analysis.md</source>
+        <translation>Mennyire szór a játékos ütése: ekkora szórású normális hibák minden ütésparaméteren (a FastFiz modellje). A FastFiz alapértékei a számítógépes pooltornákéi; a klubjátékos és a profi magyarázata a docs/analysis.md-ben</translation>
+    </message>
+    <message>
+        <source>Strikes of the current shot at most; it stops sooner once the 95% interval is within ±1%</source>
+        <translation>Legfeljebb ennyi ütés a jelenlegi lövésből; hamarabb megáll, ha a 95%-os intervallum ±1%-on belül van</translation>
+    </message>
+    <message>
+        <source>Odds</source>
+        <translation>Esély</translation>
+    </message>
+    <message>
+        <source>Strike the current shot again and again with these errors and count how often it meets the goal</source>
+        <translation>A jelenlegi ütés újra és újra, ezekkel a hibákkal, és megszámolja, hányszor teljesül a cél</translation>
+    </message>
+    <message>
+        <source>The share of strikes that meet the goal, and its 95% confidence interval (Wilson)</source>
+        <translation>A célt teljesítő ütések aránya és 95%-os konfidenciaintervalluma (Wilson)</translation>
+    </message>
+    <message>
+        <source>The key along the map&apos;s horizontal axis</source>
+        <translation>A térkép vízszintes tengelyén változó kulcs</translation>
+    </message>
+    <message>
+        <source>The key along the map&apos;s vertical axis</source>
+        <translation>A térkép függőleges tengelyén változó kulcs</translation>
+    </message>
+    <message>
+        <source>First value of the horizontal axis, in the key&apos;s unit</source>
+        <translation>A vízszintes tengely első értéke, a kulcs mértékegységében</translation>
+    </message>
+    <message>
+        <source>Last value of the horizontal axis, in the key&apos;s unit</source>
+        <translation>A vízszintes tengely utolsó értéke, a kulcs mértékegységében</translation>
+    </message>
+    <message>
+        <source>First value of the vertical axis, in the key&apos;s unit</source>
+        <translation>A függőleges tengely első értéke, a kulcs mértékegységében</translation>
+    </message>
+    <message>
+        <source>Last value of the vertical axis, in the key&apos;s unit</source>
+        <translation>A függőleges tengely utolsó értéke, a kulcs mértékegységében</translation>
+    </message>
+    <message>
+        <source>Cells along each axis</source>
+        <translation>Cellák tengelyenként</translation>
+    </message>
+    <message>
+        <source>Strikes per cell (every cell uses the same errors, so neighbours compare fairly)</source>
+        <translation>Ütések cellánként (minden cella ugyanazokat a hibákat kapja, így a szomszédok igazságosan összevethetők)</translation>
+    </message>
+    <message>
+        <source>Map odds</source>
+        <translation>Esélytérkép</translation>
+    </message>
+    <message>
+        <source>The odds of every cell of the map; the colours stream in</source>
+        <translation>A térkép minden cellájának esélye; a színek folyamatosan érkeznek</translation>
+    </message>
+    <message>
+        <source>Each cell: how often its shot meets the goal under the noise. The ring marks the best cell, the cross the current shot. Click a cell to load its shot (one undo step).</source>
+        <translation>Minden cella: a szórás mellett milyen gyakran teljesíti az ütése a célt. A karika a legjobb cellát jelöli, a kereszt a jelenlegi ütést. Egy cellára kattintva betölti az ütését (egy visszavonási lépés).</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Mégse</translation>
+    </message>
+    <message>
+        <source>Stop computing odds</source>
+        <translation>Az esélyszámítás leállítása</translation>
+    </message>
+    <message>
+        <source>Player</source>
+        <translation>Játékos</translation>
+    </message>
+    <message>
+        <source>Strikes</source>
+        <translation>Ütések</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>strikes per cell</source>
+        <translation>ütés cellánként</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Cellák</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Megszakítva.</translation>
+    </message>
+    <message>
+        <source>The setup has no cue strike: nothing to scatter.</source>
+        <translation>A felállásban nincs dákóütés: nincs mit szórni.</translation>
+    </message>
+    <message>
+        <source>Goal: %1</source>
+        <translation>Cél: %1</translation>
+    </message>
+    <message>
+        <source>striking…</source>
+        <translation>számolás…</translation>
+    </message>
+    <message>
+        <source>Striking the shot up to %1 times.</source>
+        <translation>Az ütés ismétlése legfeljebb %1 alkalommal.</translation>
+    </message>
+    <message>
+        <source>goes in %1 % (%2–%3 %)</source>
+        <translation>%1%-ban megy be (%2–%3%)</translation>
+    </message>
+    <message>
+        <source>meets the goal %1 % (%2–%3 %)</source>
+        <translation>%1%-ban teljesíti a célt (%2–%3%)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 strikes met the goal</source>
+        <translation>%2 ütésből %1 teljesítette a célt</translation>
+    </message>
+    <message>
+        <source>; %1 miscues (tip beyond 0.5 R)</source>
+        <translation>; %1 lecsúszás (a dákóvég 0,5 R-en túl)</translation>
+    </message>
+    <message>
+        <source>; stopped once the interval was within ±1%</source>
+        <translation>; megállt, amikor az intervallum ±1%-on belülre került</translation>
+    </message>
+    <message>
+        <source>Choose two keys of this setup.</source>
+        <translation>Válasszon két kulcsot ebből a felállásból.</translation>
+    </message>
+    <message>
+        <source>Choose two different keys.</source>
+        <translation>Válasszon két különböző kulcsot.</translation>
+    </message>
+    <message>
+        <source>Mapping the odds of %1 shots, %2 strikes each.</source>
+        <translation>%1 ütés esélyeinek térképezése, mindegyik %2 ütéssel.</translation>
+    </message>
+    <message>
+        <source>Best cell (ringed): %1. Click a cell to load its shot.</source>
+        <translation>Legjobb cella (bekarikázva): %1. Egy cellára kattintva betölti az ütését.</translation>
+    </message>
+    <message>
+        <source>No cell of the map is a legal shot.</source>
+        <translation>A térkép egyetlen cellája sem szabályos ütés.</translation>
+    </message>
+    <message>
+        <source>The setup changed since the map was made; map again.</source>
+        <translation>A felállás megváltozott a térkép készítése óta; térképezzen újra.</translation>
+    </message>
+    <message>
+        <source>Load shot from the odds map (%1 = %2, %3 = %4)</source>
+        <translation>Ütés betöltése az esélytérképről (%1 = %2, %3 = %4)</translation>
+    </message>
+    <message>
+        <source>That cell&apos;s shot is not a legal setup.</source>
+        <translation>Ennek a cellának az ütése nem szabályos felállás.</translation>
+    </message>
+    <message>
+        <source>the shot changed: press Odds</source>
+        <translation>az ütés megváltozott: nyomja meg az Esély gombot</translation>
+    </message>
+    <message>
+        <source>The setup changed: the map of odds was dropped.</source>
+        <translation>A felállás megváltozott: az esélytérkép elveszett.</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::OutcomeMap</name>
     <message>
         <source>No map yet: choose the axes and press Map.</source>

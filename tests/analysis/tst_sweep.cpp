@@ -57,6 +57,8 @@ private slots:
     void shardsConcatenateToTheWhole();
     void shotEqualsSingleRun();
     void refusedShotsDoNotStopTheSweep();
+    void refusedStrikesReadAsTheValidatorSays_data();
+    void refusedStrikesReadAsTheValidatorSays();
     void cancelDeliversAPrefix();
     void tipOffsetMapSkipsBeyondTheMiscueLimit();
 };
@@ -266,6 +268,40 @@ void TestSweep::refusedShotsDoNotStopTheSweep()
     QVERIFY2(shots.back().message.rfind("cut.json: balls[1].position: ", 0) == 0, shots.back().message.c_str());
     QVERIFY(shots.back().message.find("overlaps") != std::string::npos);
     QVERIFY(classifyShot(shots.back()) == ShotClass::Refused);
+}
+
+void TestSweep::refusedStrikesReadAsTheValidatorSays_data()
+{
+    QTest::addColumn<QString>("vary");
+    QTest::addColumn<QString>("expected");  // the message of the last value
+    QTest::newRow("elevation") << "shot.elevation=0:-1:2" << "cut.json: shot.elevation: must lie between 0 and 90 degrees (found -1)";
+    QTest::newRow("speed") << "shot.speed=2:-0.5:2" << "";
+    QTest::newRow("tip") << "shot.side=0:1.2:2" << "";
+    QTest::newRow("cue mass") << "shot.cue_mass=0.5:-1:2" << "";
+    QTest::newRow("heading") << "shot.heading=0:4000:2" << "";
+}
+
+void TestSweep::refusedStrikesReadAsTheValidatorSays()
+{
+    // Only strike values vary: the sweep checks them on a probe of the shot alone (Sweep.cpp), and the
+    // refusal must read exactly as the validator's on the whole overridden setup (as `simulate --set`).
+    QFETCH(QString, vary);
+    QFETCH(QString, expected);
+    SweepSpec spec;
+    spec.base = test::example("half-ball-cut.json");
+    spec.setupName = "cut.json";
+    spec.variations = {test::vary(spec.base, vary.toStdString().c_str())};
+    std::vector<ShotResult> shots;
+    runSweep(spec, [&](ShotResult& s) { shots.push_back(s); });
+    QCOMPARE(shots.size(), std::size_t(2));
+    QVERIFY(shots[0].status == ShotStatus::Simulated);
+    QVERIFY(shots[1].status == ShotStatus::Refused);
+    Setup whole = spec.base;
+    spec.variations[0].parameter.setNumber(whole, shots[1].values[0]);
+    const auto problem = firstSetupProblem(whole);
+    QVERIFY(problem);
+    QCOMPARE(QString::fromStdString(shots[1].message), QString::fromStdString(refusalMessage("cut.json", *problem)));
+    if (!expected.isEmpty()) QCOMPARE(QString::fromStdString(shots[1].message), expected);
 }
 
 void TestSweep::cancelDeliversAPrefix()

@@ -1,6 +1,7 @@
 #include "AnalysisBench.h"
 
 #include "Map.h"
+#include "ShotOdds.h"
 #include "Sweep.h"
 
 #include <chrono>
@@ -94,6 +95,31 @@ SweepPoint runMillionBench()
     spec.variations = {vary(spec.base, "shot.heading=-3:3:100"), vary(spec.base, "shot.speed=1:3:100"),
                        vary(spec.base, "shot.side=-0.4:0.4:100")};
     return timeSweep(spec, 1);
+}
+
+SweepPoint runOddsBench(int runs)
+{
+    const SweepSpec spec = cutSpec();
+    OddsRequest request;
+    request.noise = *presetNoise("fastfiz", 0.028575);
+    request.samples = 10000;
+    SweepPoint point;
+    point.threads = threadCount(spec);
+    point.shots = request.samples;
+    point.seconds = 1e300;
+    for (int r = 0; r < runs; ++r) {
+        const auto start = Clock::now();
+        const std::clock_t cpuStart = std::clock();
+        const OddsResult odds = shotOdds(spec, {}, request, 0);
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        if (odds.successes == 0) throw std::runtime_error("the odds bench's shot never met its goal");
+        if (seconds < point.seconds) {
+            point.seconds = seconds;
+            point.cpuSeconds = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+        }
+    }
+    point.shotsPerSecond = static_cast<double>(point.shots) / point.seconds;
+    return point;
 }
 
 }  // namespace cuelab::bench

@@ -23,4 +23,8 @@ std::vector<SweepPoint> runMapBench(const std::vector<int>& threadCounts, int ru
 // A 10^6-shot sweep of the half-ball cut (heading x speed x side, 100 x 100 x 100) on every core.
 SweepPoint runMillionBench();
 
+// The odds of the half-ball cut under FastFiz's noise at 10^4 strikes (no early stop), on every core
+// (issue 25); `shots` are the strikes, best of `runs` runs.
+SweepPoint runOddsBench(int runs);
+
 }  // namespace cuelab::bench

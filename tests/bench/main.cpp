@@ -1,7 +1,8 @@
 // cuelab-bench: prints one JSON object with the simulator's and the quartic solver's figures
 // (issue 3): {"break": {...}, "quartic": {...}, "scaling": [...]}, the engines of core/compare
 // on the break at their default steps (issue 9): "compare": [{"engine": ..., "ms_median": ..., ...}],
-// and the sweep engine's (issue 11): "sweep": {"map_100x100": [{"threads": 1, ...}, ...], "million": {...}}.
+// and the sweep engine's (issue 11): "sweep": {"map_100x100": [{"threads": 1, ...}, ...], "million": {...}},
+// with the odds of one shot at 10^4 strikes (issue 25): "odds_10k": {...}.
 //   cuelab-bench               everything but the 10^6-shot sweep
 //   cuelab-bench --sweep       only the sweep figures, with the 10^6-shot sweep (about a minute)
 //   cuelab-bench --cushions    the cost of one cushion hit per model, and of mathavan2010 per step count
@@ -40,6 +41,10 @@ std::string sweepJson(bool million)
         out += buffer;
     }
     out += "]";
+    const SweepPoint o = runOddsBench(3);
+    std::snprintf(buffer, sizeof buffer, ", \"odds_10k\": {\"threads\": %d, \"strikes\": %lld, \"seconds\": %.4g, "
+                  "\"cpu_seconds\": %.4g}", o.threads, o.shots, o.seconds, o.cpuSeconds);
+    out += buffer;
     if (million) {
         const SweepPoint m = runMillionBench();
         std::snprintf(buffer, sizeof buffer, ", \"million\": {\"threads\": %d, \"shots\": %lld, \"seconds\": %.4g, "

@@ -1,6 +1,7 @@
 #include "AnalysisPanel.h"
 
 #include "AnalysisJob.h"
+#include "OddsSection.h"
 #include "OutcomeMap.h"
 #include "ToleranceBar.h"
 
@@ -192,6 +193,7 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     progressRow->addWidget(cancel_);
     layout->addLayout(progressRow);
     layout->addWidget(status_);
+    layout->addWidget(new OddsSection(document_, [this] { return goal_->text(); }, this), 1);  // issue 25
 
     connect(scan_, &QPushButton::clicked, this, &AnalysisPanel::runTolerance);
     connect(mapButton_, &QPushButton::clicked, this, &AnalysisPanel::runMap);

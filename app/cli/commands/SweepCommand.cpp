@@ -3,6 +3,7 @@
 // order, computed by the sweep engine of core/analysis on J threads and printed as it comes.
 
 #include "Command.h"
+#include "OddsOptions.h"
 #include "ResultText.h"
 
 #include "Goal.h"
@@ -58,6 +59,7 @@ std::string sweepLine(const analysis::ShotResult& shot, const analysis::SweepSpe
         w.key("goal");
         w.value(shot.goalMet);
     }
+    if (shot.odds) writeOddsFields(w, *shot.odds);
     if (shot.status == analysis::ShotStatus::Refused) {
         w.key("refused");
         w.value(shot.message);
@@ -77,8 +79,10 @@ Command sweepCommand()
     c.name = QStringLiteral("sweep");
     c.help = QStringLiteral(
         "  sweep SETUP --vary KEY=FROM:TO:COUNT ... [--shard K/N] [--jobs J] [--goal GOAL]\n"
+        "        [--noise KEY=SIGMA ... [--samples N] [--seed S]]\n"
         "                                        Simulate every combination of the varied values;\n"
-        "                                        one JSON line per shot, in grid order.\n");
+        "                                        one JSON line per shot, in grid order; with --noise\n"
+        "                                        each line adds the shot's odds.\n");
     c.options = {
         {QStringLiteral("vary"), QStringLiteral("KEY=FROM:TO:COUNT"),
          QStringLiteral("Vary KEY over COUNT values from FROM to TO; repeatable, the last varies fastest"), true},
@@ -88,6 +92,7 @@ Command sweepCommand()
         {QStringLiteral("goal"), QStringLiteral("GOAL"),
          QStringLiteral("Add \"goal\": true|false to each line, e.g. pot:1@pocket-tr,no-scratch (docs/analysis.md)")},
     };
+    c.options += oddsOptionSpecs();
     c.run = [](Invocation& in) -> int {
         const QStringList varies = in.values(QStringLiteral("vary"));
         if (varies.isEmpty()) return in.usage(QStringLiteral("sweep: --vary KEY=FROM:TO:COUNT is required"));
@@ -133,6 +138,12 @@ Command sweepCommand()
         long double cells = 1;
         for (const analysis::Variation& v : spec.variations) cells *= v.range.count;
         if (cells > 1e12L) return in.usage(QStringLiteral("sweep: more than 10^12 shots; use fewer values"));
+        std::optional<analysis::OddsRequest> odds;
+        if (const int usage = readOddsOptions(in, *setup, &odds)) return usage;
+        if (odds && !goal) return in.usage(QStringLiteral("sweep: --noise needs --goal GOAL (the odds of what?)"));
+        if (odds && !setup->shot)
+            return in.usage(QStringLiteral("sweep: --noise needs a shot to strike, and %1 has none").arg(in.setupName()));
+        spec.odds = odds;
         spec.shard = shard;
         spec.shards = shards;
         spec.threads = jobs;
