@@ -12,6 +12,8 @@ Command trajectoryCommand();
 Command explainCommand();
 Command compareCommand();
 Command sweepCommand();
+Command fitCommand();
+Command calibrateCommand();
 
 const QList<Command>& commands()
 {
@@ -23,6 +25,8 @@ const QList<Command>& commands()
         explainCommand(),
         compareCommand(),
         sweepCommand(),
+        fitCommand(),
+        calibrateCommand(),
     };
     return all;
 }
