@@ -38,7 +38,7 @@ struct CalibrationProblem {
 struct CalibrationOptions {
     FitOptions strike;                 // each recording's strike fit (its threads: see `threads`)
     LocalOptions inner{Method::Subplex, 150, 1e-3, 1e-5};  // each refit at an outer trial
-    LocalOptions outer{Method::Subplex, 60, 1e-3, 1e-5};   // the search over the shared keys
+    LocalOptions outer{Method::Subplex, 200, 1e-3, 1e-5};  // the search over the shared keys
     int rounds = 2;
     int threads = 0;                   // 0: every core (the recordings run in parallel)
 };
