@@ -17,6 +17,7 @@ packages=(
   qt6-l10n-tools qt6-tools-dev               # Qt Linguist tools: lupdate/lrelease and their CMake (Qt6LinguistTools)
   qt6-translations-l10n                      # Qt's own translations (qtbase_hu.qm: standard buttons and dialogs)
   libbox2d-dev                               # Box2D 2.4, the comparison engine of core/compare
+  libnlopt-cxx-dev                           # NLopt 2.7: derivative-free searches of core/fit (with libnlopt-dev)
   clang libclang-rt-14-dev                   # libFuzzer (-fsanitize=fuzzer) for the fuzz targets
   desktop-file-utils appstream               # desktop-file-validate, appstreamcli (install checks)
   dpkg-dev file                              # cpack -G DEB (dpkg-shlibdeps, file)

@@ -114,8 +114,8 @@ int run(const QStringList& arguments, QByteArray* out, QByteArray* err)
     if (positional.isEmpty()) return usage(err, QStringLiteral("no command given"));
     const Command* command = findCommand(positional.first());
     if (!command) return usage(err, QStringLiteral("unknown command '%1'").arg(positional.first()));
-    if (positional.size() < 2) return usage(err, QStringLiteral("%1: no setup file given").arg(command->name));
-    if (positional.size() > 2)
+    if (positional.size() < 2) return usage(err, QStringLiteral("%1: no %2 given").arg(command->name, command->inputName));
+    if (positional.size() > 2 && !command->takesManyInputs)
         return usage(err, QStringLiteral("%1: unexpected argument '%2'").arg(command->name, positional.at(2)));
 
     // An option that this command does not take is a usage error, never silently ignored.
@@ -136,6 +136,7 @@ int run(const QStringList& arguments, QByteArray* out, QByteArray* err)
     }
 
     Invocation invocation(*command, parser, positional.at(1), out, err);
+    invocation.setInputs(positional.mid(1));
     return command->run(invocation);
 }
 

@@ -38,6 +38,8 @@ struct Command {
     QString help;                  // its lines in the help text, e.g. "simulate SETUP [--until T]  ..."
     QList<OptionSpec> options;     // the options it takes, besides the common ones
     bool takesMaxEvents = true;    // --max-events N (every command that simulates)
+    QString inputName = QStringLiteral("setup file");  // what its file arguments are, for messages
+    bool takesManyInputs = false;  // several file arguments (calibrate RECORDING...), not one SETUP
     std::function<int(Invocation&)> run;
 };
 
@@ -73,6 +75,10 @@ public:
     // The value of a whole-number option, when given, in [min, max]; as seconds() otherwise.
     std::optional<long long> wholeNumber(const QString& option, long long min, long long max, QString* problem) const;
 
+    // Every file argument (a command that takes many inputs); the first is setupPath().
+    QStringList inputs() const { return inputs_; }
+    void setInputs(QStringList inputs) { inputs_ = std::move(inputs); }
+
     // The setup path as given (`-` for standard input) and as messages name it.
     QString setupPath() const { return setupPath_; }
     QString setupName() const;
@@ -81,6 +87,10 @@ public:
     // overrides. On refusal prints the loader's message and sets *status to SetupRefused (or
     // UsageError for a bad override) and returns nullopt.
     std::optional<Setup> loadSetup(int* status) const;
+
+    // Applies the command line's --set overrides to `setup` (named `name` in messages) and checks it
+    // again, as loadSetup does; false with *status set (and the message printed) when refused.
+    bool applyOverrides(Setup& setup, const QString& name, int* status) const;
 
     // Hands what was printed so far to the process's stdout, when cuelab-cli runs as a program, so
     // that a long sweep streams its lines; a no-op when the caller collects the output.
@@ -95,6 +105,7 @@ private:
     const Command& command_;
     const QCommandLineParser& parser_;
     QString setupPath_;
+    QStringList inputs_;
     QByteArray* out_;
     QByteArray* err_;
 };

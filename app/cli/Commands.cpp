@@ -13,6 +13,8 @@ Command explainCommand();
 Command compareCommand();
 Command sweepCommand();
 Command oddsCommand();
+Command fitCommand();
+Command calibrateCommand();
 
 const QList<Command>& commands()
 {
@@ -25,6 +27,8 @@ const QList<Command>& commands()
         compareCommand(),
         sweepCommand(),
         oddsCommand(),
+        fitCommand(),
+        calibrateCommand(),
     };
     return all;
 }

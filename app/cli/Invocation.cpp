@@ -69,6 +69,12 @@ std::optional<Setup> Invocation::loadSetup(int* status) const
         *status = fail(error, SetupRefused);
         return std::nullopt;
     }
+    if (!applyOverrides(*setup, setupName(), status)) return std::nullopt;
+    return setup;
+}
+
+bool Invocation::applyOverrides(Setup& setup, const QString& name, int* status) const
+{
     // --set KEY=VALUE overrides (CONTRACT.md, Extensions), in the order given, by the one override
     // function of core/analysis; then the setup is checked again as a file would be.
     const QStringList overrides = parser_.values(QStringLiteral("set"));
@@ -76,21 +82,20 @@ std::optional<Setup> Invocation::loadSetup(int* status) const
         const auto assignment = analysis::parseAssignment(text.toStdString());
         if (!assignment) {
             *status = usage(QStringLiteral("--set: expected KEY=VALUE, found '%1'").arg(text));
-            return std::nullopt;
+            return false;
         }
-        if (const auto problem = analysis::applyOverride(*setup, assignment->key, assignment->value)) {
+        if (const auto problem = analysis::applyOverride(setup, assignment->key, assignment->value)) {
             *status = usage(QStringLiteral("--set: ") + QString::fromStdString(problem->message));
-            return std::nullopt;
+            return false;
         }
     }
     if (!overrides.isEmpty()) {
-        if (const auto problem = firstSetupProblem(*setup)) {
-            *status = fail(QString::fromStdString(analysis::refusalMessage(setupName().toStdString(), *problem)),
-                           SetupRefused);
-            return std::nullopt;
+        if (const auto problem = firstSetupProblem(setup)) {
+            *status = fail(QString::fromStdString(analysis::refusalMessage(name.toStdString(), *problem)), SetupRefused);
+            return false;
         }
     }
-    return setup;
+    return true;
 }
 
 namespace {
