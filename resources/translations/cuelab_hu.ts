@@ -917,8 +917,12 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>most</translation>
     </message>
     <message>
-        <source>How far each ball of the chosen engine is from the same ball in the exact simulation, in millimetres, at every sample time; the dashed line is the current time</source>
-        <translation>A választott motor egyes golyói milyen messze vannak ugyanattól a golyótól a pontos szimulációban, milliméterben, minden mintavételi időpontban; a szaggatott vonal az aktuális időpont</translation>
+        <source>How far each ball of the chosen engine is from the same ball in the exact simulation, in millimetres (metres when it passes a metre), at every sample time; the dashed line is the current time</source>
+        <translation>Milyen messze van a választott motor minden golyója ugyanannak a golyónak a pontos szimulációbeli helyétől, milliméterben (méterben, ha meghaladja az egy métert), minden mintavételi időpontban; a szaggatott vonal a jelenlegi idő</translation>
+    </message>
+    <message>
+        <source>error (m)</source>
+        <translation>eltérés (m)</translation>
     </message>
 </context>
 <context>
