@@ -75,7 +75,7 @@ int main(int argc, char* argv[])
     }
 
     cuelab::MainWindow window;
-    window.show();
+    window.showOnStart();  // maximised on the first start (up to 1920 px wide), else as left
     window.activateWindow();  // keyboard shortcuts work at once, even without a window manager
     const QStringList args = parser.positionalArguments();
     if (!args.isEmpty()) {

@@ -1,9 +1,11 @@
 #include "DockLayout.h"
 
+#include <QAction>
 #include <QDockWidget>
 #include <QEvent>
 #include <QLayout>
 #include <QMainWindow>
+#include <QTabBar>
 #include <QTimer>
 
 #include <algorithm>
@@ -37,6 +39,8 @@ DockLayout::DockLayout(QMainWindow* window) : QObject(window), window_(window)
         applyShares();
         QTimer::singleShot(0, this, [this] {
             applyShares();
+            applyHeights();
+            wholeTabNames();
             windowResizing_ = false;
         });
     });
@@ -46,23 +50,123 @@ DockLayout::DockLayout(QMainWindow* window) : QObject(window), window_(window)
 void DockLayout::adopt(QDockWidget* dock)
 {
     connect(dock, &QDockWidget::dockLocationChanged, this, [this] { QTimer::singleShot(0, this, &DockLayout::recordShares); });
+    // A bottom dock (Plots, Compare) shown from a menu opens tall enough for its chart, not as the
+    // strip its minimum would give it.
+    connect(dock->toggleViewAction(), &QAction::toggled, this, [this, dock](bool on) {
+        if (!on || dock->isFloating() || window_->dockWidgetArea(dock) != Qt::BottomDockWidgetArea) return;
+        QTimer::singleShot(0, this, [this, dock] {
+            if (dock->isVisible() && dock->height() < 0.8 * bottom_ * window_->height()) giveBottomDockRoom(dock);
+        });
+    });
 }
 
-void DockLayout::captureDefault()
+void DockLayout::arrange(Arrangement arrangement)
 {
-    default_ = window_->saveState();
-}
-
-void DockLayout::reset()
-{
-    if (!default_.isEmpty()) window_->restoreState(default_);
-    for (QDockWidget* d : window_->findChildren<QDockWidget*>()) {
-        // Every dock comes back, docked where the default layout put it.
-        if (d->isFloating()) d->setFloating(false);
-    }
-    left_ = kDefaultLeftShare;
-    right_ = kDefaultRightShare;
+    const ArrangementSpec spec = arrangementSpec(arrangement);
+    const auto dock = [this](const QString& name) { return window_->findChild<QDockWidget*>(name, Qt::FindDirectChildrenOnly); };
+    // Take every named dock out of the layout first: the stacks are then built from nothing.
+    for (const QList<DockStack>* column : {&spec.left, &spec.right, &spec.bottom})
+        for (const DockStack& stack : *column)
+            for (const QString& name : stack.docks)
+                if (QDockWidget* d = dock(name)) {
+                    d->setFloating(false);
+                    window_->removeDockWidget(d);
+                }
+    const int height = std::max(1, window_->height());
+    const auto place = [&](Qt::DockWidgetArea area, const QList<DockStack>& column) {
+        QDockWidget* above = nullptr;  // the first dock of the stack above
+        QList<QDockWidget*> fronts;
+        QList<int> heights;
+        QList<int> weights;
+        int totalWeight = 0;
+        for (const DockStack& stack : column) totalWeight += stack.weight;
+        // First the stacks' first docks, one above the other; then the tabs of each stack (a dock
+        // split from one already in a tab group would join the group instead).
+        QList<QDockWidget*> firsts;
+        for (const DockStack& stack : column) {
+            QDockWidget* first = nullptr;
+            for (const QString& name : stack.docks)
+                if ((first = dock(name))) break;
+            firsts << first;
+            if (!first) continue;
+            if (above) window_->splitDockWidget(above, first, Qt::Vertical);
+            else window_->addDockWidget(area, first);
+            above = first;
+        }
+        for (qsizetype k = 0; k < column.size(); ++k) {
+            const DockStack& stack = column[k];
+            QDockWidget* first = firsts[k];
+            if (!first) continue;
+            for (const QString& name : stack.docks) {
+                QDockWidget* d = dock(name);
+                if (!d) continue;
+                if (d != first) window_->tabifyDockWidget(first, d);
+                d->setVisible(stack.shown.contains(name));
+            }
+            for (const QString& name : stack.shown)
+                if (QDockWidget* d = dock(name)) {
+                    fronts << d;
+                    heights << height * std::max(1, stack.weight) / std::max(1, totalWeight);
+                    weights << std::max(1, stack.weight);
+                    break;
+                }
+        }
+        for (QDockWidget* d : std::as_const(fronts)) d->raise();  // the first shown tab of each stack in front
+        if (fronts.size() > 1) {
+            window_->resizeDocks(fronts, heights, Qt::Vertical);
+            Column remembered;
+            for (QDockWidget* d : std::as_const(fronts)) remembered.docks << d;
+            remembered.weights = weights;
+            columns_.push_back(remembered);
+        }
+        return fronts;
+    };
+    columns_.clear();
+    place(Qt::LeftDockWidgetArea, spec.left);
+    place(Qt::RightDockWidgetArea, spec.right);
+    bottom_ = spec.bottomShare;
+    for (QDockWidget* d : place(Qt::BottomDockWidgetArea, spec.bottom)) giveBottomDockRoom(d);
+    left_ = spec.leftShare;
+    right_ = spec.rightShare;
+    // The heights again once the window has its size (before the first show the layout has none).
+    heightsPending_ = true;
     applyShares();
+    QTimer::singleShot(0, this, &DockLayout::applyHeights);
+    QTimer::singleShot(0, this, &DockLayout::wholeTabNames);
+}
+
+void DockLayout::wholeTabNames()
+{
+    // A dock's tab says its whole name ("Inspector", not "Ins…"); a crowded bar scrolls instead.
+    for (QTabBar* bar : window_->findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+        bar->setElideMode(Qt::ElideNone);
+        bar->setUsesScrollButtons(true);
+    }
+}
+
+void DockLayout::applyHeights()
+{
+    if (!heightsPending_ || !window_->isVisible()) return;
+    heightsPending_ = false;
+    for (const Column& column : std::as_const(columns_)) {
+        QList<QDockWidget*> docks;
+        QList<int> heights;
+        int total = 0;
+        for (qsizetype i = 0; i < column.docks.size(); ++i)
+            if (column.docks[i] && column.docks[i]->isVisible()) total += column.weights[i];
+        for (qsizetype i = 0; i < column.docks.size(); ++i)
+            if (column.docks[i] && column.docks[i]->isVisible()) {
+                docks << column.docks[i];
+                heights << std::max(1, window_->height() * column.weights[i] / std::max(1, total));
+            }
+        if (docks.size() > 1) window_->resizeDocks(docks, heights, Qt::Vertical);
+    }
+}
+
+void DockLayout::giveBottomDockRoom(QDockWidget* dock)
+{
+    const int want = std::max(kMinimumDockHeight, static_cast<int>(bottom_ * window_->height()));
+    window_->resizeDocks({dock}, {want}, Qt::Vertical);
 }
 
 bool DockLayout::restore(const QByteArray& state, const QVariant& shares)

@@ -1,9 +1,12 @@
 #include "FirstStartTip.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSettings>
 #include <QToolButton>
+
+#include <algorithm>
 
 namespace cuelab {
 
@@ -26,7 +29,7 @@ FirstStartTip::FirstStartTip(QWidget* parent) : QFrame(parent)
         tr("<b>New to CueLab?</b> Open a lesson from <i>File › Examples</i>. <b>Space</b> plays the shot, "
            "<b>←/→</b> step a frame, <b>Shift+←/→</b> jump to the next event; click an event in <i>Events</i> "
            "to read its mathematics. Drag a ball to move it; every edit can be undone (<b>Ctrl+Z</b>). "
-           "<b>F1</b> lists every shortcut and mouse gesture."),
+           "<b>F1</b> opens the user guide; <i>Help › Keyboard and Mouse</i> lists every shortcut and mouse gesture."),
         this);
     text->setWordWrap(true);
     text->setTextFormat(Qt::RichText);
@@ -41,6 +44,10 @@ FirstStartTip::FirstStartTip(QWidget* parent) : QFrame(parent)
     layout->addWidget(text, 1);
     layout->addWidget(close, 0, Qt::AlignTop);
     setVisible(pending());
+    if (parent) {
+        parent->installEventFilter(this);
+        place();
+    }
     // Seen once is enough: the next start shows it no more, even if this one never closes it.
     QSettings().setValue(kSeenKey, true);
 }
@@ -50,6 +57,24 @@ bool FirstStartTip::pending() { return !QSettings().value(kSeenKey, false).toBoo
 void FirstStartTip::showAgain()
 {
     show();
+    raise();
+    place();
+}
+
+bool FirstStartTip::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == parent() && event->type() == QEvent::Resize) place();
+    return QFrame::eventFilter(watched, event);
+}
+
+void FirstStartTip::place()
+{
+    const QWidget* over = parentWidget();
+    if (!over) return;
+    constexpr int kMargin = 8;  // px from the view's edges
+    const int width = std::max(0, over->width() - 2 * kMargin);
+    const int height = layout() && layout()->hasHeightForWidth() ? layout()->totalHeightForWidth(width) : sizeHint().height();
+    setGeometry(kMargin, kMargin, width, std::min(height, std::max(0, over->height() - 2 * kMargin)));
 }
 
 void FirstStartTip::dismiss()

@@ -1,7 +1,8 @@
 #pragma once
-// The tip a new user sees above the table view on the first start: where the examples are, how to
-// play and step, and where every shortcut is listed. Closing it (or any later start) hides it for
-// good; Help > Show First-Start Tip brings it back.
+// The tip a new user sees over the top of the table view on the first start: where the examples
+// are, how to play and step, where the user guide and every shortcut are. Closing it (or any later
+// start) hides it for good; Help > Show First-Start Tip brings it back. It lies over its parent (the
+// table view), across its width at the top, and follows its size: the view keeps its whole height.
 
 #include <QFrame>
 
@@ -17,8 +18,12 @@ public:
     // Shows it again, and forgets that it was seen.
     void showAgain();
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void dismiss();
+    void place();
 };
 
 }  // namespace cuelab

@@ -4,6 +4,8 @@
 #include "DockLayout.h"
 #include "Features.h"
 #include "FirstStartTip.h"
+#include "InputGuard.h"
+#include "RefusalNote.h"
 #include "RecentFiles.h"
 
 #include "editor/BallsPanel.h"
@@ -54,6 +56,9 @@ MainWindow::MainWindow(QWidget* parent)
       layout_(new DockLayout(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
+    // First, so that it sees every editor polished: the wheel only for focused editors; Ctrl+Z
+    // after Enter undoes the document's edit.
+    new InputGuard(this);
     setAcceptDrops(true);
     setDockNestingEnabled(true);
 
@@ -67,11 +72,18 @@ MainWindow::MainWindow(QWidget* parent)
     auto* centreLayout = new QVBoxLayout(centre);
     centreLayout->setContentsMargins(0, 0, 0, 0);
     centreLayout->setSpacing(0);
-    tip_ = new FirstStartTip(centre);
-    centreLayout->addWidget(tip_);
     centreLayout->addWidget(view_, 1);
     centreLayout->addWidget(transport_);
     setCentralWidget(centre);
+    // The first-start tip lies over the top of the table view (where the view has room to spare
+    // above a table fitted to its width) instead of taking the view's height.
+    tip_ = new FirstStartTip(view_);
+    // The side columns run the window's full height; a bottom dock (Plots, Compare) sits under the
+    // table view only.
+    setCorner(Qt::TopLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
 
     createDocks();
     createStatusBar();
@@ -79,24 +91,8 @@ MainWindow::MainWindow(QWidget* parent)
     installFeatures(*this);
     for (QMenu* m : findChildren<QMenu*>()) m->setToolTipsVisible(true);
     analysisMenu_->menuAction()->setVisible(!analysisMenu_->isEmpty());
-    // The first heights: the docks' contents scroll, so their minimums no longer say how tall each
-    // should start. Side columns as proportions (the Balls list and editor, then Shot, then Lesson;
-    // Events, then the Inspector's tabs); the bottom Plots dock 240 px (its chart without a scroll bar), so that the table
-    // keeps most of a small window's height.
-    const auto sizeDocks = [this](std::initializer_list<std::pair<const char*, int>> sizes) {
-        QList<QDockWidget*> docks;
-        QList<int> heights;
-        for (const auto& [name, height] : sizes)
-            if (auto* d = findChild<QDockWidget*>(QLatin1String(name))) {
-                docks << d;
-                heights << height;
-            }
-        resizeDocks(docks, heights, Qt::Vertical);
-    };
-    sizeDocks({{"BallsDock", 45}, {"ShotDock", 35}, {"LessonDock", 20}});
-    sizeDocks({{"EventsDock", 40}, {"InspectorDock", 60}});
-    sizeDocks({{"PlotsDock", 240}});
-    layout_->captureDefault();
+    // The first start's arrangement (Arrangements.h), which View > Layouts > Reset Layout returns to.
+    layout_->arrange(Arrangement::Default);
 
     connect(document_, &Document::resultChanged, this, &MainWindow::onResultChanged);
     // The drag keeps clear of the setup's balls, not of the last result's (which lags behind while
@@ -129,9 +125,13 @@ MainWindow::MainWindow(QWidget* parent)
         selection_->clear();
         playback_->toStart();
         updateTitle();
+        scopeForBusyShot();
     });
-    connect(document_, &Document::editRefused, this, [this](const QString& message) {
+    // A refused edit: said beside the field that made it, and in the status bar.
+    auto* refusal = new RefusalNote(this);
+    connect(document_, &Document::editRefused, this, [this, refusal](const QString& message) {
         statusBar()->showMessage(tr("Not applied: %1").arg(message), window::kStatusMessageMs);
+        refusal->say(tr("Not applied: %1").arg(message));
     });
     connect(document_, &Document::simulationFailed, this, [this](const QString& message) {
         statusBar()->showMessage(message, window::kStatusMessageMs);
@@ -157,9 +157,9 @@ MainWindow::MainWindow(QWidget* parent)
     for (QAction* step : {transport_->previousEventAction(), transport_->nextEventAction()})
         connect(step, &QAction::triggered, this, &MainWindow::selectEventAtCurrentTime);
 
-    // The first run fills most of the screen; later runs restore what the user left (readSettings).
-    const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
-    resize(std::min(1600, screen.width() * 9 / 10), std::min(1000, screen.height() * 9 / 10));
+    // The first run takes the screen's available area (showOnStart maximises it on a screen up to
+    // 1920 px wide); later runs restore what the user left (readSettings).
+    if (QScreen* screen = QGuiApplication::primaryScreen()) setGeometry(firstStartGeometry(screen->availableGeometry()));
     readSettings();
     updateTitle();
     busy_->setVisible(document_->isSimulating());
@@ -175,16 +175,12 @@ void MainWindow::createDocks()
     events_ = new EventsPanel(this);
     inspector_ = new InspectorPanel(this);
 
-    QDockWidget* ballsDock = addPanel(balls_, tr("Balls"), QStringLiteral("BallsDock"), {Qt::LeftDockWidgetArea});
-    QDockWidget* shotDock = addPanel(shot_, tr("Shot"), QStringLiteral("ShotDock"), {Qt::LeftDockWidgetArea, {}, true});
-    addPanel(physics_, tr("Physics"), QStringLiteral("PhysicsDock"), {Qt::LeftDockWidgetArea, QStringLiteral("ShotDock"), true});
-    shotDock->raise();
-    QDockWidget* eventsDock = addPanel(events_, tr("Events"), QStringLiteral("EventsDock"), {Qt::RightDockWidgetArea});
-    QDockWidget* inspectorDock = addPanel(inspector_, tr("Inspector"), QStringLiteral("InspectorDock"), {Qt::RightDockWidgetArea});
-    splitDockWidget(eventsDock, inspectorDock, Qt::Vertical);
-    resizeDocks({ballsDock, eventsDock}, {430, 470}, Qt::Horizontal);
-    resizeDocks({ballsDock, shotDock}, {260, 520}, Qt::Vertical);
-    resizeDocks({eventsDock, inspectorDock}, {340, 460}, Qt::Vertical);
+    // Where each goes, with the features' docks, is the default arrangement's (Arrangements.h).
+    addPanel(balls_, tr("Balls"), QStringLiteral("BallsDock"), {Qt::LeftDockWidgetArea});
+    addPanel(shot_, tr("Shot"), QStringLiteral("ShotDock"), {Qt::LeftDockWidgetArea, QStringLiteral("BallsDock")});
+    addPanel(physics_, tr("Physics"), QStringLiteral("PhysicsDock"), {Qt::LeftDockWidgetArea, QStringLiteral("BallsDock")});
+    addPanel(events_, tr("Events"), QStringLiteral("EventsDock"), {Qt::RightDockWidgetArea});
+    addPanel(inspector_, tr("Inspector"), QStringLiteral("InspectorDock"), {Qt::RightDockWidgetArea, QStringLiteral("EventsDock")});
 }
 
 
@@ -217,6 +213,32 @@ QDockWidget* MainWindow::addPanel(QWidget* content, const QString& title, const 
 void MainWindow::resetLayout()
 {
     layout_->reset();
+}
+
+void MainWindow::arrange(Arrangement arrangement)
+{
+    layout_->arrange(arrangement);
+}
+
+bool MainWindow::maximisesOnFirstStart(const QRect& available) { return available.width() <= kMaximiseUpToWidth; }
+
+QRect MainWindow::firstStartGeometry(const QRect& available)
+{
+    // Up to 1920 px wide the whole available area (maximised); beyond, about 80 % of it, centred:
+    // a 2560x1440 screen gives 2048x1152, as wide as a 1920 screen's window and a little more.
+    if (maximisesOnFirstStart(available)) return available;
+    const QSize size(available.width() * 4 / 5, available.height() * 4 / 5);
+    QRect r(QPoint(0, 0), size);
+    r.moveCenter(available.center());
+    return r;
+}
+
+void MainWindow::showOnStart()
+{
+    const bool firstStart = !QSettings().contains(QStringLiteral("window/geometry"));
+    QScreen* screen = QGuiApplication::primaryScreen();
+    if (firstStart && screen && maximisesOnFirstStart(screen->availableGeometry())) showMaximized();
+    else show();
 }
 
 QMenu* MainWindow::menu(WindowMenu which)
@@ -305,6 +327,30 @@ void MainWindow::onResultChanged()
     if (result->status == SimulationStatus::ReachedUntil) summary = tr("%n event(s), stopped at the time limit", nullptr, static_cast<int>(result->events.size()));
     if (result->status == SimulationStatus::EventLimit) summary = tr("Cut short: %1").arg(QString::fromStdString(result->error));
     summaryLabel_->setText(summary);
+}
+
+void MainWindow::scopeForBusyShot()
+{
+    const Setup& setup = document_->setup();
+    int struck = -1;
+    if (setup.shot)
+        for (std::size_t i = 0; i < setup.balls.size(); ++i)
+            if (setup.balls[i].id == setup.shot->ball) struck = static_cast<int>(i);
+    if (setup.balls.size() > kBusyShotBalls && struck >= 0) {
+        if (view_->pathScope() == BallScope::All && view_->labelScope() == BallScope::All) autoScoped_ = true;
+        if (!autoScoped_) return;  // the user chose the scopes: keep them
+        selection_->selectBall(struck);
+        view_->setPathScope(BallScope::Selected);
+        view_->setLabelScope(BallScope::Selected);
+        statusBar()->showMessage(tr("A busy shot: the paths and event times of the selected ball %1 only (View › Paths Of, Labels Of)")
+                                     .arg(QString::fromStdString(setup.shot->ball)),
+                                 window::kStatusMessageMs);
+    } else if (autoScoped_) {
+        // Back to every ball for a shot with few balls, as before the busy one.
+        autoScoped_ = false;
+        view_->setPathScope(BallScope::All);
+        view_->setLabelScope(BallScope::All);
+    }
 }
 
 void MainWindow::onTimeChanged(double seconds)

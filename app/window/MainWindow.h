@@ -10,6 +10,7 @@
 // The class is split by job: MainWindow.cpp (layout, docks, selection and result wiring),
 // MainWindowMenus.cpp (menus and actions), MainWindowFiles.cpp (new, open, save, examples, settings).
 
+#include "Arrangements.h"
 #include "view/ViewScene.h"
 
 #include <QMainWindow>
@@ -87,7 +88,19 @@ public:
     QMenu* menu(WindowMenu which);
     QList<QDockWidget*> panels() const { return docks_; }
     DockLayout* dockLayout() const { return layout_; }
-    void resetLayout();  // View > Reset Layout: the docks where the first start put them
+    void resetLayout();  // View > Layouts > Reset Layout: the docks where the first start put them
+    void arrange(Arrangement arrangement);  // View > Layouts
+
+    // The first start: the screen's available area, maximised on a screen up to 1920 px wide, about
+    // 80 % of it (centred) beyond. showOnStart shows the window so (main.cpp); later starts restore
+    // the remembered geometry.
+    static constexpr int kMaximiseUpToWidth = 1920;
+    // More balls than this make a busy shot (a break): it opens with the struck ball selected and
+    // only its paths and event times shown (View > Paths Of, Labels Of: Selected Ball Only).
+    static constexpr std::size_t kBusyShotBalls = 6;
+    static QRect firstStartGeometry(const QRect& available);
+    static bool maximisesOnFirstStart(const QRect& available);
+    void showOnStart();
 
     static QStringList bundledExamples();  // resource paths, sorted
 
@@ -113,6 +126,8 @@ private:
     void about();
 
     void onResultChanged();
+    void scopeForBusyShot();  // a setup with many balls opens with the struck ball's paths and times
+
     void onTimeChanged(double seconds);
     void onBallSelected(int index);
     void onEventSelected(int index);
@@ -147,6 +162,7 @@ private:
     QLabel* summaryLabel_ = nullptr;
     QLabel* fpsLabel_ = nullptr;
     QProgressBar* busy_ = nullptr;
+    bool autoScoped_ = false;  // the view's Paths Of / Labels Of were set by scopeForBusyShot
 };
 
 }  // namespace cuelab

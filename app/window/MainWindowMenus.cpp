@@ -5,6 +5,7 @@
 #include "RecentFiles.h"
 #include "FirstStartTip.h"
 #include "ShortcutsDialog.h"
+#include "UserGuide.h"
 
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
@@ -40,16 +41,25 @@ QString overlayName(Overlay overlay)
     return {};
 }
 
+// The platform's keys for a standard action, and the usual one as well when the platform has none or
+// another: without a desktop theme Qt knows no Save As, Full Screen or Redo keys on Linux.
+QList<QKeySequence> standardKeys(QKeySequence::StandardKey key, const QKeySequence& usual)
+{
+    QList<QKeySequence> keys = QKeySequence::keyBindings(key);
+    if (!keys.contains(usual)) keys.prepend(usual);
+    return keys;
+}
+
 }  // namespace
 
 void MainWindow::createMenus()
 {
     QMenu* file = fileMenu_ = menuBar()->addMenu(tr("&File"));
     QAction* newAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-new")), tr("&New"), this, &MainWindow::newDocument);
-    newAction->setShortcut(QKeySequence::New);
+    newAction->setShortcuts(standardKeys(QKeySequence::New, QKeySequence(Qt::CTRL | Qt::Key_N)));
     newAction->setToolTip(tr("A new setup: a 9-ft table with a cue ball and one object ball"));
     QAction* openAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-open")), tr("&Open…"), this, &MainWindow::open);
-    openAction->setShortcut(QKeySequence::Open);
+    openAction->setShortcuts(standardKeys(QKeySequence::Open, QKeySequence(Qt::CTRL | Qt::Key_O)));
     recentMenu_ = new RecentFiles(tr("Open &Recent"), this);
     file->addMenu(recentMenu_);
     connect(recentMenu_, &RecentFiles::openRequested, this, &MainWindow::openFile);
@@ -67,18 +77,23 @@ void MainWindow::createMenus()
     examplesMenu_->setEnabled(!examplesMenu_->isEmpty());
     file->addSeparator();
     QAction* saveAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save"), this, &MainWindow::save);
-    saveAction->setShortcut(QKeySequence::Save);
+    saveAction->setShortcuts(standardKeys(QKeySequence::Save, QKeySequence(Qt::CTRL | Qt::Key_S)));
     QAction* saveAsAction = file->addAction(tr("Save &As…"), this, &MainWindow::saveAs);
-    saveAsAction->setShortcut(QKeySequence::SaveAs);
+    saveAsAction->setShortcuts(standardKeys(QKeySequence::SaveAs, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)));
+    saveAsAction->setObjectName(QStringLiteral("saveAsAction"));
     exportSeparator_ = file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
+    quit->setShortcuts(standardKeys(QKeySequence::Quit, QKeySequence(Qt::CTRL | Qt::Key_Q)));
 
     QMenu* edit = editMenu_ = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
+    undo->setShortcuts(standardKeys(QKeySequence::Undo, QKeySequence(Qt::CTRL | Qt::Key_Z)));
+    undo->setObjectName(QStringLiteral("undoAction"));
+    undo->setProperty("shortcutName", tr("Undo"));  // the shortcut list names it, not its changing caption
     QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
+    redo->setShortcuts(standardKeys(QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)));
+    redo->setObjectName(QStringLiteral("redoAction"));
+    redo->setProperty("shortcutName", tr("Redo"));
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
@@ -95,9 +110,20 @@ void MainWindow::createMenus()
     QMenu* view = viewMenu_ = menuBar()->addMenu(tr("&View"));
     panelsMenu_ = view->addMenu(tr("&Panels"));
     for (QDockWidget* d : std::as_const(docks_)) panelsMenu_->addAction(d->toggleViewAction());
-    QAction* resetLayoutAction = view->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
+    QMenu* layouts = view->addMenu(tr("La&youts"));
+    layouts->setObjectName(QStringLiteral("layoutsMenu"));
+    const std::pair<Arrangement, const char*> named[] = {{Arrangement::Teach, "teachLayoutAction"},
+                                                         {Arrangement::Coach, "coachLayoutAction"},
+                                                         {Arrangement::Edit, "editLayoutAction"}};
+    for (const auto& [arrangement, name] : named) {
+        QAction* a = layouts->addAction(arrangementName(arrangement), this, [this, which = arrangement] { arrange(which); });
+        a->setObjectName(QLatin1String(name));
+        a->setToolTip(arrangementTip(arrangement));
+    }
+    layouts->addSeparator();
+    QAction* resetLayoutAction = layouts->addAction(arrangementName(Arrangement::Default), this, &MainWindow::resetLayout);
     resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
-    resetLayoutAction->setToolTip(tr("Put every panel back where the first start put it, at its default width"));
+    resetLayoutAction->setToolTip(arrangementTip(Arrangement::Default));
     QMenu* overlays = view->addMenu(tr("&Overlays"));
     overlays->setObjectName(QStringLiteral("overlaysMenu"));  // features add their own overlays to it
     for (int i = 0; i < kOverlayCount; ++i) {
@@ -120,20 +146,27 @@ void MainWindow::createMenus()
     const std::pair<BallScope, QString> scopes[] = {{BallScope::All, tr("&All Balls")},
                                                     {BallScope::Selected, tr("&Selected Ball Only")},
                                                     {BallScope::None, tr("&None")}};
-    const auto scopeMenu = [&](const QString& title, const QString& tip, BallScope current, auto setter) {
+    const auto scopeMenu = [&](const QString& title, const QString& tip, auto getter, auto setter) {
         QMenu* m = view->addMenu(title);
         m->setToolTip(tip);
         auto* group = new QActionGroup(m);
         for (const auto& [scope, name] : scopes) {
-            QAction* a = m->addAction(name, this, [this, setter, sc = scope] { (view_->*setter)(sc); });
+            QAction* a = m->addAction(name, this, [this, setter, sc = scope] {
+                autoScoped_ = false;  // the user's choice from now on
+                (view_->*setter)(sc);
+            });
             a->setCheckable(true);
-            a->setChecked(scope == current);
+            a->setChecked(scope == (view_->*getter)());
             group->addAction(a);
+            // Also when the window sets the scope itself (a busy shot opens with the struck ball's).
+            connect(view_, &TableView::displayModesChanged, a, [this, a, getter, sc = scope] {
+                if ((view_->*getter)() == sc) a->setChecked(true);
+            });
         }
     };
-    scopeMenu(tr("Pat&hs Of"), tr("Whose paths, trails and event markers are drawn (busy shots read better with one ball)"),
-              view_->pathScope(), &TableView::setPathScope);
-    scopeMenu(tr("&Labels Of"), tr("Whose event times are labelled in the view"), view_->labelScope(),
+    scopeMenu(tr("Pat&hs Of"), tr("Whose paths, trails, event markers and comparison ghosts are drawn (busy shots read better with one ball)"),
+              &TableView::pathScope, &TableView::setPathScope);
+    scopeMenu(tr("&Labels Of"), tr("Whose event times are labelled in the view"), &TableView::labelScope,
               &TableView::setLabelScope);
     QAction* follow = view->addAction(tr("F&ollow Selected Ball"));
     follow->setCheckable(true);
@@ -146,7 +179,8 @@ void MainWindow::createMenus()
     view->addSeparator();
     QAction* fullScreen = view->addAction(tr("&Full Screen"));
     fullScreen->setCheckable(true);
-    fullScreen->setShortcut(QKeySequence::FullScreen);
+    fullScreen->setShortcuts(standardKeys(QKeySequence::FullScreen, QKeySequence(Qt::Key_F11)));
+    fullScreen->setObjectName(QStringLiteral("fullScreenAction"));
     connect(fullScreen, &QAction::toggled, this, [this](bool on) {
         setWindowState(on ? (windowState() | Qt::WindowFullScreen) : (windowState() & ~Qt::WindowFullScreen));
     });
@@ -156,12 +190,15 @@ void MainWindow::createMenus()
     playbackMenu_->addActions(transport_->transportActions());
 
     QMenu* help = helpMenu_ = menuBar()->addMenu(tr("&Help"));
+    QAction* guide = help->addAction(tr("CueLab &User Guide"), this, [this] { UserGuide::showFor(this); });
+    guide->setObjectName(QStringLiteral("userGuideAction"));
+    guide->setShortcuts(standardKeys(QKeySequence::HelpContents, QKeySequence(Qt::Key_F1)));
+    guide->setToolTip(tr("How to use the window, step by step (the guide bundled with this version)"));
     QAction* keys = help->addAction(tr("&Keyboard and Mouse…"), this, [this] {
         ShortcutsDialog dialog(menuBar(), this);
         dialog.exec();
     });
     keys->setObjectName(QStringLiteral("keyboardAndMouseAction"));
-    keys->setShortcut(QKeySequence::HelpContents);
     keys->setToolTip(tr("Every keyboard shortcut and mouse gesture of the window"));
     QAction* tip = help->addAction(tr("Show First-Start &Tip"), tip_, &FirstStartTip::showAgain);
     tip->setToolTip(tr("The short tour shown above the table on the first start"));

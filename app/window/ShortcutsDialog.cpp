@@ -2,11 +2,16 @@
 
 #include <QAction>
 #include <QDialogButtonBox>
+#include <QGuiApplication>
+#include <QScreen>
+#include <QScrollBar>
 #include <QHeaderView>
 #include <QMenu>
 #include <QMenuBar>
 #include <QTreeWidget>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace cuelab {
 
@@ -30,7 +35,9 @@ void collect(const QMenu* menu, const QString& path, QList<ShortcutsDialog::Row>
         QStringList keys;
         for (const QKeySequence& k : a->shortcuts()) keys << k.toString(QKeySequence::NativeText);
         if (keys.isEmpty()) continue;
-        rows.push_back({path, plain(a->text()), keys.join(QStringLiteral(", "))});
+        // An action whose caption changes (Undo says what it undoes) names itself for the list.
+        const QString name = a->property("shortcutName").toString();
+        rows.push_back({path, name.isEmpty() ? plain(a->text()) : name, keys.join(QStringLiteral(", "))});
     }
 }
 
@@ -41,7 +48,16 @@ QList<ShortcutsDialog::Row> ShortcutsDialog::keyboardRows(const QMenuBar* menus)
     QList<Row> rows;
     for (QAction* top : menus->actions())
         if (QMenu* m = top->menu()) collect(m, plain(m->title()), rows);
-    return rows;
+    // One group per menu: a submenu in the middle of its menu (File › Export before Quit) must not
+    // split the menu's rows into two groups of the same name.
+    QList<Row> grouped;
+    QStringList order;
+    for (const Row& r : std::as_const(rows))
+        if (!order.contains(r.group)) order << r.group;
+    for (const QString& group : std::as_const(order))
+        for (const Row& r : std::as_const(rows))
+            if (r.group == group) grouped << r;
+    return grouped;
 }
 
 QList<ShortcutsDialog::Row> ShortcutsDialog::mouseRows()
@@ -91,13 +107,22 @@ ShortcutsDialog::ShortcutsDialog(const QMenuBar* menus, QWidget* parent) : QDial
     fill(tr("Keyboard"), keyboardRows(menus));
     fill(tr("Mouse"), mouseRows());
     tree->expandAll();
+    // Both columns whole: the keys are what the list is for.
+    tree->header()->setStretchLastSection(false);
     tree->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    tree->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(tree);
     layout->addWidget(buttons);
-    resize(620, 640);
+    // As wide as both columns (and the tree's frame and scroll bar), within the screen.
+    const int columns = tree->header()->sectionSizeHint(0) + tree->header()->sectionSizeHint(1);
+    const QAbstractItemView* view = tree;
+    int width = std::max(columns, view->sizeHintForColumn(0) + view->sizeHintForColumn(1));
+    width += 2 * tree->frameWidth() + tree->verticalScrollBar()->sizeHint().width() + 40;
+    const QRect screen = QGuiApplication::primaryScreen() ? QGuiApplication::primaryScreen()->availableGeometry() : QRect(0, 0, 1280, 800);
+    resize(std::min(std::max(620, width), screen.width() * 9 / 10), std::min(720, screen.height() * 9 / 10));
 }
 
 }  // namespace cuelab

@@ -2,6 +2,41 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="hu_HU">
 <context>
+    <name>Arrangements</name>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>Az elrendezés &amp;visszaállítása</translation>
+    </message>
+    <message>
+        <source>&amp;Teach</source>
+        <translation>&amp;Tanítás</translation>
+    </message>
+    <message>
+        <source>&amp;Coach</source>
+        <translation>&amp;Edzés</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Szerkesztés</translation>
+    </message>
+    <message>
+        <source>Every panel back where the first start put it: the editor on the left, the events and explanations on the right, plots and comparisons hidden until asked for</source>
+        <translation>Minden panel vissza oda, ahová az első indítás tette: balra a szerkesztő, jobbra az események és a magyarázatok, a grafikonok és az összehasonlítás rejtve, amíg nem kéri őket</translation>
+    </message>
+    <message>
+        <source>For a lesson: the table, the Lesson notes, Explain and Plots</source>
+        <translation>Órához: az asztal, a Lecke jegyzetei, a Magyarázat és a Grafikonok</translation>
+    </message>
+    <message>
+        <source>For a shot on the table: the table, Shot with the whole tip picker, Analysis and Outcome</source>
+        <translation>Egy ütés gyakorlásához: az asztal, az Ütés a teljes dákóhegy-választóval, az Elemzés és az Eredmény</translation>
+    </message>
+    <message>
+        <source>For setting up: the table, Balls and Physics, Events</source>
+        <translation>Beállításhoz: az asztal, a Golyók és a Fizika, az Események</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>&amp;Velocities</source>
@@ -375,10 +410,6 @@
         <translation>Az asztal nézetének kirajzolása választott méretben egy PNG-képbe, a jelenlegi kamerából vagy egy előre beállított nézetből</translation>
     </message>
     <message>
-        <source>contact; 1 N·s = %1 m</source>
-        <translation>érintkezés; 1 N·s = %1 m</translation>
-    </message>
-    <message>
         <source>p %1 = %2 N·s</source>
         <translation>p %1 = %2 N·s</translation>
     </message>
@@ -397,6 +428,14 @@
     <message>
         <source>J = %1 N·s, vertical %2 N·s</source>
         <translation>J = %1 N·s, függőleges %2 N·s</translation>
+    </message>
+    <message>
+        <source>contact</source>
+        <translation>érintkezés</translation>
+    </message>
+    <message>
+        <source>Arrows: 1 N·s = %1 m</source>
+        <translation>Nyilak: 1 N·s = %1 m</translation>
     </message>
 </context>
 <context>
@@ -878,8 +917,12 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>most</translation>
     </message>
     <message>
-        <source>How far each ball of the chosen engine is from the same ball in the exact simulation, in millimetres, at every sample time; the dashed line is the current time</source>
-        <translation>A választott motor egyes golyói milyen messze vannak ugyanattól a golyótól a pontos szimulációban, milliméterben, minden mintavételi időpontban; a szaggatott vonal az aktuális időpont</translation>
+        <source>How far each ball of the chosen engine is from the same ball in the exact simulation, in millimetres (metres when it passes a metre), at every sample time; the dashed line is the current time</source>
+        <translation>Milyen messze van a választott motor minden golyója ugyanannak a golyónak a pontos szimulációbeli helyétől, milliméterben (méterben, ha meghaladja az egy métert), minden mintavételi időpontban; a szaggatott vonal a jelenlegi idő</translation>
+    </message>
+    <message>
+        <source>error (m)</source>
+        <translation>eltérés (m)</translation>
     </message>
 </context>
 <context>
@@ -1046,6 +1089,18 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>ΔE = %1 J</source>
         <translation>ΔE = %1 J</translation>
+    </message>
+    <message>
+        <source>ΔE = 0 J (conserved)</source>
+        <translation>ΔE = 0 J (megmarad)</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>összesen</translation>
+    </message>
+    <message>
+        <source>light: rotation</source>
+        <translation>világos: forgás</translation>
     </message>
 </context>
 <context>
@@ -1340,12 +1395,12 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
 <context>
     <name>cuelab::FirstStartTip</name>
     <message>
-        <source>&lt;b&gt;New to CueLab?&lt;/b&gt; Open a lesson from &lt;i&gt;File › Examples&lt;/i&gt;. &lt;b&gt;Space&lt;/b&gt; plays the shot, &lt;b&gt;←/→&lt;/b&gt; step a frame, &lt;b&gt;Shift+←/→&lt;/b&gt; jump to the next event; click an event in &lt;i&gt;Events&lt;/i&gt; to read its mathematics. Drag a ball to move it; every edit can be undone (&lt;b&gt;Ctrl+Z&lt;/b&gt;). &lt;b&gt;F1&lt;/b&gt; lists every shortcut and mouse gesture.</source>
-        <translation>&lt;b&gt;Először használja a CueLabot?&lt;/b&gt; Nyisson meg egy leckét a &lt;i&gt;Fájl › Példák&lt;/i&gt; menüből. A &lt;b&gt;Szóköz&lt;/b&gt; lejátssza az ütést, a &lt;b&gt;←/→&lt;/b&gt; egy képkockát lép, a &lt;b&gt;Shift+←/→&lt;/b&gt; a következő eseményre ugrik; kattintson egy eseményre az &lt;i&gt;Események&lt;/i&gt; panelen, hogy elolvassa a matematikáját. Egy golyót húzással helyezhet át; minden szerkesztés visszavonható (&lt;b&gt;Ctrl+Z&lt;/b&gt;). Az &lt;b&gt;F1&lt;/b&gt; felsorol minden billentyűparancsot és egérmozdulatot.</translation>
-    </message>
-    <message>
         <source>Hide this tip (Help › Show First-Start Tip brings it back)</source>
         <translation>A tipp elrejtése (a Súgó › Kezdő tipp megjelenítése visszahozza)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;New to CueLab?&lt;/b&gt; Open a lesson from &lt;i&gt;File › Examples&lt;/i&gt;. &lt;b&gt;Space&lt;/b&gt; plays the shot, &lt;b&gt;←/→&lt;/b&gt; step a frame, &lt;b&gt;Shift+←/→&lt;/b&gt; jump to the next event; click an event in &lt;i&gt;Events&lt;/i&gt; to read its mathematics. Drag a ball to move it; every edit can be undone (&lt;b&gt;Ctrl+Z&lt;/b&gt;). &lt;b&gt;F1&lt;/b&gt; opens the user guide; &lt;i&gt;Help › Keyboard and Mouse&lt;/i&gt; lists every shortcut and mouse gesture.</source>
+        <translation>&lt;b&gt;Először használja a CueLabot?&lt;/b&gt; Nyisson meg egy leckét a &lt;i&gt;Fájl › Példák&lt;/i&gt; menüből. A &lt;b&gt;Szóköz&lt;/b&gt; lejátssza az ütést, a &lt;b&gt;←/→&lt;/b&gt; egy képkockát lép, a &lt;b&gt;Shift+←/→&lt;/b&gt; a következő eseményre ugrik; kattintson egy eseményre az &lt;i&gt;Események&lt;/i&gt; panelen, hogy elolvassa a matematikáját. Egy golyót húzással helyezhet át; minden szerkesztés visszavonható (&lt;b&gt;Ctrl+Z&lt;/b&gt;). Az &lt;b&gt;F1&lt;/b&gt; megnyitja a felhasználói útmutatót; a &lt;i&gt;Súgó › Billentyűzet és egér&lt;/i&gt; felsorol minden billentyűparancsot és egérmozdulatot.</translation>
     </message>
 </context>
 <context>
@@ -1725,14 +1780,6 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>&amp;Panelek</translation>
     </message>
     <message>
-        <source>&amp;Reset Layout</source>
-        <translation>Az elrendezés &amp;visszaállítása</translation>
-    </message>
-    <message>
-        <source>Put every panel back where the first start put it, at its default width</source>
-        <translation>Minden panel visszatétele oda, ahová az első indítás tette, alapértelmezett szélességgel</translation>
-    </message>
-    <message>
         <source>&amp;Overlays</source>
         <translation>&amp;Rétegek</translation>
     </message>
@@ -1767,10 +1814,6 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>Pat&amp;hs Of</source>
         <translation>&amp;Pályák mutatása</translation>
-    </message>
-    <message>
-        <source>Whose paths, trails and event markers are drawn (busy shots read better with one ball)</source>
-        <translation>Kiknek a pályái, nyomvonalai és eseményjelölői látszanak (zsúfolt ütésnél egy golyóval áttekinthetőbb)</translation>
     </message>
     <message>
         <source>&amp;Labels Of</source>
@@ -1851,6 +1894,34 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>Undo History</source>
         <translation>Visszavonási előzmények</translation>
+    </message>
+    <message>
+        <source>A busy shot: the paths and event times of the selected ball %1 only (View › Paths Of, Labels Of)</source>
+        <translation>Zsúfolt ütés: csak a kijelölt %1 golyó pályái és eseményidői látszanak (Nézet › Pályák, Feliratok)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Visszavonás</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Újra</translation>
+    </message>
+    <message>
+        <source>La&amp;youts</source>
+        <translation>E&amp;lrendezések</translation>
+    </message>
+    <message>
+        <source>Whose paths, trails, event markers and comparison ghosts are drawn (busy shots read better with one ball)</source>
+        <translation>Kiknek a pályái, nyomvonalai, eseményjelölői és összehasonlító szellemgolyói látszanak (zsúfolt ütésnél egy golyóval áttekinthetőbb)</translation>
+    </message>
+    <message>
+        <source>CueLab &amp;User Guide</source>
+        <translation>A CueLab &amp;felhasználói útmutatója</translation>
+    </message>
+    <message>
+        <source>How to use the window, step by step (the guide bundled with this version)</source>
+        <translation>Az ablak használata lépésről lépésre (az ehhez a változathoz mellékelt útmutató)</translation>
     </message>
 </context>
 <context>
@@ -2930,24 +3001,8 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>f(τ), t₀ = %1 s-tól</translation>
     </message>
     <message>
-        <source>f(τ), m</source>
-        <translation>f(τ), m</translation>
-    </message>
-    <message>
-        <source>f(τ), m²</source>
-        <translation>f(τ), m²</translation>
-    </message>
-    <message>
         <source>f = 0</source>
         <translation>f = 0</translation>
-    </message>
-    <message>
-        <source>roots</source>
-        <translation>gyökök</translation>
-    </message>
-    <message>
-        <source>τ* = %1 s (the event)</source>
-        <translation>τ* = %1 s (az esemény)</translation>
     </message>
     <message>
         <source>τ (s)</source>
@@ -2960,6 +3015,18 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>f (m²)</source>
         <translation>f (m²)</translation>
+    </message>
+    <message>
+        <source>f(τ)</source>
+        <translation>f(τ)</translation>
+    </message>
+    <message>
+        <source>other roots</source>
+        <translation>további gyökök</translation>
+    </message>
+    <message>
+        <source>τ* = %1 s</source>
+        <translation>τ* = %1 s</translation>
     </message>
 </context>
 <context>
@@ -3087,6 +3154,21 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>Opened %1</source>
         <translation>Megnyitva: %1</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::UserGuide</name>
+    <message>
+        <source>CueLab User Guide</source>
+        <translation>A CueLab felhasználói útmutatója</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Vissza</translation>
+    </message>
+    <message>
+        <source>&amp;Contents</source>
+        <translation>&amp;Tartalom</translation>
     </message>
 </context>
 </TS>

@@ -5,7 +5,11 @@
 #include "MainWindow.h"
 #include "ShortcutsDialog.h"
 
+#include "editor/BallsPanel.h"
+#include "editor/Document.h"
 #include "editor/Selection.h"
+#include "editor/ShotPanel.h"
+#include "view/TableView.h"
 
 #include <QAbstractButton>
 #include <QAction>
@@ -13,12 +17,43 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QGuiApplication>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
+#include <QTableWidget>
 #include <QtTest>
 
 using namespace cuelab;
 
 namespace {
+
+// The share of the window's area the table view has.
+double tableShare(const MainWindow& w)
+{
+    const QWidget* view = w.tableView();
+    return static_cast<double>(view->width()) * view->height() / (static_cast<double>(w.width()) * w.height());
+}
+
+QString describe(const MainWindow& w)
+{
+    QString text = QStringLiteral("window %1x%2, table view %3x%4;").arg(w.width()).arg(w.height())
+                       .arg(w.tableView()->width()).arg(w.tableView()->height());
+    for (const QDockWidget* d : w.panels())
+        if (d->isVisible()) text += QStringLiteral(" %1 %2x%3").arg(d->objectName()).arg(d->width()).arg(d->height());
+    return text;
+}
+
+// The docks shown in front (not closed, not behind another tab) after the layout settled.
+QStringList frontDocks(const MainWindow& w)
+{
+    QStringList names;
+    for (const QDockWidget* d : w.panels())
+        if (d->isVisible() && !d->visibleRegion().isEmpty()) names << d->objectName();
+    names.sort();
+    return names;
+}
 
 QMenu* topMenu(QMenuBar* bar, const QString& title)
 {
@@ -96,7 +131,7 @@ private slots:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         QTest::qWait(100);
-        QDockWidget* balls = window.findChild<QDockWidget*>(QStringLiteral("BallsDock"));
+        QDockWidget* balls = window.findChild<QDockWidget*>(QStringLiteral("ShotDock"));  // in front of its stack
         QDockWidget* events = window.findChild<QDockWidget*>(QStringLiteral("EventsDock"));
         QVERIFY(balls && events);
         const int ballsBefore = balls->width();
@@ -133,6 +168,161 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.width() == 1200, 3000);
         QTRY_VERIFY2_WITH_TIMEOUT(std::abs(balls->width() - share * 1200) <= 0.05 * share * 1200,
                                   qPrintable(QString::number(balls->width())), 3000);
+    }
+
+    // The first start takes the screen's available area: all of it (maximised) up to 1920 px wide,
+    // 80 % of it, centred, beyond.
+    void firstStartGeometry_data()
+    {
+        QTest::addColumn<QRect>("available");
+        QTest::addColumn<QRect>("expected");
+        QTest::addColumn<bool>("maximised");
+        QTest::newRow("800x600") << QRect(0, 0, 800, 600) << QRect(0, 0, 800, 600) << true;
+        QTest::newRow("1280x800 under a top panel") << QRect(0, 28, 1280, 772) << QRect(0, 28, 1280, 772) << true;
+        QTest::newRow("1920x1200") << QRect(0, 0, 1920, 1200) << QRect(0, 0, 1920, 1200) << true;
+        // 2560 * 0.8 = 2048, 1440 * 0.8 = 1152; centred: (2560 - 2048) / 2 = 256, (1440 - 1152) / 2 = 144.
+        QTest::newRow("2560x1440") << QRect(0, 0, 2560, 1440) << QRect(256, 144, 2048, 1152) << false;
+        // A second screen to the right: 3840 * 0.8 = 3072 at 1920 + 384, 2160 * 0.8 = 1728 at 216.
+        QTest::newRow("3840x2160 right of another") << QRect(1920, 0, 3840, 2160) << QRect(2304, 216, 3072, 1728) << false;
+    }
+
+    void firstStartGeometry()
+    {
+        QFETCH(QRect, available);
+        QFETCH(QRect, expected);
+        QFETCH(bool, maximised);
+        QCOMPARE(MainWindow::firstStartGeometry(available), expected);
+        QCOMPARE(MainWindow::maximisesOnFirstStart(available), maximised);
+    }
+
+    void firstStartTakesTheScreen()
+    {
+        QSettings().clear();
+        MainWindow window;
+        const QRect available = QGuiApplication::primaryScreen()->availableGeometry();
+        QCOMPARE(window.geometry(), MainWindow::firstStartGeometry(available));
+        // Plots and Compare wait until asked for; the side columns hold the rest.
+        QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("PlotsDock"))->isHidden());
+        QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("CompareDock"))->isHidden());
+    }
+
+    // The table first: at the first start the table view keeps at least half of the window's area
+    // at 1280x800 and above, a third at 800x600, with every side dock still usable.
+    void tableViewKeepsItsShare_data()
+    {
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<double>("least");
+        QTest::newRow("800x600") << QSize(800, 600) << 1.0 / 3.0;
+        QTest::newRow("1280x800") << QSize(1280, 800) << 0.5;
+        QTest::newRow("1600x1000") << QSize(1600, 1000) << 0.5;
+        QTest::newRow("2560x1440") << QSize(2560, 1440) << 0.5;
+    }
+
+    void tableViewKeepsItsShare()
+    {
+        QFETCH(QSize, size);
+        QFETCH(double, least);
+        QSettings().clear();
+        MainWindow window;
+        window.resize(size);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTRY_COMPARE_WITH_TIMEOUT(window.size(), size, 3000);
+        QTRY_VERIFY2_WITH_TIMEOUT(tableShare(window) >= least, qPrintable(describe(window)), 3000);
+        for (const char* name : {"ShotDock", "EventsDock", "ExplainDock"}) {
+            const QDockWidget* d = window.findChild<QDockWidget*>(QLatin1String(name));
+            QVERIFY2(d->isVisible() && d->width() >= DockLayout::kMinimumDockWidth, qPrintable(describe(window)));
+        }
+        QVERIFY2(frontDocks(window).contains(QStringLiteral("ShotDock")), qPrintable(describe(window)));
+        // The side columns run the whole height beside the view (the window's corners are theirs).
+        const QDockWidget* shot = window.findChild<QDockWidget*>(QStringLiteral("ShotDock"));
+        QVERIFY2(shot->height() >= window.tableView()->height(), qPrintable(describe(window)));
+    }
+
+    // View > Layouts: each named layout shows its panels in front, and only those; Reset Layout
+    // brings the first start's back.
+    void layoutsShowTheirPanels_data()
+    {
+        QTest::addColumn<int>("arrangement");
+        QTest::addColumn<QStringList>("front");
+        QTest::newRow("Teach") << int(Arrangement::Teach) << QStringList{"ExplainDock", "LessonDock", "PlotsDock"};
+        QTest::newRow("Coach") << int(Arrangement::Coach) << QStringList{"AnalysisDock", "OutcomeDock", "ShotDock"};
+        QTest::newRow("Edit") << int(Arrangement::Edit) << QStringList{"BallsDock", "EventsDock", "PhysicsDock"};
+        QTest::newRow("Reset Layout") << int(Arrangement::Default) << QStringList{"EventsDock", "ExplainDock", "ShotDock"};
+    }
+
+    void layoutsShowTheirPanels()
+    {
+        QFETCH(int, arrangement);
+        QFETCH(QStringList, front);
+        QSettings().clear();
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.arrange(Arrangement::Teach);  // from another layout than the one asked for
+        window.arrange(Arrangement::Coach);
+        window.arrange(static_cast<Arrangement>(arrangement));
+        QTRY_COMPARE_WITH_TIMEOUT(frontDocks(window), front, 2000);
+        // Only those: every other dock is closed or behind a tab of the default layout's stacks.
+        const ArrangementSpec spec = arrangementSpec(static_cast<Arrangement>(arrangement));
+        QStringList shown;
+        for (const QList<DockStack>* column : {&spec.left, &spec.right, &spec.bottom})
+            for (const DockStack& stack : *column) shown += stack.shown;
+        for (const QDockWidget* d : window.panels())
+            QCOMPARE(!d->isHidden(), shown.contains(d->objectName()));
+        // The table view keeps room beside them (a third at least; Teach also has Plots below it).
+        QTRY_VERIFY2_WITH_TIMEOUT(tableShare(window) >= 1.0 / 3.0, qPrintable(describe(window)), 3000);
+        // The menu has them all.
+        auto* layouts = window.findChild<QMenu*>(QStringLiteral("layoutsMenu"));
+        QVERIFY(layouts);
+        for (const char* name : {"teachLayoutAction", "coachLayoutAction", "editLayoutAction", "resetLayoutAction"})
+            QVERIFY2(layouts->actions().contains(window.findChild<QAction*>(QLatin1String(name))), name);
+    }
+
+    // Readable at the default size: Coach's Shot dock shows the whole tip picker without scrolling,
+    // and Balls lists every ball of a 16-ball rack, at 1280x800.
+    void panelsReadableAtDefaultSize()
+    {
+        QSettings().clear();
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openExample(QStringLiteral(":/examples/8-ball-break.json")));
+        QCOMPARE(window.document()->setup().balls.size(), std::size_t(16));
+        window.arrange(Arrangement::Coach);
+        const auto scroller = [](QWidget* panel) { return qobject_cast<QScrollArea*>(panel->parentWidget()->parentWidget()); };
+        QScrollArea* shot = scroller(window.shotPanel());
+        QVERIFY(shot);
+        QTRY_VERIFY2_WITH_TIMEOUT(shot->isVisible() && shot->verticalScrollBar()->maximum() == 0,
+                                  qPrintable(describe(window)), 3000);
+        for (const Arrangement a : {Arrangement::Edit, Arrangement::Default}) {
+            window.arrange(a);
+            window.findChild<QDockWidget*>(QStringLiteral("BallsDock"))->raise();
+            QTableWidget* table = window.ballsPanel()->table();
+            QCOMPARE(table->rowCount(), 16);
+            QTRY_VERIFY2_WITH_TIMEOUT(table->isVisible() &&
+                                          table->rowViewportPosition(15) + table->rowHeight(15) <= table->viewport()->height(),
+                                      qPrintable(describe(window) + QStringLiteral(" balls viewport %1").arg(table->viewport()->height())),
+                                      3000);
+        }
+    }
+
+    // Compare opens under the table view, wide and tall enough for its chart.
+    void compareOpensWideEnough()
+    {
+        QSettings().clear();
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QDockWidget* compare = window.findChild<QDockWidget*>(QStringLiteral("CompareDock"));
+        QVERIFY(compare->isHidden());
+        compare->show();
+        QTRY_VERIFY2_WITH_TIMEOUT(compare->height() >= 0.8 * window.dockLayout()->bottomShare() * window.height(),
+                                  qPrintable(describe(window)), 3000);
+        QVERIFY2(compare->width() >= 800, qPrintable(describe(window)));
     }
 
     void resetLayoutBringsPanelsBack()

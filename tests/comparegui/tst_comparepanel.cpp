@@ -55,6 +55,7 @@ private slots:
     void staleResultsAreDropped();
     void runnerCancelsTheRunInProgress();
     void ghostsInTheWindow();
+    void chartUnitFollowsTheError();
 
 private:
     QTemporaryDir settingsDir_;
@@ -87,6 +88,7 @@ void TestComparePanel::runsAndShows()
     QCOMPARE(layer.ghosts[0].colour, engineColour(EngineKind::Box2D));
     QCOMPARE(layer.ghosts[0].label, QStringLiteral("box2d"));
     QVERIFY(layer.ghosts[0].times.size() > 10);
+    for (std::size_t i = 0; i < layer.ghosts.size(); ++i) QCOMPARE(layer.ghosts[i].ball, int(i));  // View > Paths Of finds them
     Vec2 at;
     QVERIFY(ghostPositionAt(layer.ghosts[0], 0.0, &at));
     QVERIFY((at - c->run.samples[0][0].position).norm() < 1e-12);
@@ -167,6 +169,24 @@ void TestComparePanel::runnerCancelsTheRunInProgress()
     QCOMPARE(finished.count(), 1);
     QCOMPARE(int(runner.result()->run.settings.engine), int(EngineKind::Box2D));
     QCOMPARE(runner.result()->run.ids.size(), std::size_t(2));
+}
+
+// The chart's errors in millimetres, or in metres once one passes a metre: 1.5 m reads 1.5 on an
+// axis in metres, not 1500 (or "1.5e+03") millimetres.
+void TestComparePanel::chartUnitFollowsTheError()
+{
+    CompareChart chart;
+    compare::Comparison c;
+    c.run.ids = {"cue"};
+    c.divergence.times = {0.0, 1.0};
+    c.divergence.error = {{0.0, 1.5}};
+    chart.setComparison(c);
+    QCOMPARE(chart.errorAxisTitle(), QStringLiteral("error (m)"));
+    QCOMPARE(chart.ballSeries()[0]->at(1).y(), 1.5);
+    c.divergence.error = {{0.0, 0.0015}};
+    chart.setComparison(c);
+    QCOMPARE(chart.errorAxisTitle(), QStringLiteral("error (mm)"));
+    QCOMPARE(chart.ballSeries()[0]->at(1).y(), 1.5);
 }
 
 void TestComparePanel::ghostsInTheWindow()

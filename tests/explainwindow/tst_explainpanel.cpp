@@ -10,6 +10,7 @@
 #include "editor/Playback.h"
 #include "editor/Selection.h"
 #include "editor/TransportBar.h"
+#include "explain/ConservationWidget.h"
 #include "explain/EventArrows.h"
 #include "explain/ExplainExport.h"
 #include "explain/ExplainPanel.h"
@@ -26,6 +27,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QPlainTextEdit>
+#include <QScrollArea>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -94,6 +96,53 @@ private slots:
         QCOMPARE(panel_->shownEvent(), roll);
         QVERIFY(!panel_->explanation()->toi);
         QCOMPARE(chart->markedRoots(), 0);
+    }
+
+    // ΔE rounded to what matters: an elastic collision's rounding error reads 0 J.
+    void energyChangeRounded_data()
+    {
+        QTest::addColumn<double>("before");
+        QTest::addColumn<double>("after");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("elastic, rounding") << 0.34 << 0.34 - 1.11e-16 << "ΔE = 0 J (conserved)";
+        QTest::newRow("exactly equal") << 0.5 << 0.5 << "ΔE = 0 J (conserved)";
+        // 0.45 - 0.5 = -0.05 J of 0.5 J: -10 %.
+        QTest::newRow("a tenth lost") << 0.5 << 0.45 << "ΔE = -0.05 J (-10 %)";
+        // 1.99 - 2 = -0.01 J of 2 J: -0.5 %.
+        QTest::newRow("half a percent") << 2.0 << 1.99 << "ΔE = -0.01 J (-0.5 %)";
+        QTest::newRow("from rest") << 0.0 << 0.2 << "ΔE = 0.2 J";
+    }
+
+    void energyChangeRounded()
+    {
+        QFETCH(double, before);
+        QFETCH(double, after);
+        QFETCH(QString, expected);
+        QCOMPARE(ConservationWidget::energyChange(before, after), expected);
+    }
+
+    // The figures reflow with the dock: beside each other when wide, the chart above the momenta
+    // and energy when narrow (1024-pixel window: a dock of 300 px).
+    void figuresReflow()
+    {
+        // In a scroll area, as in its dock.
+        QScrollArea area;
+        auto* panel = new ExplainPanel(window_->document(), window_->selection(), window_->playback());
+        area.setWidget(panel);
+        area.setWidgetResizable(true);
+        area.resize(1000, 700);
+        area.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&area));
+        const auto r = window_->document()->result();
+        panel->showEvent(firstEvent(*r, EventKind::BallBall));
+        QTRY_VERIFY(panel->figuresSideBySide());
+        area.resize(300, 900);
+        QTRY_VERIFY(!panel->figuresSideBySide());
+        auto* conservation = panel->findChild<ConservationWidget*>();
+        QVERIFY(conservation);
+        QTRY_VERIFY2(conservation->stacked(), qPrintable(QStringLiteral("panel %1 wide, figure %2").arg(panel->width()).arg(conservation->width())));
+        QVERIFY(conservation->height() >= 380);
+        QVERIFY2(panel->width() <= area.viewport()->width(), "no sideways scrolling");
     }
 
     void followsTransport()
@@ -210,7 +259,10 @@ private slots:
             const Vec3 contact(ev.contactPoint.x(), ev.contactPoint.y(), z);
             QCOMPARE(layer.markers.size(), std::size_t(1));
             QVERIFY(near(layer.markers[0].position, contact));
-            QVERIFY(layer.markers[0].label.contains(QStringLiteral("1 N·s = 1 m")));
+            // The marker says what it marks; the scale is the layer's legend, apart from every label.
+            QCOMPARE(layer.markers[0].label, QStringLiteral("contact"));
+            QVERIFY(layer.legend.contains(QStringLiteral("1 N·s = 1 m")));
+            for (const LayerArrow& a : layer.arrows) QVERIFY2(!a.label.contains(QStringLiteral(" = 1 m")), qPrintable(a.label));
             QVERIFY(layer.arrows.size() >= 3);
             const LayerArrow& n = layer.arrows.back();
             QCOMPARE(n.label, QStringLiteral("n"));
@@ -245,6 +297,13 @@ private slots:
                 }
             }
             QCOMPARE(layer.arrows.size(), next + 2);
+            // Every momentum arrow has its own colour (each ball its p and p′), none the impulse's.
+            for (std::size_t a = 0; a < next; ++a) {
+                QVERIFY(layer.arrows[a].colour != layer.arrows[next].colour);
+                for (std::size_t b = a + 1; b < next; ++b)
+                    QVERIFY2(layer.arrows[a].colour != layer.arrows[b].colour,
+                             qPrintable(layer.arrows[a].label + QStringLiteral(" / ") + layer.arrows[b].label));
+            }
             // The impulse is the first ball's change of momentum: on screen, p′ = p + J.
             const Ball& first = r.balls[std::size_t(ev.balls[0])];
             const Vec2 change = first.mass * (ev.after[0].velocity - ev.before[0].velocity);

@@ -5,12 +5,14 @@
 
 #include "SetupFile.h"
 #include "view/LabelLayout.h"
+#include "view/OverlayLabels.h"
 #include "view/OrbitCamera.h"
 #include "view/SceneFraming.h"
 #include "view/Screenshot.h"
 #include "view/TableView.h"
 #include "view/ViewLayer.h"
 
+#include <QFile>
 #include <QtTest>
 
 #include <cmath>
@@ -78,6 +80,8 @@ private slots:
     void ghostHiddenOutsideItsSamples();
     void viewKeepsLayersByName();
     void labelsAvoidEachOtherAndStayInside();
+    void ghostsObeyPathsOf();
+    void labelsGoAroundBallsAndKeepTheirScope();
 };
 
 void TestViewLayers::ghostInterpolation()
@@ -228,6 +232,84 @@ void TestViewLayers::labelsAvoidEachOtherAndStayInside()
     const auto crowded = layoutLabels(crowd, viewBox);
     QVERIFY(crowded[crowd.size() - 2].has_value());
     QVERIFY(!crowded.back().has_value());
+}
+
+// View > Paths Of decides the ghosts too: all balls show a ghost standing for ball 0, Selected shows
+// it only while ball 0 is selected (none with no selection), None never.
+void TestViewLayers::ghostsObeyPathsOf()
+{
+    const ViewScene scene = restingScene();
+    const QSize size(800, 500);
+    ViewLayer layer;
+    GhostTrack g = track();
+    g.radius = 0.06;
+    g.showPath = false;
+    g.ball = 0;
+    layer.ghosts.push_back(g);
+    const QPoint at = pixelOf(scene, size, Vec3(1.5, 1.0 - 0.03, 0.06));  // the ghost at t = 0.5 s
+    struct Row {
+        BallScope scope;
+        int selected;
+        bool shown;
+    };
+    for (const Row& row : {Row{BallScope::All, -1, true}, Row{BallScope::Selected, -1, false}, Row{BallScope::Selected, 0, true},
+                           Row{BallScope::Selected, 1, false}, Row{BallScope::None, 0, false}}) {
+        SceneImageRenderer renderer;
+        renderer.setLayer(QStringLiteral("compare"), layer);
+        renderer.setPathScope(row.scope);
+        renderer.setSelectedBall(row.selected);
+        QImage image;
+        QString error;
+        QVERIFY2(renderer.render(scene, 0.5, CameraPreset::Top, size, &image, &error), qPrintable(error));
+        QCOMPARE(magentaish(image.pixelColor(at)), row.shown);
+        QCOMPARE(ghostInScope(g, row.scope, row.selected), row.shown);
+    }
+}
+
+// The labels' plan on the 8-ball break at its start, from the top at 800x500: no label covers a ball, one label
+// per instant, the scale keys apart from the labels; Labels Of: Selected Ball Only with no ball
+// selected labels nothing.
+void TestViewLayers::labelsGoAroundBallsAndKeepTheirScope()
+{
+    QFile file(QStringLiteral(":/examples/8-ball-break.json"));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QString error;
+    const auto setup = io::parseSetup(file.readAll(), QStringLiteral("8-ball-break.json"), &error);
+    QVERIFY2(setup, qPrintable(error));
+    ViewScene scene;
+    scene.result = std::make_shared<SimulationResult>(simulate(*setup));
+    const QSize size(800, 500);
+    const float aspect = 800.0f / 500.0f;
+    OrbitCamera camera;
+    camera.setPose(OrbitCamera::presetPose(CameraPreset::Top, presetFrameFor(scene, aspect)));
+    ViewLayers layers;
+    ViewLayer arrows;
+    arrows.arrows.push_back({Vec3(0.5, 0.3, 0.06), Vec3(1.0, 0.5, 0.06), QColor(0, 255, 255), 3.0f, QStringLiteral("p cue")});
+    arrows.legend = QStringLiteral("Arrows: 1 N·s = 1 m");
+    layers[QStringLiteral("arrows")] = arrows;
+    LabelFrame frame{camera.projection(aspect) * camera.viewMatrix(), size, 0.0, defaultOverlays(), -1, -1, BallScope::All, &layers};
+    frame.overlays.set(static_cast<std::size_t>(Overlay::EventMarkers));
+    frame.overlays.set(static_cast<std::size_t>(Overlay::Velocities));
+    const OverlayLabelPlan plan = planOverlayLabels(scene, frame);
+    QCOMPARE(plan.balls.size(), std::size_t(16));
+    QVERIFY(plan.labels.size() >= 3);
+    QStringList texts;
+    for (const OverlayLabelPlan::Item& l : plan.labels) {
+        for (const QRectF& ball : plan.balls) QVERIFY2(!l.box.intersects(ball), qPrintable(l.text));
+        for (const OverlayLabelPlan::Item& k : plan.keys) QVERIFY2(!l.box.intersects(k.box), qPrintable(l.text + QStringLiteral(" / ") + k.text));
+        QVERIFY2(!texts.contains(l.text), qPrintable(l.text + QStringLiteral(" twice")));
+        texts << l.text;
+    }
+    QVERIFY(texts.contains(QStringLiteral("p cue")));
+    bool scale = false;
+    for (const OverlayLabelPlan::Item& k : plan.keys) scale = scale || k.text == arrows.legend;
+    QVERIFY(scale);
+    // Selected Ball Only with no ball selected: no event time; with the cue ball selected, some.
+    frame.labelScope = BallScope::Selected;
+    frame.layers = nullptr;
+    QVERIFY(planOverlayLabels(scene, frame).labels.empty());
+    frame.selectedBall = 0;
+    QVERIFY(!planOverlayLabels(scene, frame).labels.empty());
 }
 
 QTEST_MAIN(TestViewLayers)

@@ -34,7 +34,7 @@ CompareChart::CompareChart(QWidget* parent)
     setRenderHint(QPainter::Antialiasing);
     setMinimumHeight(220);
     setToolTip(tr("How far each ball of the chosen engine is from the same ball in the exact simulation, "
-                  "in millimetres, at every sample time; the dashed line is the current time"));
+                  "in millimetres (metres when it passes a metre), at every sample time; the dashed line is the current time"));
     clear();
 }
 
@@ -54,6 +54,15 @@ void CompareChart::setComparison(const compare::Comparison& comparison)
 {
     clear();
     const compare::Divergence& d = comparison.divergence;
+    // Millimetres, or metres once an error passes a metre (a run that sends a ball elsewhere):
+    // "1.5 m", never "1.5e+03 mm".
+    double largest = 0.0;
+    for (const auto& errors : d.error)
+        for (double e : errors) largest = std::max(largest, e);
+    const bool inMetres = largest >= 1.0;
+    const double scale = inMetres ? 1.0 : 1000.0;
+    y_->setTitleText(inMetres ? tr("error (m)") : tr("error (mm)"));
+    y_->setLabelFormat(inMetres ? QStringLiteral("%.2f") : QStringLiteral("%.3g"));
     double top = 0.0;
     for (std::size_t i = 0; i < d.error.size(); ++i) {
         auto* s = new QLineSeries;
@@ -61,8 +70,8 @@ void CompareChart::setComparison(const compare::Comparison& comparison)
         QList<QPointF> points;
         points.reserve(static_cast<qsizetype>(d.times.size()));
         for (std::size_t k = 0; k < d.times.size(); ++k) {
-            points.append(QPointF(d.times[k], 1000.0 * d.error[i][k]));
-            top = std::max(top, 1000.0 * d.error[i][k]);
+            points.append(QPointF(d.times[k], scale * d.error[i][k]));
+            top = std::max(top, scale * d.error[i][k]);
         }
         s->replace(points);
         chart()->addSeries(s);
@@ -75,6 +84,8 @@ void CompareChart::setComparison(const compare::Comparison& comparison)
     y_->applyNiceNumbers();
     placeCursor();
 }
+
+QString CompareChart::errorAxisTitle() const { return y_->titleText(); }
 
 void CompareChart::setTime(double t)
 {

@@ -23,6 +23,7 @@ public:
     double cursorTime() const { return cursorTime_; }
     QLineSeries* cursor() const { return cursor_; }
     QList<QLineSeries*> ballSeries() const { return balls_; }
+    QString errorAxisTitle() const;  // "error (mm)", or "error (m)" once an error passes a metre
 
 private:
     void placeCursor();

@@ -20,6 +20,7 @@ ViewLayer ghostLayer(const compare::EngineRun& run)
         GhostTrack& g = layer.ghosts.emplace_back();
         g.radius = run.radii[i];
         g.colour = colour;
+        g.ball = static_cast<int>(i);  // the runs keep the setup's ball order
         if (i == 0) g.label = QString::fromUtf8(compare::toString(run.settings.engine).data());
         for (std::size_t k = 0; k < run.samples.size(); ++k) {
             const compare::BallSample& s = run.samples[k][i];

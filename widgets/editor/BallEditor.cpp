@@ -73,6 +73,7 @@ QString undoText(BallProperty p, const QString& id)
 
 BallEditor::BallEditor(Document* document, QWidget* parent) : QWidget(parent), document_(document)
 {
+    setProperty("saysRefusals", true);  // the window's refusal note leaves its fields to it
     box_ = new QGroupBox(this);
     id_ = new QLineEdit(box_);
     id_->setToolTip(tr("The ball's id: unique, not empty; the shot, the events and the command line name the ball by it"));

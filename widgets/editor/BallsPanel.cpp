@@ -68,6 +68,8 @@ BallsPanel::BallsPanel(Document* document, QWidget* parent) : QWidget(parent), d
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
     table_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     table_->verticalHeader()->hide();
+    // Compact rows: a full rack (16 balls) shows whole above the editor in a dock of a 800-pixel-high window.
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
     // Columns are sized when the balls change, not on every frame of playback (ResizeToContents
     // would measure every row each time a speed changes).
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);

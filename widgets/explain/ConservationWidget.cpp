@@ -1,5 +1,6 @@
 #include "ConservationWidget.h"
 
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
 
@@ -37,7 +38,7 @@ void arrow(QPainter& p, const QPointF& from, const QPointF& to, const QColor& co
 
 ConservationWidget::ConservationWidget(QWidget* parent) : QWidget(parent)
 {
-    setMinimumSize(240, 160);
+    setMinimumSize(240, 200);
     setToolTip(tr("Left: each ball's momentum m·v (N s) drawn tip to tail, before and after, with their total "
                   "(dashed). Right: kinetic energy (J) before and after, translation (solid) and rotation "
                   "(light)."));
@@ -62,16 +63,38 @@ void ConservationWidget::paintEvent(QPaintEvent*)
         return;
     }
     const QRectF all = QRectF(rect()).adjusted(4, 4, -4, -4);
-    const double split = all.width() * 0.62;
-    paintMomenta(p, QRectF(all.left(), all.top(), split - 4, all.height()));
-    paintEnergy(p, QRectF(all.left() + split + 4, all.top(), all.width() - split - 4, all.height()));
+    if (stacked()) {
+        // Narrow (a dock of a small window): momentum above, energy below, each the whole width.
+        const double split = all.height() * 0.58;
+        paintMomenta(p, QRectF(all.left(), all.top(), all.width(), split - 6));
+        paintEnergy(p, QRectF(all.left(), all.top() + split + 6, all.width(), all.height() - split - 6));
+    } else {
+        const double split = all.width() * 0.6;
+        paintMomenta(p, QRectF(all.left(), all.top(), split - 6, all.height()));
+        paintEnergy(p, QRectF(all.left() + split + 6, all.top(), all.width() - split - 6, all.height()));
+    }
+}
+
+QString ConservationWidget::energyChange(double before, double after)
+{
+    const double change = after - before;
+    // Round to what matters: a change below a millionth of the energy (a rounding error of the
+    // arithmetic, an elastic collision) is none.
+    if (std::abs(change) <= 1e-6 * std::max(std::abs(before), std::abs(after)) || std::abs(change) < 1e-12)
+        return tr("ΔE = 0 J (conserved)");
+    if (before <= 0.0) return tr("ΔE = %1 J").arg(change, 0, 'g', 3);
+    const double percent = 100.0 * change / before;
+    return tr("ΔE = %1 J (%2 %)").arg(change, 0, 'g', 3).arg(percent, 0, 'g', std::abs(percent) >= 1.0 ? 3 : 2);
 }
 
 void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
 {
+    const QFontMetricsF metrics(p.font());
+    const double line = metrics.height();
     p.setPen(palette().color(QPalette::Text));
-    p.drawText(area.adjusted(0, 0, 0, -area.height() + 16), Qt::AlignLeft, tr("Momentum (N s)"));
-    const QRectF body = area.adjusted(0, 18, 0, -14);
+    p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft, tr("Momentum (N s)"));
+    // Below the panels: "before"/"after", |P|, then the key.
+    const QRectF body = area.adjusted(0, line + 4, 0, -(3 * line + 6));
     // Two panels, before and after, one scale for both: the longest chain of arrows fits.
     double longest = 1e-9;
     Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
@@ -90,9 +113,6 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
         const QRectF panel(body.left() + phase * (panelW + 12.0), body.top(), panelW, body.height());
         p.setPen(QPen(palette().color(QPalette::Mid), 1.0));
         p.drawRect(panel);
-        p.setPen(palette().color(QPalette::Text));
-        p.drawText(QRectF(panel.left(), panel.bottom() + 1, panel.width(), 13), Qt::AlignCenter,
-                   phase == 0 ? tr("before") : tr("after"));
         // Centre the chain's bounding box in the panel (y up on the table, down on screen).
         const Vec2 mid = 0.5 * (lo + hi);
         auto toScreen = [&](const Vec2& v) {
@@ -102,8 +122,6 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
         for (std::size_t k = 0; k < bodies_.size(); ++k) {
             const Vec2 pk = phase == 0 ? bodies_[k].momentumBefore() : bodies_[k].momentumAfter();
             arrow(p, toScreen(tip), toScreen(tip + pk), kBodyColours[k % 2]);
-            p.setPen(kBodyColours[k % 2]);
-            p.drawText(toScreen(tip + 0.5 * pk) + QPointF(4, -4), QString::fromStdString(bodies_[k].id));
             tip += pk;
         }
         if (bodies_.size() > 1) arrow(p, toScreen(Vec2::Zero()), toScreen(tip), palette().color(QPalette::Text), Qt::DashLine);
@@ -116,25 +134,47 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
             arrow(p, toScreen(Vec2::Zero()), toScreen(before), QColor(150, 150, 150), Qt::DotLine);
         }
         p.setPen(palette().color(QPalette::Text));
-        p.drawText(QRectF(panel.left() + 3, panel.top() + 2, panel.width() - 6, 14), Qt::AlignLeft,
-                   QStringLiteral("|P| = %1").arg(tip.norm(), 0, 'g', 4));
+        const QRectF under(panel.left() - 4, panel.bottom() + 2, panel.width() + 8, line);
+        p.drawText(under, Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
+        p.drawText(under.translated(0, line), Qt::AlignCenter, QStringLiteral("|P| = %1").arg(tip.norm(), 0, 'g', 3));
+    }
+    // The key: each ball's colour, the total dashed.
+    double x = area.left();
+    const double y = area.bottom() - line;
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const QString name = QString::fromStdString(bodies_[k].id);
+        p.setPen(QPen(kBodyColours[k % 2], 2.0));
+        p.drawLine(QPointF(x, y + line / 2), QPointF(x + 14, y + line / 2));
+        p.setPen(palette().color(QPalette::Text));
+        p.drawText(QPointF(x + 17, y + metrics.ascent()), name);
+        x += 17 + metrics.horizontalAdvance(name) + 10;
+    }
+    if (bodies_.size() > 1) {
+        p.setPen(QPen(palette().color(QPalette::Text), 1.5, Qt::DashLine));
+        p.drawLine(QPointF(x, y + line / 2), QPointF(x + 14, y + line / 2));
+        p.drawText(QPointF(x + 17, y + metrics.ascent()), tr("total"));
     }
 }
 
 void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area) const
 {
+    const QFontMetricsF metrics(p.font());
+    const double line = metrics.height();
     p.setPen(palette().color(QPalette::Text));
-    p.drawText(area.adjusted(0, 0, 0, -area.height() + 16), Qt::AlignLeft, tr("Energy (J)"));
-    const QRectF body = area.adjusted(0, 18, 0, -28);
+    p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft, tr("Energy (J)"));
+    // Rows: title, the totals, the bars, "before"/"after", the key (two lines), ΔE.
+    const QRectF values(area.left(), area.top() + line + 2, area.width(), line);
+    const QRectF body(area.left(), values.bottom() + 2, area.width(), std::max(10.0, area.height() - 6 * line - 10));
     double totals[2] = {0.0, 0.0};
     for (const explain::Body& b : bodies_) {
         totals[0] += b.translationBefore + b.rotationBefore;
         totals[1] += b.translationAfter + b.rotationAfter;
     }
     const double top = std::max({totals[0], totals[1], 1e-12});
-    const double barW = body.width() / 2.0 - 8.0;
+    const double barW = std::min(60.0, body.width() / 2.0 - 8.0);
+    const double left = body.center().x() - barW - 4.0;
     for (int phase = 0; phase < 2; ++phase) {
-        const double x = body.left() + 4.0 + phase * (barW + 8.0);
+        const double x = left + phase * (barW + 8.0);
         double y = body.bottom();
         for (std::size_t k = 0; k < bodies_.size(); ++k) {
             const explain::Body& b = bodies_[k];
@@ -149,13 +189,25 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area) const
             }
         }
         p.setPen(palette().color(QPalette::Text));
-        p.drawText(QRectF(x - 4, body.bottom() + 1, barW + 8, 13), Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
-        p.drawText(QRectF(x - 8, y - 14, barW + 16, 13), Qt::AlignCenter, QString::number(totals[phase], 'g', 4));
+        p.drawText(QRectF(x - 6, body.bottom() + 1, barW + 12, line), Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
+        // The total in its own row above the bars: never over the title or a bar.
+        p.drawText(QRectF(x - 10, values.top(), barW + 20, line), Qt::AlignCenter, QString::number(totals[phase], 'g', 3));
     }
-    const double change = totals[1] - totals[0];
-    p.drawText(QRectF(area.left(), area.bottom() - 13, area.width(), 13), Qt::AlignCenter,
-               totals[0] > 0.0 ? tr("ΔE = %1 J (%2 %)").arg(change, 0, 'g', 3).arg(100.0 * change / totals[0], 0, 'f', 1)
-                               : tr("ΔE = %1 J").arg(change, 0, 'g', 3));
+    // The key: each ball's colour; the light part of a bar is rotation.
+    double x = area.left();
+    const double keyY = body.bottom() + line + 3;
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        const QString name = QString::fromStdString(bodies_[k].id);
+        p.fillRect(QRectF(x, keyY + 2, 10, line - 4), kBodyColours[k % 2]);
+        p.setPen(palette().color(QPalette::Text));
+        p.drawText(QPointF(x + 13, keyY + metrics.ascent()), name);
+        x += 13 + metrics.horizontalAdvance(name) + 10;
+    }
+    p.fillRect(QRectF(area.left(), keyY + line + 2, 10, line - 4), kBodyColours[0].lighter(150));
+    p.drawText(QRectF(area.left() + 13, keyY + line, area.width() - 13, line), Qt::AlignLeft,
+               metrics.elidedText(tr("light: rotation"), Qt::ElideRight, area.width() - 13));
+    p.drawText(QRectF(area.left(), area.bottom() - line, area.width(), line), Qt::AlignCenter,
+               energyChange(totals[0], totals[1]));
 }
 
 }  // namespace cuelab

@@ -16,7 +16,14 @@ class ConservationWidget : public QWidget {
 public:
     explicit ConservationWidget(QWidget* parent = nullptr);
     void setExplanation(const explain::Explanation* e);
-    QSize sizeHint() const override { return {320, 200}; }
+    QSize sizeHint() const override { return {320, 240}; }
+
+    // Narrower than kSideBySideWidth, the momenta are drawn above the energy, not beside it.
+    static constexpr int kSideBySideWidth = 440;
+    bool stacked() const { return width() < kSideBySideWidth; }
+    // "ΔE = -0.0123 J (-2.1 %)", rounded to what matters: a change below a millionth of the energy
+    // (rounding in an elastic collision) reads "ΔE = 0 J (conserved)".
+    static QString energyChange(double before, double after);
 
 protected:
     void paintEvent(QPaintEvent* event) override;

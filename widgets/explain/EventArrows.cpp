@@ -37,19 +37,24 @@ ViewLayer eventArrowsLayer(const explain::Explanation& e, const EventArrowColour
     marker.position = contact;
     marker.colour = colours.contact;
     marker.size = 12.0f;
-    marker.label = tr("contact; 1 N·s = %1 m").arg(kArrowMetresPerNewtonSecond);
+    marker.label = tr("contact");
+    layer.legend = tr("Arrows: 1 N·s = %1 m").arg(kArrowMetresPerNewtonSecond);
 
-    for (const explain::Body& b : e.bodies) {
+    for (std::size_t k = 0; k < e.bodies.size(); ++k) {
+        const explain::Body& b = e.bodies[k];
         const QString id = QString::fromStdString(b.id);
+        // Each ball's own pair of colours: the second ball's arrows never look like the first's.
+        const QColor pBefore = k == 0 ? colours.momentumBefore : colours.secondMomentumBefore;
+        const QColor pAfter = k == 0 ? colours.momentumAfter : colours.secondMomentumAfter;
         const Vec3 centre(b.before.position.x(), b.before.position.y(), z);
         const Vec2 before = b.momentumBefore(), after = b.momentumAfter();
         if (kArrowMetresPerNewtonSecond * before.norm() >= kShortestArrow)
             layer.arrows.push_back({centre, centre + kArrowMetresPerNewtonSecond * Vec3(before.x(), before.y(), 0.0),
-                                    colours.momentumBefore, 3.5f,
+                                    pBefore, 3.5f,
                                     tr("p %1 = %2 N·s").arg(id, newtonSeconds(before.norm()))});
         if (kArrowMetresPerNewtonSecond * after.norm() >= kShortestArrow)
             layer.arrows.push_back({centre, centre + kArrowMetresPerNewtonSecond * Vec3(after.x(), after.y(), 0.0),
-                                    colours.momentumAfter, 3.5f,
+                                    pAfter, 3.5f,
                                     tr("p′ %1 = %2 N·s").arg(id, newtonSeconds(after.norm()))});
     }
     // The impulse by its horizontal part (see the header), its vertical part, if any, in the label;

@@ -35,13 +35,16 @@ inline constexpr double kArrowPlaneLift = 0.004;     // m above the tallest ball
 inline const QString kEventArrowsLayer = QStringLiteral("explain-arrows");
 
 // The colours, distinct from Compare's ghosts (magenta, orange, cyan), the velocity arrows (yellow),
-// the aim line (orange) and the ghost-ball construction's normal (red).
+// the aim line (orange) and the ghost-ball construction's normal (red). Each ball of a collision has
+// its own pair: the first ball's p light violet and p′ blue, the second's p pale pink and p′ rose.
 struct EventArrowColours {
     QColor contact{255, 255, 255};
     QColor normal{255, 255, 255};
     QColor impulse{150, 255, 80};
     QColor momentumBefore{195, 150, 255};
     QColor momentumAfter{70, 135, 255};
+    QColor secondMomentumBefore{255, 195, 215};
+    QColor secondMomentumAfter{235, 80, 130};
 };
 
 // z (m) of the plane the arrows of `e` are drawn in: the tallest ball's top plus kArrowPlaneLift.
@@ -50,8 +53,8 @@ double arrowPlaneHeight(const explain::Explanation& e);
 // The layer of a collision (ball-ball, ball-cushion, ball-jaw); an empty layer for any other event
 // (the cue strike, a pocket, a motion transition). In drawing order: per body (in the event's order)
 // its momentum before and after, each left out when shorter than 0.1 mm (a ball at rest); then the
-// impulse on the first ball; last, on top, the normal. markers[0] is the contact point, whose label
-// gives the scale.
+// impulse on the first ball; last, on top, the normal. markers[0] is the contact point ("contact");
+// the scale is the layer's legend, drawn apart from every label.
 ViewLayer eventArrowsLayer(const explain::Explanation& e, const EventArrowColours& colours = {});
 
 }  // namespace cuelab

@@ -30,7 +30,9 @@ ExplainPanel::ExplainPanel(Document* document, Selection* selection, Playback* p
                           "the root that gave the event in red. τ in seconds from t₀."));
     conservation_ = new ConservationWidget(this);
 
-    auto* lower = new QSplitter(Qt::Horizontal, this);
+    auto* lower = figures_ = new QSplitter(Qt::Horizontal, this);
+    lower->setObjectName(QStringLiteral("explainFigures"));
+    lower->setChildrenCollapsible(false);
     lower->addWidget(chart_);
     lower->addWidget(conservation_);
     auto* split = new QSplitter(Qt::Vertical, this);
@@ -56,6 +58,23 @@ ExplainPanel::ExplainPanel(Document* document, Selection* selection, Playback* p
 }
 
 QString ExplainPanel::html() const { return text_->toHtml(); }
+
+bool ExplainPanel::figuresSideBySide() const { return figures_->orientation() == Qt::Horizontal; }
+
+void ExplainPanel::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    reflow();
+}
+
+void ExplainPanel::reflow()
+{
+    const bool wide = width() >= kFiguresSideBySideWidth;
+    figures_->setOrientation(wide ? Qt::Horizontal : Qt::Vertical);
+    // Narrow, the momenta stand above the energy: the figure needs more height.
+    const int conservationWidth = wide ? width() / 2 : width();
+    conservation_->setMinimumHeight(conservationWidth < ConservationWidget::kSideBySideWidth ? 380 : 230);
+}
 
 void ExplainPanel::followTime(double t)
 {

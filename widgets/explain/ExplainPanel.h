@@ -12,6 +12,7 @@
 
 class QTextBrowser;
 class QLabel;
+class QSplitter;
 
 namespace cuelab {
 
@@ -36,7 +37,17 @@ public slots:
 signals:
     void explanationChanged();                   // explanation() changed (or cleared)
 
+public:
+    // The figures reflow with the dock: the chart beside the momenta and energy when the panel is
+    // at least this wide, above them otherwise.
+    static constexpr int kFiguresSideBySideWidth = 760;
+    bool figuresSideBySide() const;
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
+    void reflow();
     void followTime(double t);
     void refresh();
 
@@ -47,6 +58,7 @@ private:
     QTextBrowser* text_;
     ToiChart* chart_;
     ConservationWidget* conservation_;
+    QSplitter* figures_ = nullptr;
     int event_ = -1;
     std::optional<explain::Explanation> explanation_;
 };

@@ -1,6 +1,8 @@
 #include "ToiChart.h"
 
 #include <QChart>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QScatterSeries>
 #include <QValueAxis>
@@ -15,7 +17,7 @@ ToiChart::ToiChart(QWidget* parent) : QChartView(new QChart, parent)
     setRenderHint(QPainter::Antialiasing);
     chart()->legend()->setAlignment(Qt::AlignBottom);
     chart()->setMargins(QMargins(2, 2, 2, 2));
-    setMinimumSize(240, 180);
+    setMinimumSize(240, 230);
     setExplanation(nullptr);
 }
 
@@ -41,7 +43,7 @@ void ToiChart::setExplanation(const explain::Explanation* e)
     c->setTitle(tr("f(τ) from t₀ = %1 s").arg(toi.t0, 0, 'g', 6));
 
     auto* curve = new QLineSeries;
-    curve->setName(linear ? tr("f(τ), m") : tr("f(τ), m²"));
+    curve->setName(tr("f(τ)"));
     double lo = 0.0, hi = 0.0;
     constexpr int kSamples = 400;
     for (int k = 0; k <= kSamples; ++k) {
@@ -57,11 +59,11 @@ void ToiChart::setExplanation(const explain::Explanation* e)
     zero->append(span, 0.0);
     zero->setPen(QPen(QColor(120, 120, 120), 1, Qt::DashLine));
     auto* roots = new QScatterSeries;
-    roots->setName(tr("roots"));
+    roots->setName(tr("other roots"));
     roots->setMarkerSize(8);
     roots->setColor(QColor(90, 90, 90));
     auto* chosen = new QScatterSeries;
-    chosen->setName(tr("τ* = %1 s (the event)").arg(toi.root, 0, 'g', 6));
+    chosen->setName(tr("τ* = %1 s").arg(toi.root, 0, 'g', 4));
     chosen->setMarkerSize(13);
     chosen->setColor(QColor(220, 30, 30));
     for (const explain::ToiRoot& r : toi.roots) {
@@ -86,6 +88,11 @@ void ToiChart::setExplanation(const explain::Explanation* e)
         s->attachAxis(x);
         s->attachAxis(y);
     }
+    // The legend names what is plotted, short enough to stay whole in a narrow dock: the zero line
+    // needs no entry, and roots outside the window none either.
+    for (QLegendMarker* m : c->legend()->markers(zero)) m->setVisible(false);
+    if (roots->count() == 0)
+        for (QLegendMarker* m : c->legend()->markers(roots)) m->setVisible(false);
 }
 
 }  // namespace cuelab

@@ -35,7 +35,7 @@ std::vector<std::optional<QRectF>> layoutLabels(const std::vector<LabelRequest>&
         if (!view.contains(q.anchor)) continue;
         const double w = q.size.width(), h = q.size.height();
         std::optional<QRectF> first;
-        for (double reach : {1.0, 2.6}) {
+        for (double reach : {1.0, 2.6, 4.5}) {  // farther out when the near spots are taken (a ball, a label)
             const double g = kGap * reach;
             const QPointF a = q.anchor;
             const QPointF corners[] = {{a.x() + g, a.y() - g - h}, {a.x() + g, a.y() + g},

@@ -80,7 +80,7 @@ void LayerPass::drawGhosts(const RenderFrame& frame)
         if (!layer.visible) continue;
         for (const GhostTrack& g : layer.ghosts) {
             Vec2 p;
-            if (!ghostPositionAt(g, frame.time, &p)) continue;
+            if (!ghostInScope(g, frame.pathScope, frame.selectedBall) || !ghostPositionAt(g, frame.time, &p)) continue;
             const auto r = static_cast<float>(g.radius);
             appendBallInstance(instances_, QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), r), r, identity,
                                QVector3D(g.colour.redF(), g.colour.greenF(), g.colour.blueF()), 0, false, false, false,
@@ -93,6 +93,11 @@ void LayerPass::drawGhosts(const RenderFrame& frame)
 
 void LayerPass::drawLines(QOpenGLShaderProgram& lineProgram, const RenderFrame& frame)
 {
+    if (frame.pathScope != shownScope_ || frame.selectedBall != shownSelected_) {
+        shownScope_ = frame.pathScope;
+        shownSelected_ = frame.selectedBall;
+        staticDirty_ = true;
+    }
     if (staticDirty_) {
         // Ghost paths (timed, for the past/future split) and polylines.
         scratch_.clear();
@@ -100,7 +105,8 @@ void LayerPass::drawLines(QOpenGLShaderProgram& lineProgram, const RenderFrame& 
         for (const auto& [name, layer] : layers_) {
             if (!layer.visible) continue;
             for (const GhostTrack& g : layer.ghosts) {
-                if (!g.showPath || !wellFormed(g) || g.positions.size() < 2) continue;
+                if (!g.showPath || !wellFormed(g) || g.positions.size() < 2 || !ghostInScope(g, frame.pathScope, frame.selectedBall))
+                    continue;
                 beginRun(staticRuns_, scratch_, 2.0f, true);
                 QVector4D colour = rgba(g.colour);
                 colour.setW(std::max(0.55f, colour.w()));  // a faint ghost still gets a visible path

@@ -38,6 +38,8 @@ public:
 private:
     ViewLayers layers_;
     bool staticDirty_ = true;
+    BallScope shownScope_ = BallScope::All;  // the ghost paths in the cache follow View > Paths Of
+    int shownSelected_ = -1;
     LineBatch staticLines_, dynamicLines_;
     BallBatch ghosts_;
     std::vector<Run> staticRuns_, dynamicRuns_;

@@ -20,7 +20,6 @@ namespace cuelab {
 
 namespace {
 
-constexpr double kSameInstantPx = 160.0;  // logical pixels: equal times closer than this share a label
 
 std::optional<QPointF> toScreen(const LabelFrame& frame, const QVector3D& world)
 {
@@ -131,6 +130,7 @@ QImage textImage(LabelCache& cache, const QString& text, const QColor& ink)
 struct PendingLabel {
     QImage image;
     LabelRequest request;
+    QString text;
 };
 
 // Event times, in the label scope, one per instant and neighbourhood on screen.
@@ -155,8 +155,10 @@ void collectEventTimes(const ViewScene& scene, const LabelFrame& frame, LabelCac
         const bool highlighted = e == frame.highlightedEvent;
         if (!highlighted) {
             if (frame.labelScope == BallScope::None) continue;
-            if (frame.labelScope == BallScope::Selected && ev.balls[0] != frame.selectedBall &&
-                ev.balls[1] != frame.selectedBall)
+            // The selected ball's events only; with no ball selected, none (a cushion event's second
+            // agent is -1, which must not match "no selection").
+            if (frame.labelScope == BallScope::Selected &&
+                (frame.selectedBall < 0 || (ev.balls[0] != frame.selectedBall && ev.balls[1] != frame.selectedBall)))
                 continue;
         }
         const Vec2 p = ev.kind == EventKind::BallPocket ? ev.before[0].position : ev.contactPoint;
@@ -164,16 +166,15 @@ void collectEventTimes(const ViewScene& scene, const LabelFrame& frame, LabelCac
         const std::optional<QPointF> at = toScreen(frame, QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()),
                                                                     static_cast<float>(radius)));
         if (!at) continue;
-        // A chain of contacts at one instant (a rack) reads as one time: label it once per neighbourhood.
+        // One label per instant as the label shows it (to the millisecond): a chain of contacts at
+        // one instant (a rack, a break) reads as one time, at its first (or highlighted) event.
         const QString text = QStringLiteral("%1 s").arg(ev.time, 0, 'f', 3);
-        const bool repeated = std::any_of(shown.begin(), shown.end(), [&](const Shown& s) {
-            return s.text == text && QLineF(s.at, *at).length() < kSameInstantPx;
-        });
+        const bool repeated = std::any_of(shown.begin(), shown.end(), [&](const Shown& s) { return s.text == text; });
         if (repeated && !highlighted) continue;
         shown.push_back({text, *at});
         const TagStyle style = highlighted ? TagStyle::Highlighted : (ev.time > frame.time ? TagStyle::Future : TagStyle::Past);
         const QImage& image = tagImage(cache, ev.time, style);
-        out.push_back({image, {*at, image.deviceIndependentSize(), highlighted ? 30 : (style == TagStyle::Past ? 5 : 0), highlighted}});
+        out.push_back({image, {*at, image.deviceIndependentSize(), highlighted ? 30 : (style == TagStyle::Past ? 5 : 0), highlighted}, text});
     }
 }
 
@@ -186,15 +187,22 @@ void collectLayerLabels(const LabelFrame& frame, LabelCache& cache, std::vector<
         const std::optional<QPointF> at = toScreen(frame, where);
         if (!at) return;
         QImage image = textImage(cache, text, colour);
-        out.push_back({image, {*at, image.deviceIndependentSize(), 20, true}});
+        out.push_back({image, {*at, image.deviceIndependentSize(), 20, true}, text});
     };
     auto v3 = [](const Vec3& p) { return QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())); };
     for (const auto& [name, layer] : *frame.layers) {
         if (!layer.visible) continue;
+        // A layer's ghosts carry one name (the engine's, on its first ghost): it goes on the first
+        // ghost View > Paths Of shows.
+        QString ghostName;
+        for (const GhostTrack& g : layer.ghosts)
+            if (ghostName.isEmpty()) ghostName = g.label;
         for (const GhostTrack& g : layer.ghosts) {
             Vec2 p;
-            if (!g.label.isEmpty() && ghostPositionAt(g, frame.time, &p))
-                add(g.label, g.colour, QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(2.0 * g.radius)));
+            if (ghostName.isEmpty() || !ghostInScope(g, frame.pathScope, frame.selectedBall) || !ghostPositionAt(g, frame.time, &p))
+                continue;
+            add(ghostName, g.colour, QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(2.0 * g.radius)));
+            break;
         }
         for (const LayerArrow& a : layer.arrows) add(a.label, a.colour, v3(a.to));
         for (const LayerPolyline& l : layer.polylines)
@@ -263,16 +271,49 @@ const QImage* velocityLegend(const ViewScene& scene, const LabelFrame& frame, La
 
 }  // namespace
 
-void paintOverlayLabels(QPainter& painter, const ViewScene& scene, const LabelFrame& frame)
+OverlayLabelPlan planOverlayLabels(const ViewScene& scene, const LabelFrame& frame, qreal devicePixelRatio)
 {
-    if (!scene.result) return;
-    LabelCache& cache = labelCache(painter.device()->devicePixelRatioF());
+    OverlayLabelPlan plan;
+    if (!scene.result) return plan;
+    LabelCache& cache = labelCache(devicePixelRatio);
     std::vector<QRectF> reserved;
     QPointF legendAt;
     const QImage* legend = frame.overlays.test(static_cast<std::size_t>(Overlay::Velocities))
                                ? velocityLegend(scene, frame, cache, &legendAt)
                                : nullptr;
-    if (legend) reserved.push_back(QRectF(legendAt, legend->deviceIndependentSize()));
+    if (legend) {
+        reserved.push_back(QRectF(legendAt, legend->deviceIndependentSize()));
+        plan.keys.push_back({QStringLiteral("velocity scale"), reserved.back(), *legend});
+    }
+    // The layers' keys (a scale), apart from every label: stacked in the bottom-left corner, above
+    // the velocity legend.
+    if (frame.layers) {
+        double bottom = legend ? legendAt.y() - 4.0 : frame.logicalSize.height() - 10.0;
+        for (const auto& [name, layer] : *frame.layers) {
+            if (!layer.visible || layer.legend.isEmpty() || layer.empty()) continue;
+            QImage image = textImage(cache, layer.legend, QColor(255, 255, 255));
+            const QPointF at(10.0, bottom - image.deviceIndependentSize().height());
+            reserved.push_back(QRectF(at, image.deviceIndependentSize()));
+            plan.keys.push_back({layer.legend, reserved.back(), std::move(image)});
+            bottom = at.y() - 4.0;
+        }
+    }
+    // Labels go around the balls, never over one: each ball's disc on screen is kept free.
+    const SimulationResult& r = *scene.result;
+    for (std::size_t i = 0; i < r.balls.size(); ++i) {
+        const BallState b = r.timelines.empty() ? r.balls[i].state : r.stateAt(static_cast<int>(i), frame.time);
+        if (b.motion == MotionState::Pocketed) continue;
+        const auto radius = static_cast<float>(r.balls[i].radius);
+        const QVector3D centre(static_cast<float>(b.position.x()), static_cast<float>(b.position.y()), radius);
+        const std::optional<QPointF> at = toScreen(frame, centre);
+        if (!at) continue;
+        double drawn = 0.0;
+        for (const QVector3D& side : {QVector3D(radius, 0, 0), QVector3D(0, radius, 0), QVector3D(0, 0, radius)})
+            if (const std::optional<QPointF> rim = toScreen(frame, centre + side)) drawn = std::max(drawn, QLineF(*at, *rim).length());
+        drawn += 1.0;  // the outline
+        reserved.push_back(QRectF(at->x() - drawn, at->y() - drawn, 2.0 * drawn, 2.0 * drawn));
+        plan.balls.push_back(reserved.back());
+    }
     std::vector<PendingLabel> labels;
     collectLayerLabels(frame, cache, labels);
     if (frame.overlays.test(static_cast<std::size_t>(Overlay::EventMarkers))) collectEventTimes(scene, frame, cache, labels);
@@ -282,8 +323,15 @@ void paintOverlayLabels(QPainter& painter, const ViewScene& scene, const LabelFr
     const std::vector<std::optional<QRectF>> boxes =
         layoutLabels(requests, QRectF(QPointF(0, 0), QSizeF(frame.logicalSize)), reserved);
     for (std::size_t k = 0; k < labels.size(); ++k)
-        if (boxes[k]) painter.drawImage(boxes[k]->topLeft(), labels[k].image);
-    if (legend) painter.drawImage(legendAt, *legend);
+        if (boxes[k]) plan.labels.push_back({labels[k].text, *boxes[k], labels[k].image});
+    return plan;
+}
+
+void paintOverlayLabels(QPainter& painter, const ViewScene& scene, const LabelFrame& frame)
+{
+    const OverlayLabelPlan plan = planOverlayLabels(scene, frame, painter.device()->devicePixelRatioF());
+    for (const OverlayLabelPlan::Item& l : plan.labels) painter.drawImage(l.box.topLeft(), l.image);
+    for (const OverlayLabelPlan::Item& k : plan.keys) painter.drawImage(k.box.topLeft(), k.image);
 }
 
 }  // namespace cuelab

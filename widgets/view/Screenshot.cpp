@@ -112,7 +112,7 @@ bool SceneImageRenderer::render(const ViewScene& scene, double time, const Camer
                 QPainter painter(out);
                 paintOverlayLabels(painter, scene,
                                    LabelFrame{frame.viewProjection, size, frame.time, frame.overlays, highlightedEvent_, selectedBall_,
-                                              labelScope_, &layers_});
+                                              labelScope_, &layers_, pathScope_});
                 painter.end();
                 ok = true;
             } else if (error) {

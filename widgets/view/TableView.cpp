@@ -7,12 +7,14 @@
 #include "TableInteraction.h"
 #include "TableRenderer.h"
 
+#include <QLineF>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -265,6 +267,26 @@ int TableView::pickBall(const QPointF& widgetPos) const
             best = static_cast<int>(i);
         }
     }
+    if (best >= 0) return best;
+    // A small ball on screen (a whole table in a small view) is hard to hit: a press within
+    // kPickRadiusPx of a ball's centre on screen (or within its drawn radius, if larger) picks the
+    // nearest such ball, not the cloth or a construction beside it.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < r.balls.size(); ++i) {
+        const BallState s = r.timelines.empty() ? r.balls[i].state : r.stateAt(static_cast<int>(i), time_);
+        if (s.motion == MotionState::Pocketed) continue;
+        const auto radius = static_cast<float>(r.balls[i].radius);
+        const QVector3D centre(static_cast<float>(s.position.x()), static_cast<float>(s.position.y()), radius);
+        const std::optional<QPointF> at = widgetPointOf(centre);
+        const std::optional<QPointF> rim = widgetPointOf(centre + QVector3D(radius, 0.0f, 0.0f));
+        if (!at) continue;
+        const double drawn = rim ? QLineF(*at, *rim).length() : 0.0;
+        const double distance = QLineF(*at, widgetPos).length();
+        if (distance <= std::max(kPickRadiusPx, drawn) && distance < nearest) {
+            nearest = distance;
+            best = static_cast<int>(i);
+        }
+    }
     return best;
 }
 
@@ -348,7 +370,7 @@ void TableView::paintGL()
     QPainter painter(this);
     paintOverlayLabels(painter, scene_,
                        LabelFrame{frame.viewProjection, size(), time_, overlays_, highlightedEvent_, selectedBall_,
-                                  labelScope_, &layers_});
+                                  labelScope_, &layers_, pathScope_});
     painter.end();
     meter_->frameDrawn();
 }

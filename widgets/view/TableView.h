@@ -79,7 +79,9 @@ public:
     void clearLayer(const QString& name);
     const ViewLayers& layers() const { return layers_; }
 
-    // The ball under a point of the widget (ray-sphere against the balls at time()); -1 = none.
+    // The ball under a point of the widget (ray-sphere against the balls at time()); else the ball
+    // whose centre on screen is nearest within kPickRadiusPx (or its drawn radius); -1 = none.
+    static constexpr double kPickRadiusPx = 8.0;
     int pickBall(const QPointF& widgetPos) const;
     // Where a point of the widget lands on the horizontal plane at `height` (m); nullopt when the
     // ray misses it.

@@ -24,4 +24,14 @@ bool ghostPositionAt(const GhostTrack& track, double t, Vec2* position)
     return true;
 }
 
+bool ghostInScope(const GhostTrack& track, BallScope scope, int selectedBall)
+{
+    switch (scope) {
+    case BallScope::All: return true;
+    case BallScope::Selected: return selectedBall >= 0 && track.ball == selectedBall;
+    case BallScope::None: return false;
+    }
+    return true;
+}
+
 }  // namespace cuelab

@@ -19,6 +19,7 @@
 // translucency (0 = invisible; 255 = opaque), lines and labels too.
 
 #include "Types.h"
+#include "ViewScene.h"
 
 #include <QColor>
 #include <QString>
@@ -40,6 +41,8 @@ struct GhostTrack {
     std::vector<double> times;         // s, non-decreasing
     std::vector<Vec2> positions;       // m, the ball's centre on the cloth at each time
     bool showPath = true;              // the polyline through the samples
+    int ball = -1;                     // the index of the scene's ball it stands for (View > Paths Of
+                                       // shows it with that ball's path); -1: shown with all balls only
 };
 
 // A straight arrow with a head at `to`, always drawn (not tied to time).
@@ -73,6 +76,7 @@ struct ViewLayer {
     std::vector<LayerArrow> arrows;
     std::vector<LayerPolyline> polylines;
     std::vector<LayerMarker> markers;
+    QString legend;       // the layer's key (a scale), drawn apart in the view's corner ("" = none)
     bool visible = true;  // a hidden layer is kept but not drawn
 
     bool empty() const { return ghosts.empty() && arrows.empty() && polylines.empty() && markers.empty(); }
@@ -84,5 +88,9 @@ using ViewLayers = std::map<QString, ViewLayer>;
 // Where a ghost track is at time t (s): false when t lies outside its samples or the track is not
 // well formed (see GhostTrack). Shared by the renderer, the labels and tests.
 bool ghostPositionAt(const GhostTrack& track, double t, Vec2* position);
+
+// Whether View > Paths Of shows a ghost: with All, every ghost; with Selected, the selected ball's
+// (none when no ball is selected); with None, none.
+bool ghostInScope(const GhostTrack& track, BallScope scope, int selectedBall);
 
 }  // namespace cuelab
