@@ -278,7 +278,7 @@ void TestSweep::refusedStrikesReadAsTheValidatorSays_data()
     QTest::newRow("speed") << "shot.speed=2:-0.5:2" << "";
     QTest::newRow("tip") << "shot.side=0:1.2:2" << "";
     QTest::newRow("cue mass") << "shot.cue_mass=0.5:-1:2" << "";
-    QTest::newRow("heading") << "shot.heading=0:4000:2" << "";
+    QTest::newRow("heading") << "shot.heading=0:2000000:2" << "";
 }
 
 void TestSweep::refusedStrikesReadAsTheValidatorSays()
