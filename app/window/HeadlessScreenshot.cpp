@@ -104,8 +104,9 @@ int takeScreenshot(const QCommandLineParser& parser, const QString& out)
     // SVG and PDF: the print-style shot diagram (widgets/export), at --time or else at the end.
     DiagramFormat format = DiagramFormat::Png;
     if (diagramFormatOf(out, &format) && format != DiagramFormat::Png) {
-        const ShotDiagram diagram(scene.result, {QString::fromStdString(setup->name), QString::fromStdString(setup->notes)},
-                                  parser.isSet(QStringLiteral("time")) ? time : -1.0);
+        DiagramText text{QString::fromStdString(setup->name), QString::fromStdString(setup->notes)};
+        text.facts = shotFacts(*setup);
+        const ShotDiagram diagram(scene.result, text, parser.isSet(QStringLiteral("time")) ? time : -1.0);
         if (!writeDiagram(diagram, out, &error)) {
             printError(error);
             return kExitRefused;

@@ -5,7 +5,10 @@
 
 #include "MainWindow.h"
 #include "Translations.h"
+#include "SetupFile.h"
+#include "export/ShotFacts.h"
 #include "i18n/DisplayNames.h"
+#include "outcome/OutcomePanel.h"
 
 #include <QAction>
 #include <QDir>
@@ -15,6 +18,8 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QTest>
+#include <QRegularExpression>
+#include <QTableWidget>
 #include <QTranslator>
 
 using namespace cuelab;
@@ -45,6 +50,7 @@ private slots:
     void committedTranslationIsComplete();
     void hungarianWindow();
     void qtOwnStrings();
+    void hungarianOutcomeAndHandouts();
     void englishWindow_data();
     void englishWindow();
     void systemLocaleChooses_data();
@@ -107,6 +113,34 @@ void TestTranslations::hungarianWindow()
     QCOMPARE(displayName(MotionState::Rolling), QStringLiteral("gördül"));
     QCOMPARE(displayName(EventKind::BallCushion), QStringLiteral("golyó–mantinel"));
     QCOMPARE(displayName(EventKind::SlideToRoll), QStringLiteral("csúszásból gördülés"));
+}
+
+// Issue 21, item 5: the outcome line, the Outcome dock, the table's elements and the handouts' shot
+// and physics tables speak Hungarian: no English word of a list is left in them.
+void TestTranslations::hungarianOutcomeAndHandouts()
+{
+    QCOMPARE(installTranslations(QLocale(QStringLiteral("hu_HU"))), QStringLiteral("hu"));
+    QString error;
+    const std::optional<Setup> setup = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/half-ball-cut.json"), &error);
+    QVERIFY2(setup, qPrintable(error));
+    OutcomePanel panel;
+    panel.setResult(std::make_shared<const SimulationResult>(simulate(*setup)));
+    QStringList texts{panel.summary()};
+    for (QTableWidget* table : {panel.factsTable(), panel.ballsTable()})
+        for (int row = 0; row < table->rowCount(); ++row)
+            for (int column = 0; column < table->columnCount(); ++column)
+                if (table->item(row, column)) texts << table->item(row, column)->text();
+    const ShotFacts facts = shotFacts(*setup);
+    for (const Fact& f : facts.shot + facts.physics) texts << f.name << f.value;
+    for (const char* id : {"pocket-tr", "rail-t-left", "jaw-bl-b", "rail-bottom"}) texts << displayElementName(id);
+    const QString all = texts.join(QStringLiteral(" | "));
+    QVERIFY2(all.contains(QStringLiteral("jobb felső lyuk")), qPrintable(all));
+    static const QRegularExpression english(
+        QStringLiteral("\\b(pocket|pocketed|cushions?|rail|none|at|before|Heading|speed|Struck|Table|friction|restitution|model|"
+                       "open|closed|half|jaw|left|right|top|bottom)\\b"),
+        QRegularExpression::CaseInsensitiveOption);
+    const QRegularExpressionMatch found = english.match(all);
+    QVERIFY2(!found.hasMatch(), qPrintable(QStringLiteral("English \"%1\" in: %2").arg(found.captured(0), all)));
 }
 
 // Qt's own strings (standard buttons) follow, from qtbase_hu.qm, when the system has it.

@@ -179,8 +179,8 @@ void TestDiagram::reportPages_data()
 {
     QTest::addColumn<QString>("file");
     QTest::addColumn<int>("pages");
-    // diagram, notes and outcome, events (40 a page), plots
-    QTest::newRow("half-ball cut") << "half-ball-cut.json" << 4;
+    // diagram, notes and outcome, the key collision, events (40 a page), plots
+    QTest::newRow("half-ball cut") << "half-ball-cut.json" << 5;
     QTest::newRow("8-ball break") << "8-ball-break.json" << -1;  // computed below from the events
 }
 
@@ -191,7 +191,7 @@ void TestDiagram::reportPages()
     const Loaded l = load(file);
     const LessonReport report(l.result, l.text.title, l.text.notes);
     const int events = static_cast<int>(l.result->events.size());
-    const int expected = pages > 0 ? pages : 3 + (events + LessonReport::kEventRowsPerPage - 1) / LessonReport::kEventRowsPerPage;
+    const int expected = pages > 0 ? pages : 4 + (events + LessonReport::kEventRowsPerPage - 1) / LessonReport::kEventRowsPerPage;
     QCOMPARE(report.pageCount(), expected);
     if (pages < 0) QVERIFY(expected >= 5);  // the break's table runs over several pages
     const QString path = dir_.filePath(file + QStringLiteral(".pdf"));

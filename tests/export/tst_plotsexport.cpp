@@ -127,7 +127,7 @@ void TestPlotsExport::outcomeInTheWindow()
     auto* line = window_->findChild<QLabel*>(QStringLiteral("outcomeStatus"));
     QVERIFY(line);
     QVERIFY2(line->text().startsWith(QStringLiteral("cue \u2192 1 at 0.293 s")), qPrintable(line->text()));
-    QVERIFY2(line->text().contains(QLatin1String("pocketed: 1 (pocket-tr, 0.694 s)")), qPrintable(line->text()));
+    QVERIFY2(line->text().contains(QLatin1String("pocketed: 1 (top-right pocket, 0.694 s)")), qPrintable(line->text()));
     auto* panel = window_->findChild<OutcomePanel*>();
     QVERIFY(panel);
     QTableWidget* facts = panel->factsTable();
@@ -136,7 +136,7 @@ void TestPlotsExport::outcomeInTheWindow()
         if (facts->item(row, 0)->text() == QLatin1String("First contact")) first = facts->item(row, 1)->text() == QLatin1String("1 at 0.2926 s");
     QVERIFY(first);
     QCOMPARE(panel->ballsTable()->rowCount(), 2);
-    QCOMPARE(panel->ballsTable()->item(1, 2)->text(), QStringLiteral("in pocket-tr"));
+    QCOMPARE(panel->ballsTable()->item(1, 2)->text(), QStringLiteral("in the top-right pocket"));
 }
 
 void TestPlotsExport::plottedPointsAreStateAt_data()

@@ -44,7 +44,7 @@ SimulationOutcome runSimulation(const Setup& setup, quint64 generation)
 Setup startingSetup()
 {
     Setup s;
-    s.name = "Untitled";
+    s.name = Document::tr("Untitled").toStdString();
     const Table table = makeTable(s.table);
     s.balls = rackBalls(RackPreset::Straight, table);
     s.shot = CueStrike{};
@@ -185,6 +185,7 @@ void Document::replace(const Setup& setup, const QString& path, const QString& t
     ++mergeSession_;
     filePath_ = path;
     untitledTitle_ = title;
+    notesSetup_ = setup;
     applySetup(setup);
     emit filePathChanged(filePath_);
     emit modifiedChanged(false);
@@ -425,6 +426,8 @@ bool Document::setTableMovingBalls(const TableSpec& table, const QString& text, 
 
 void Document::applySetup(const Setup& setup)
 {
+    // Notes written (or taken back) now are written for this setup.
+    if (setup.notes != setup_.notes) notesSetup_ = setup;
     setup_ = setup;
     ++generation_;
     emit setupChanged();

@@ -47,6 +47,10 @@ public:
     ~Document() override;
 
     const Setup& setup() const { return setup_; }
+    // The setup the lesson's notes were written for: the setup as opened, or as it stood when the
+    // notes last changed. The Lesson dock and the report flag notes whose shot or physics changed
+    // since (ShotFacts.h: factChanges).
+    const Setup& notesWrittenFor() const { return notesSetup_; }
     QString filePath() const { return filePath_; }  // empty while untitled
     QString displayName() const;                    // the file's name, or the untitled title
     QUndoStack* undoStack() const { return undoStack_; }
@@ -134,6 +138,7 @@ private:
     void simulationFinished();
 
     Setup setup_;
+    Setup notesSetup_;
     QString filePath_;
     QString untitledTitle_;
     bool example_ = false;

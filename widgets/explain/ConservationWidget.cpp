@@ -44,12 +44,30 @@ ConservationWidget::ConservationWidget(QWidget* parent) : QWidget(parent)
                   "(light)."));
 }
 
+ConservationWidget::Figure ConservationWidget::figureOf(const explain::Explanation* e)
+{
+    Figure f;
+    f.bodies = e ? e->bodies : std::vector<explain::Body>{};
+    f.cushion = e && (e->kind == EventKind::BallCushion || e->kind == EventKind::BallJaw);
+    f.cushionImpulse = e ? Vec2(e->impulse.head<2>()) : Vec2::Zero();
+    return f;
+}
+
 void ConservationWidget::setExplanation(const explain::Explanation* e)
 {
-    bodies_ = e ? e->bodies : std::vector<explain::Body>{};
-    cushion_ = e && (e->kind == EventKind::BallCushion || e->kind == EventKind::BallJaw);
-    cushionImpulse_ = e ? Vec2(e->impulse.head<2>()) : Vec2::Zero();
+    figure_ = figureOf(e);
     update();
+}
+
+void ConservationWidget::paintFigure(QPainter& p, const QRectF& area, const explain::Explanation& e)
+{
+    // Print colours: black text, grey frames, white paper.
+    const QPalette print(Qt::black, Qt::white, Qt::white, QColor(120, 120, 120), QColor(160, 160, 160), Qt::black, Qt::white,
+                         Qt::white, Qt::white);
+    p.save();
+    p.fillRect(area, Qt::white);
+    paintBoth(p, area, figureOf(&e), print, area.width() < kSideBySideWidth);
+    p.restore();
 }
 
 void ConservationWidget::paintEvent(QPaintEvent*)
@@ -57,21 +75,25 @@ void ConservationWidget::paintEvent(QPaintEvent*)
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), palette().base());
-    if (bodies_.empty()) {
+    if (figure_.bodies.empty()) {
         p.setPen(palette().color(QPalette::Disabled, QPalette::Text));
         p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, tr("Momenta and energy of the selected event"));
         return;
     }
-    const QRectF all = QRectF(rect()).adjusted(4, 4, -4, -4);
-    if (stacked()) {
+    paintBoth(p, QRectF(rect()).adjusted(4, 4, -4, -4), figure_, palette(), stacked());
+}
+
+void ConservationWidget::paintBoth(QPainter& p, const QRectF& all, const Figure& f, const QPalette& palette, bool stacked)
+{
+    if (stacked) {
         // Narrow (a dock of a small window): momentum above, energy below, each the whole width.
         const double split = all.height() * 0.58;
-        paintMomenta(p, QRectF(all.left(), all.top(), all.width(), split - 6));
-        paintEnergy(p, QRectF(all.left(), all.top() + split + 6, all.width(), all.height() - split - 6));
+        paintMomenta(p, QRectF(all.left(), all.top(), all.width(), split - 6), f, palette);
+        paintEnergy(p, QRectF(all.left(), all.top() + split + 6, all.width(), all.height() - split - 6), f, palette);
     } else {
         const double split = all.width() * 0.6;
-        paintMomenta(p, QRectF(all.left(), all.top(), split - 6, all.height()));
-        paintEnergy(p, QRectF(all.left() + split + 6, all.top(), all.width() - split - 6, all.height()));
+        paintMomenta(p, QRectF(all.left(), all.top(), split - 6, all.height()), f, palette);
+        paintEnergy(p, QRectF(all.left() + split + 6, all.top(), all.width() - split - 6, all.height()), f, palette);
     }
 }
 
@@ -87,11 +109,11 @@ QString ConservationWidget::energyChange(double before, double after)
     return tr("ΔE = %1 J (%2 %)").arg(change, 0, 'g', 3).arg(percent, 0, 'g', std::abs(percent) >= 1.0 ? 3 : 2);
 }
 
-void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
+void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area, const Figure& f, const QPalette& palette)
 {
     const QFontMetricsF metrics(p.font());
     const double line = metrics.height();
-    p.setPen(palette().color(QPalette::Text));
+    p.setPen(palette.color(QPalette::Text));
     p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft, tr("Momentum (N s)"));
     // Below the panels: "before"/"after", |P|, then the key.
     const QRectF body = area.adjusted(0, line + 4, 0, -(3 * line + 6));
@@ -100,7 +122,7 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
     Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
     for (int phase = 0; phase < 2; ++phase) {
         Vec2 tip = Vec2::Zero();
-        for (const explain::Body& b : bodies_) {
+        for (const explain::Body& b : f.bodies) {
             tip += phase == 0 ? b.momentumBefore() : b.momentumAfter();
             lo = lo.cwiseMin(tip);
             hi = hi.cwiseMax(tip);
@@ -111,7 +133,7 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
     const double scale = 0.8 * std::min(panelW, body.height()) / longest;  // px per N s
     for (int phase = 0; phase < 2; ++phase) {
         const QRectF panel(body.left() + phase * (panelW + 12.0), body.top(), panelW, body.height());
-        p.setPen(QPen(palette().color(QPalette::Mid), 1.0));
+        p.setPen(QPen(palette.color(QPalette::Mid), 1.0));
         p.drawRect(panel);
         // Centre the chain's bounding box in the panel (y up on the table, down on screen).
         const Vec2 mid = 0.5 * (lo + hi);
@@ -119,21 +141,21 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
             return QPointF(panel.center().x() + (v.x() - mid.x()) * scale, panel.center().y() - (v.y() - mid.y()) * scale);
         };
         Vec2 tip = Vec2::Zero();
-        for (std::size_t k = 0; k < bodies_.size(); ++k) {
-            const Vec2 pk = phase == 0 ? bodies_[k].momentumBefore() : bodies_[k].momentumAfter();
+        for (std::size_t k = 0; k < f.bodies.size(); ++k) {
+            const Vec2 pk = phase == 0 ? f.bodies[k].momentumBefore() : f.bodies[k].momentumAfter();
             arrow(p, toScreen(tip), toScreen(tip + pk), kBodyColours[k % 2]);
             tip += pk;
         }
-        if (bodies_.size() > 1) arrow(p, toScreen(Vec2::Zero()), toScreen(tip), palette().color(QPalette::Text), Qt::DashLine);
-        if (phase == 1 && cushion_) {
+        if (f.bodies.size() > 1) arrow(p, toScreen(Vec2::Zero()), toScreen(tip), palette.color(QPalette::Text), Qt::DashLine);
+        if (phase == 1 && f.cushion) {
             // The cushion's impulse closes the triangle: p' = p + J.
-            const Vec2 before = bodies_[0].momentumBefore();
-            arrow(p, toScreen(before), toScreen(before + cushionImpulse_), QColor(200, 40, 160), Qt::DotLine);
+            const Vec2 before = f.bodies[0].momentumBefore();
+            arrow(p, toScreen(before), toScreen(before + f.cushionImpulse), QColor(200, 40, 160), Qt::DotLine);
             p.setPen(QColor(200, 40, 160));
-            p.drawText(toScreen(before + 0.5 * cushionImpulse_) + QPointF(4, 10), tr("J (cushion)"));
+            p.drawText(toScreen(before + 0.5 * f.cushionImpulse) + QPointF(4, 10), tr("J (cushion)"));
             arrow(p, toScreen(Vec2::Zero()), toScreen(before), QColor(150, 150, 150), Qt::DotLine);
         }
-        p.setPen(palette().color(QPalette::Text));
+        p.setPen(palette.color(QPalette::Text));
         const QRectF under(panel.left() - 4, panel.bottom() + 2, panel.width() + 8, line);
         p.drawText(under, Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
         p.drawText(under.translated(0, line), Qt::AlignCenter, QStringLiteral("|P| = %1").arg(tip.norm(), 0, 'g', 3));
@@ -141,32 +163,32 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area) const
     // The key: each ball's colour, the total dashed.
     double x = area.left();
     const double y = area.bottom() - line;
-    for (std::size_t k = 0; k < bodies_.size(); ++k) {
-        const QString name = QString::fromStdString(bodies_[k].id);
+    for (std::size_t k = 0; k < f.bodies.size(); ++k) {
+        const QString name = QString::fromStdString(f.bodies[k].id);
         p.setPen(QPen(kBodyColours[k % 2], 2.0));
         p.drawLine(QPointF(x, y + line / 2), QPointF(x + 14, y + line / 2));
-        p.setPen(palette().color(QPalette::Text));
+        p.setPen(palette.color(QPalette::Text));
         p.drawText(QPointF(x + 17, y + metrics.ascent()), name);
         x += 17 + metrics.horizontalAdvance(name) + 10;
     }
-    if (bodies_.size() > 1) {
-        p.setPen(QPen(palette().color(QPalette::Text), 1.5, Qt::DashLine));
+    if (f.bodies.size() > 1) {
+        p.setPen(QPen(palette.color(QPalette::Text), 1.5, Qt::DashLine));
         p.drawLine(QPointF(x, y + line / 2), QPointF(x + 14, y + line / 2));
         p.drawText(QPointF(x + 17, y + metrics.ascent()), tr("total"));
     }
 }
 
-void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area) const
+void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area, const Figure& f, const QPalette& palette)
 {
     const QFontMetricsF metrics(p.font());
     const double line = metrics.height();
-    p.setPen(palette().color(QPalette::Text));
+    p.setPen(palette.color(QPalette::Text));
     p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft, tr("Energy (J)"));
     // Rows: title, the totals, the bars, "before"/"after", the key (two lines), ΔE.
     const QRectF values(area.left(), area.top() + line + 2, area.width(), line);
     const QRectF body(area.left(), values.bottom() + 2, area.width(), std::max(10.0, area.height() - 6 * line - 10));
     double totals[2] = {0.0, 0.0};
-    for (const explain::Body& b : bodies_) {
+    for (const explain::Body& b : f.bodies) {
         totals[0] += b.translationBefore + b.rotationBefore;
         totals[1] += b.translationAfter + b.rotationAfter;
     }
@@ -176,8 +198,8 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area) const
     for (int phase = 0; phase < 2; ++phase) {
         const double x = left + phase * (barW + 8.0);
         double y = body.bottom();
-        for (std::size_t k = 0; k < bodies_.size(); ++k) {
-            const explain::Body& b = bodies_[k];
+        for (std::size_t k = 0; k < f.bodies.size(); ++k) {
+            const explain::Body& b = f.bodies[k];
             const double parts[2] = {phase == 0 ? b.translationBefore : b.translationAfter,
                                      phase == 0 ? b.rotationBefore : b.rotationAfter};
             for (int part = 0; part < 2; ++part) {
@@ -188,7 +210,7 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area) const
                 y -= h;
             }
         }
-        p.setPen(palette().color(QPalette::Text));
+        p.setPen(palette.color(QPalette::Text));
         p.drawText(QRectF(x - 6, body.bottom() + 1, barW + 12, line), Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
         // The total in its own row above the bars: never over the title or a bar.
         p.drawText(QRectF(x - 10, values.top(), barW + 20, line), Qt::AlignCenter, QString::number(totals[phase], 'g', 3));
@@ -196,10 +218,10 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area) const
     // The key: each ball's colour; the light part of a bar is rotation.
     double x = area.left();
     const double keyY = body.bottom() + line + 3;
-    for (std::size_t k = 0; k < bodies_.size(); ++k) {
-        const QString name = QString::fromStdString(bodies_[k].id);
+    for (std::size_t k = 0; k < f.bodies.size(); ++k) {
+        const QString name = QString::fromStdString(f.bodies[k].id);
         p.fillRect(QRectF(x, keyY + 2, 10, line - 4), kBodyColours[k % 2]);
-        p.setPen(palette().color(QPalette::Text));
+        p.setPen(palette.color(QPalette::Text));
         p.drawText(QPointF(x + 13, keyY + metrics.ascent()), name);
         x += 13 + metrics.horizontalAdvance(name) + 10;
     }

@@ -5,6 +5,7 @@
 
 #include "Explanation.h"
 
+#include <QPalette>
 #include <QWidget>
 
 #include <optional>
@@ -24,17 +25,25 @@ public:
     // "ΔE = -0.0123 J (-2.1 %)", rounded to what matters: a change below a millionth of the energy
     // (rounding in an elastic collision) reads "ΔE = 0 J (conserved)".
     static QString energyChange(double before, double after);
+    // The figure alone in print colours (black on white), for handouts: the lesson report's key
+    // collision and the HTML explanation. Side by side when `area` is at least kSideBySideWidth wide.
+    static void paintFigure(QPainter& p, const QRectF& area, const explain::Explanation& e);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
 
 private:
-    void paintMomenta(QPainter& p, const QRectF& area) const;
-    void paintEnergy(QPainter& p, const QRectF& area) const;
+    struct Figure {
+        std::vector<explain::Body> bodies;
+        Vec2 cushionImpulse = Vec2::Zero();  // N s, the cushion's push (ball-cushion events)
+        bool cushion = false;
+    };
+    static Figure figureOf(const explain::Explanation* e);
+    static void paintBoth(QPainter& p, const QRectF& area, const Figure& f, const QPalette& palette, bool stacked);
+    static void paintMomenta(QPainter& p, const QRectF& area, const Figure& f, const QPalette& palette);
+    static void paintEnergy(QPainter& p, const QRectF& area, const Figure& f, const QPalette& palette);
 
-    std::vector<explain::Body> bodies_;
-    Vec2 cushionImpulse_ = Vec2::Zero();  // N s, the cushion's push (ball-cushion events)
-    bool cushion_ = false;
+    Figure figure_;
 };
 
 }  // namespace cuelab

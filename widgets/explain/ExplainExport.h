@@ -1,6 +1,8 @@
 #pragma once
 // File > Export explanation…: the selected event, or every collision of the shot, as a handout in
-// HTML or Markdown (by the file's extension), written atomically.
+// HTML or Markdown (by the file's extension), written atomically. The HTML embeds each event's
+// figures as inline SVG (the time-of-impact polynomial, the momenta and energies), so the one file
+// is the whole handout.
 
 #include "CueStrike.h"
 #include "Simulation.h"

@@ -3,7 +3,12 @@
 #include "CurvePainter.h"
 #include "ShotDiagram.h"
 #include "ShotOutcome.h"
+#include "Explain.h"
+#include "ExplainText.h"
+#include "explain/ConservationWidget.h"
 #include "i18n/DisplayNames.h"
+
+#include <QCoreApplication>
 
 #include <QFontMetricsF>
 #include <QPageLayout>
@@ -25,6 +30,9 @@ QFont font(double px, bool bold = false)
     f.setBold(bold);
     return f;
 }
+
+// The context lupdate gives tr() calls in functions of namespace cuelab (resources/translations).
+QString tr(const char* text) { return QCoreApplication::translate("cuelab", text); }
 
 QString id(const SimulationResult& r, int ball) { return QString::fromStdString(r.balls.at(static_cast<std::size_t>(ball)).id); }
 QString text(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
@@ -50,7 +58,7 @@ public:
         p_.setFont(font(12));
         p_.drawText(QRectF(kMargin, 20, kWidth - 2 * kMargin, 24), Qt::AlignLeft | Qt::AlignVCenter, header);
         p_.drawText(QRectF(kMargin, kHeight - 44, kWidth - 2 * kMargin, 24), Qt::AlignRight | Qt::AlignVCenter,
-                    QStringLiteral("page %1 of %2").arg(page).arg(pages));
+                    QCoreApplication::translate("cuelab", "page %1 of %2").arg(page).arg(pages));
         p_.setPen(Qt::black);
     }
 
@@ -68,37 +76,73 @@ double paragraph(QPainter& p, double y, const QString& s, double px, bool bold =
     return y + box.height() + px * 0.6;
 }
 
-void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& title, const QString& notes)
+// A two-column table of facts (name, value) from `y`, `width` wide at `x`; returns the y below it.
+double factTable(QPainter& p, double x, double y, double width, const QString& heading, const QList<Fact>& facts)
+{
+    p.setFont(font(15, true));
+    p.drawText(QPointF(x, y + 15), heading);
+    y += 24;
+    const double nameWidth = width * 0.5;
+    for (const Fact& f : facts) {
+        p.setFont(font(13));
+        p.setPen(QColor(70, 70, 70));
+        const QRectF name(x, y, nameWidth - 6, 1e4);
+        const QRectF nameBox = QFontMetricsF(p.font()).boundingRect(name, Qt::TextWordWrap, f.name);
+        p.drawText(name, Qt::TextWordWrap, f.name);
+        p.setPen(Qt::black);
+        const QRectF value(x + nameWidth, y, width - nameWidth, 1e4);
+        const QRectF valueBox = QFontMetricsF(p.font()).boundingRect(value, Qt::TextWordWrap, f.value);
+        p.drawText(value, Qt::TextWordWrap, f.value);
+        y += std::max(nameBox.height(), valueBox.height()) + 4;
+    }
+    return y;
+}
+
+void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& title, const QString& notes,
+                         const ShotFacts& facts, const QStringList& noteChanges)
 {
     double y = 60.0;
-    y = paragraph(p, y, title.isEmpty() ? QStringLiteral("Shot") : title, 26, true);
-    y = paragraph(p, y, QStringLiteral("Lesson"), 18, true);
-    y = paragraph(p, y, notes.isEmpty() ? QStringLiteral("(This setup has no notes.)") : notes, 15);
-    y += 10;
-    y = paragraph(p, y, QStringLiteral("Outcome"), 18, true);
+    y = paragraph(p, y, title.isEmpty() ? tr("Shot") : title, 26, true);
+    y = paragraph(p, y, tr("Lesson"), 18, true);
+    y = paragraph(p, y, notes.isEmpty() ? tr("(This setup has no notes.)") : notes, 15);
+    if (!noteChanges.isEmpty()) {
+        p.setPen(QColor(170, 60, 0));
+        y = paragraph(p, y, tr("Note: these notes were written for the shot before these changes: %1. The tables and "
+                               "figures of this report are the shot as it is now.")
+                                .arg(noteChanges.join(QStringLiteral("; "))),
+                      14, true);
+        p.setPen(Qt::black);
+    }
+    if (!facts.shot.isEmpty() || !facts.physics.isEmpty()) {
+        y += 6;
+        const double half = (kWidth - 2 * kMargin - 30) / 2;
+        const double left = facts.shot.isEmpty() ? y : factTable(p, kMargin, y, half, tr("The shot"), facts.shot);
+        const double right = factTable(p, kMargin + half + 30, y, half, tr("The physics"), facts.physics);
+        y = std::max(left, right) + 10;
+    }
+    y += 6;
+    y = paragraph(p, y, tr("Outcome"), 18, true);
     const ShotOutcome o = shotOutcome(r);
     QStringList lines;
-    lines << QStringLiteral("Struck ball: %1").arg(o.struckBall >= 0 ? id(r, o.struckBall) : QStringLiteral("none (no shot)"));
-    lines << QStringLiteral("First contact: %1").arg(
-        o.firstContact ? QStringLiteral("%1 at %2 s").arg(id(r, o.firstContact->ball)).arg(o.firstContact->time, 0, 'f', 4)
-                       : QStringLiteral("none"));
-    lines << QStringLiteral("Cushions before the first contact: %1").arg(o.cushionsBeforeFirstContact);
+    lines << tr("Struck ball: %1").arg(o.struckBall >= 0 ? id(r, o.struckBall) : tr("none (no shot)"));
+    lines << tr("First contact: %1").arg(
+        o.firstContact ? tr("%1 at %2 s").arg(id(r, o.firstContact->ball)).arg(o.firstContact->time, 0, 'f', 4) : tr("none"));
+    lines << tr("Cushions before the first contact: %1").arg(o.cushionsBeforeFirstContact);
     QStringList pocketed;
     for (const PocketedBall& b : o.pocketed)
-        pocketed << QStringLiteral("%1 in %2 at %3 s").arg(id(r, b.ball), QString::fromStdString(r.table.pockets[b.pocket].id))
-                        .arg(b.time, 0, 'f', 4);
-    lines << QStringLiteral("Pocketed: %1").arg(pocketed.isEmpty() ? QStringLiteral("none") : pocketed.join(QStringLiteral("; ")));
-    lines << QStringLiteral("Struck ball pocketed: %1").arg(o.struckBallPocketed ? QStringLiteral("yes") : QStringLiteral("no"));
-    lines << QStringLiteral("The shot ends at %1 s, after %2 events.").arg(r.endTime, 0, 'f', 4).arg(r.events.size());
+        pocketed << tr("%1 in the %2 at %3 s").arg(id(r, b.ball), displayElementName(r.table.pockets[b.pocket].id)).arg(b.time, 0, 'f', 4);
+    lines << tr("Pocketed: %1").arg(pocketed.isEmpty() ? tr("none") : pocketed.join(QStringLiteral("; ")));
+    lines << tr("Struck ball pocketed: %1").arg(o.struckBallPocketed ? tr("yes") : tr("no"));
+    lines << tr("The shot ends at %1 s, after %2 events.").arg(r.endTime, 0, 'f', 4).arg(r.events.size());
     y = paragraph(p, y, lines.join(QLatin1Char('\n')), 15);
     y += 10;
-    y = paragraph(p, y, QStringLiteral("Balls: cushion contacts and final positions"), 18, true);
+    y = paragraph(p, y, tr("Balls: cushion contacts and final positions"), 18, true);
     p.setFont(font(14, true));
-    const double cols[] = {kMargin, kMargin + 160, kMargin + 320, kMargin + 520};
-    p.drawText(QPointF(cols[0], y + 14), QStringLiteral("ball"));
-    p.drawText(QPointF(cols[1], y + 14), QStringLiteral("cushions"));
-    p.drawText(QPointF(cols[2], y + 14), QStringLiteral("state"));
-    p.drawText(QPointF(cols[3], y + 14), QStringLiteral("position x, y (m)"));
+    const double cols[] = {kMargin, kMargin + 160, kMargin + 320, kMargin + 600};
+    p.drawText(QPointF(cols[0], y + 14), tr("ball"));
+    p.drawText(QPointF(cols[1], y + 14), tr("cushions"));
+    p.drawText(QPointF(cols[2], y + 14), tr("state"));
+    p.drawText(QPointF(cols[3], y + 14), tr("position x, y (m)"));
     y += 24;
     p.setFont(font(14));
     for (std::size_t b = 0; b < r.balls.size() && y < kHeight - 80; ++b) {
@@ -106,22 +150,66 @@ void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& 
         p.drawText(QPointF(cols[0], y + 14), id(r, static_cast<int>(b)));
         p.drawText(QPointF(cols[1], y + 14), QString::number(o.cushionHits[b]));
         p.drawText(QPointF(cols[2], y + 14),
-                   s.motion == MotionState::Pocketed ? QStringLiteral("pocketed (%1)").arg(QString::fromStdString(r.table.pockets[s.pocket].id))
-                                                     : text(toString(s.motion)));
+                   s.motion == MotionState::Pocketed ? tr("in the %1").arg(displayElementName(r.table.pockets[s.pocket].id))
+                                                     : displayName(s.motion));
         if (s.motion != MotionState::Pocketed)
             p.drawText(QPointF(cols[3], y + 14), QStringLiteral("%1, %2").arg(s.position.x(), 0, 'f', 4).arg(s.position.y(), 0, 'f', 4));
         y += 20;
     }
 }
 
+// The key collision's derivation: its title, the momentum and energy figure, then every step (title,
+// law, formula, results) as far as the page goes.
+void keyCollisionPage(QPainter& p, const SimulationResult& r, const std::optional<CueStrike>& shot)
+{
+    double y = paragraph(p, 60.0, tr("The key collision, derived"), 18, true);
+    const int index = LessonReport::keyCollision(r);
+    if (index < 0) {
+        paragraph(p, y, tr("This shot has no collision."), 15);
+        return;
+    }
+    const explain::Explanation e = explain::explain(r, index, shot);
+    y = paragraph(p, y, QStringLiteral("%1 %2 (%3 s)").arg(eventNumber(index), QString::fromStdString(e.title)).arg(e.time, 0, 'f', 4), 15, true);
+    if (!e.model.empty()) y = paragraph(p, y, tr("Model: %1").arg(QString::fromStdString(e.model)), 13);
+    p.setFont(font(13));
+    const QRectF figure(kMargin, y, kWidth - 2 * kMargin, 300);
+    ConservationWidget::paintFigure(p, figure, e);
+    p.setPen(QPen(QColor(160, 160, 160), 0.6));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(figure);
+    p.setPen(Qt::black);
+    y = figure.bottom() + 14;
+    const double bottom = kHeight - 70;
+    for (const explain::Step& step : e.steps) {
+        QString body;
+        if (!step.law.empty()) body += QString::fromStdString(step.law) + QLatin1Char('\n');
+        if (!step.formula.empty()) body += QString::fromStdString(explain::markupToText(step.formula)) + QLatin1Char('\n');
+        QStringList results;
+        for (const explain::Quantity& q : step.results)
+            results << QStringLiteral("%1 = %2%3").arg(QString::fromStdString(explain::markupToText(q.symbol)),
+                                                      QString::fromStdString(explain::readable(q.value)),
+                                                      q.unit.empty() ? QString() : QLatin1Char(' ') + QString::fromStdString(q.unit));
+        if (!results.isEmpty()) body += results.join(QStringLiteral(",  "));
+        p.setFont(font(12));
+        const double need = QFontMetricsF(p.font()).boundingRect(QRectF(0, 0, kWidth - 2 * kMargin, 1e6), Qt::TextWordWrap, body).height() + 24;
+        if (y + need > bottom) {
+            paragraph(p, y, tr("… the rest of the derivation: File → Export → Explanation."), 12);
+            return;
+        }
+        y = paragraph(p, y, QString::fromStdString(step.title), 13, true) - 4;
+        y = paragraph(p, y, body.trimmed(), 12);
+    }
+}
+
 void eventPage(QPainter& p, const SimulationResult& r, int first, int count, bool heading)
 {
     double y = 60.0;
-    if (heading) y = paragraph(p, y, QStringLiteral("Events"), 18, true);
+    if (heading) y = paragraph(p, y, tr("Events"), 18, true);
     const double cols[] = {kMargin, kMargin + 50, kMargin + 160, kMargin + 300, kMargin + 480, kMargin + 680};
     p.setFont(font(13, true));
-    const char* headers[] = {"#", "time (s)", "type", "balls", "cushion / pocket", "speed before \u2192 after (m/s)"};
-    for (int c = 0; c < 6; ++c) p.drawText(QPointF(cols[c], y + 14), QString::fromUtf8(headers[c]));
+    const QString headers[] = {QStringLiteral("#"), tr("time (s)"), tr("type"), tr("balls"), tr("cushion / pocket"),
+                               tr("speed before \u2192 after (m/s)")};
+    for (int c = 0; c < 6; ++c) p.drawText(QPointF(cols[c], y + 14), headers[c]);
     y += 22;
     p.setPen(QPen(QColor(160, 160, 160), 0.6));
     p.drawLine(QPointF(kMargin, y), QPointF(kWidth - kMargin, y));
@@ -136,17 +224,17 @@ void eventPage(QPainter& p, const SimulationResult& r, int first, int count, boo
 
 void plotsPage(QPainter& p, const SimulationResult& r)
 {
-    double y = paragraph(p, 60.0, QStringLiteral("Plots against time"), 18, true);
+    double y = paragraph(p, 60.0, tr("Plots against time"), 18, true);
     const struct {
         plots::Quantity q;
-        const char* title;
-    } charts[] = {{plots::Quantity::Speed, "Speed"},
-                  {plots::Quantity::SlipSpeed, "Slip speed at the cloth"},
-                  {plots::Quantity::SpinZ, "Side spin wz"},
-                  {plots::Quantity::KineticEnergy, "Kinetic energy"}};
+        QString title;
+    } charts[] = {{plots::Quantity::Speed, tr("Speed")},
+                  {plots::Quantity::SlipSpeed, tr("Slip speed at the cloth")},
+                  {plots::Quantity::SpinZ, tr("Side spin ωz")},
+                  {plots::Quantity::KineticEnergy, tr("Kinetic energy")}};
     const double h = (kHeight - y - 80.0) / 4.0;
     for (const auto& c : charts) {
-        paintChart(p, QRectF(kMargin, y, kWidth - 2 * kMargin, h - 16), QString::fromUtf8(c.title),
+        paintChart(p, QRectF(kMargin, y, kWidth - 2 * kMargin, h - 16), c.title,
                    text(plots::unit(c.q)), chartLines(r, c.q), r);
         y += h;
     }
@@ -159,6 +247,27 @@ LessonReport::LessonReport(std::shared_ptr<const SimulationResult> result, QStri
 {
 }
 
+LessonReport::LessonReport(std::shared_ptr<const SimulationResult> result, const Setup& setup, QStringList noteChanges)
+    : result_(std::move(result)), title_(QString::fromStdString(setup.name)), notes_(QString::fromStdString(setup.notes)),
+      facts_(shotFacts(setup)), shot_(setup.shot), noteChanges_(std::move(noteChanges))
+{
+}
+
+int LessonReport::keyCollision(const SimulationResult& r)
+{
+    const ShotOutcome o = shotOutcome(r);
+    int first = -1;
+    for (int i = 0; i < static_cast<int>(r.events.size()); ++i) {
+        const Event& e = r.events[static_cast<std::size_t>(i)];
+        if (!isCollision(e.kind)) continue;
+        if (first < 0) first = i;
+        if (o.firstContact && e.kind == EventKind::BallBall && e.time == o.firstContact->time &&
+            (e.balls[0] == o.struckBall || e.balls[1] == o.struckBall))
+            return i;
+    }
+    return first;
+}
+
 QStringList LessonReport::eventRow(const SimulationResult& r, int i)
 {
     const Event& e = r.events[static_cast<std::size_t>(i)];
@@ -166,12 +275,12 @@ QStringList LessonReport::eventRow(const SimulationResult& r, int i)
     QString balls = id(r, e.balls[0]);
     if (two) balls += QStringLiteral(", ") + id(r, e.balls[1]);
     QString where;
-    if (e.kind == EventKind::BallCushion) where = QString::fromStdString(r.table.cushions[e.cushion].id);
-    if (e.kind == EventKind::BallJaw) where = QString::fromStdString(r.table.jaws[e.jaw].id);
-    if (e.kind == EventKind::BallPocket) where = QString::fromStdString(r.table.pockets[e.pocket].id);
+    if (e.kind == EventKind::BallCushion) where = displayElementName(r.table.cushions[e.cushion].id);
+    if (e.kind == EventKind::BallJaw) where = displayElementName(r.table.jaws[e.jaw].id);
+    if (e.kind == EventKind::BallPocket) where = displayElementName(r.table.pockets[e.pocket].id);
     QString speeds = QStringLiteral("%1 \u2192 %2").arg(e.before[0].velocity.norm(), 0, 'f', 3).arg(e.after[0].velocity.norm(), 0, 'f', 3);
     if (two) speeds += QStringLiteral("; %1 \u2192 %2").arg(e.before[1].velocity.norm(), 0, 'f', 3).arg(e.after[1].velocity.norm(), 0, 'f', 3);
-    return {eventNumber(i), QString::number(e.time, 'f', 5), text(toString(e.kind)), balls, where, speeds};
+    return {eventNumber(i), QString::number(e.time, 'f', 5), displayName(e.kind), balls, where, speeds};
 }
 
 int LessonReport::eventPages() const
@@ -183,32 +292,32 @@ int LessonReport::eventPages() const
 bool LessonReport::write(const QString& path, QString* error, const Progress& progress) const
 {
     if (!result_) {
-        if (error) *error = QStringLiteral("%1: there is no simulation to report").arg(path);
+        if (error) *error = QCoreApplication::translate("cuelab", "%1: there is no simulation to report").arg(path);
         return false;
     }
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
-        if (error) *error = QStringLiteral("%1: cannot write the file: %2").arg(path, file.errorString());
+        if (error) *error = QCoreApplication::translate("cuelab", "%1: cannot write the file: %2").arg(path, file.errorString());
         return false;
     }
     const int pages = pageCount();
     bool cancelled = false;
     {
         QPdfWriter pdf(&file);
-        pdf.setTitle(title_.isEmpty() ? QStringLiteral("CueLab lesson report") : title_);
+        pdf.setTitle(title_.isEmpty() ? QCoreApplication::translate("cuelab", "CueLab lesson report") : title_);
         pdf.setCreator(QStringLiteral("CueLab"));
         pdf.setResolution(200);
         pdf.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Portrait, QMarginsF(10, 10, 10, 10),
                                       QPageLayout::Millimeter));
         QPainter painter;
         if (!painter.begin(&pdf)) {
-            if (error) *error = QStringLiteral("%1: cannot draw the PDF").arg(path);
+            if (error) *error = QCoreApplication::translate("cuelab", "%1: cannot draw the PDF").arg(path);
             file.cancelWriting();
             return false;
         }
         painter.setRenderHint(QPainter::Antialiasing);
         Pages layout(pdf, painter);
-        const QString header = QStringLiteral("CueLab lesson report \u2014 ") + (title_.isEmpty() ? QStringLiteral("untitled shot") : title_);
+        const QString header = QCoreApplication::translate("cuelab", "CueLab lesson report \u2014 %1").arg(title_.isEmpty() ? QCoreApplication::translate("cuelab", "untitled shot") : title_);
         int page = 1;
         auto next = [&]() {
             if (progress && !progress(page, pages)) cancelled = true;
@@ -216,12 +325,19 @@ bool LessonReport::write(const QString& path, QString* error, const Progress& pr
             return !cancelled;
         };
         layout.begin(page, pages, header);
-        const ShotDiagram diagram(result_, {title_, QString()});
+        DiagramText text{title_, QString()};
+        text.facts = facts_;
+        const ShotDiagram diagram(result_, text);
         diagram.paint(painter, QRectF(kMargin, 60, kWidth - 2 * kMargin, kHeight - 140));
         if (next()) {
             layout.begin(page, pages, header);
-            notesAndOutcomePage(painter, *result_, title_, notes_);
+            notesAndOutcomePage(painter, *result_, title_, notes_, facts_, noteChanges_);
             bool going = next();
+            if (going) {
+                layout.begin(page, pages, header);
+                keyCollisionPage(painter, *result_, shot_);
+                going = next();
+            }
             for (int k = 0; going && k < eventPages(); ++k) {
                 layout.begin(page, pages, header);
                 eventPage(painter, *result_, k * kEventRowsPerPage, kEventRowsPerPage, k == 0);
@@ -241,7 +357,7 @@ bool LessonReport::write(const QString& path, QString* error, const Progress& pr
         return false;
     }
     if (!file.commit()) {
-        if (error) *error = QStringLiteral("%1: cannot write the file: %2").arg(path, file.errorString());
+        if (error) *error = QCoreApplication::translate("cuelab", "%1: cannot write the file: %2").arg(path, file.errorString());
         return false;
     }
     return true;

@@ -1,10 +1,15 @@
 #pragma once
-// The printable lesson report (PDF, A4 portrait, several pages): the shot diagram with its caption;
-// the lesson's notes and the outcome in full (first contact, pockets, cushions, final positions); the
-// event table (as many pages as it needs); the plots (speed, slip speed, side spin, kinetic energy).
+// The printable lesson report (PDF, A4 portrait, several pages): the shot diagram with its caption
+// and the shot's facts; the lesson's notes (flagged when they no longer match the setup), the shot
+// and the physics as a table (ShotFacts.h) and the outcome in full (first contact, pockets, cushions,
+// final positions); the key collision's derivation with its momentum and energy figure (core/explain,
+// the same derivation as the Explain dock); the event table (as many pages as it needs); the plots
+// (speed, slip speed, side spin, kinetic energy). Every word a person reads is translated.
 // Written atomically (QSaveFile); the writer reports progress page by page and can be cancelled, in
 // which case any existing file is left as it was. Painting only: write() may run on a worker thread.
 
+#include "Setup.h"
+#include "ShotFacts.h"
 #include "Simulation.h"
 
 #include <QString>
@@ -12,19 +17,28 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace cuelab {
 
 class LessonReport {
 public:
+    // Without the setup: no shot or physics table, no derivation of the cue strike's numbers.
     LessonReport(std::shared_ptr<const SimulationResult> result, QString title, QString notes);
+    // `noteChanges`: what changed since the notes were written (factChanges); printed beside them.
+    LessonReport(std::shared_ptr<const SimulationResult> result, const Setup& setup, QStringList noteChanges = {});
+
+    // The collision the report derives: the struck ball's first contact with a ball, else the first
+    // collision of any kind; -1 when the shot has none.
+    static int keyCollision(const SimulationResult& result);
 
     static constexpr int kEventRowsPerPage = 40;
     // One row of the event table: #N (from 1, as everywhere a person reads), time, type, balls,
     // cushion or pocket, speeds before and after.
     static QStringList eventRow(const SimulationResult& result, int index);
     int eventPages() const;
-    int pageCount() const { return 3 + eventPages(); }  // diagram, notes and outcome, events, plots
+    // diagram; notes, facts and outcome; key collision; events; plots
+    int pageCount() const { return 4 + eventPages(); }
 
     // progress(done, total) after each page; returning false cancels (then *error = "cancelled").
     using Progress = std::function<bool(int done, int total)>;
@@ -34,6 +48,9 @@ private:
     std::shared_ptr<const SimulationResult> result_;
     QString title_;
     QString notes_;
+    ShotFacts facts_;
+    std::optional<CueStrike> shot_;
+    QStringList noteChanges_;
 };
 
 }  // namespace cuelab

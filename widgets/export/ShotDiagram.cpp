@@ -2,8 +2,10 @@
 
 #include "Curves.h"
 #include "ShotOutcome.h"
+#include "outcome/OutcomeLine.h"
 #include "view/BallAppearance.h"
 
+#include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
@@ -20,6 +22,11 @@ constexpr double kMargin = 20.0;      // canvas units around the table's frame
 constexpr double kRailWidth = 0.10;   // m, the wooden frame drawn around the playing surface
 constexpr double kCaptionGap = 16.0;  // canvas units between the frame and the caption
 constexpr double kMarkerSize = 5.0;   // canvas units, half the diagonal of a contact marker
+constexpr double kFactPx = 13.0;      // canvas units, the facts table's text
+constexpr double kFactRow = 18.0;     // canvas units, one row of the facts table
+
+// Every tr() call of this file is in a member of ShotDiagram: lupdate gives them its context.
+QString tr(const char* text) { return QCoreApplication::translate("cuelab::ShotDiagram", text); }
 
 QColor fromLinear(const QVector3D& c)
 {
@@ -89,11 +96,11 @@ QString ShotDiagram::captionText() const
 {
     QString text;
     const ShotOutcome outcome = shotOutcome(*result_);
-    text += QStringLiteral("Outcome: ") + QString::fromStdString(outcomeSummary(*result_, outcome)) + QLatin1Char('\n');
+    text += tr("Outcome: %1").arg(outcomeLine(*result_, outcome)) + QLatin1Char('\n');
     const bool atEnd = time_ >= result_->endTime;
-    text += atEnd ? QStringLiteral("Balls where they rest (t = %1). ").arg(seconds(time_))
-                  : QStringLiteral("Balls at t = %1 of %2; paths dashed after it. ").arg(seconds(time_), seconds(result_->endTime));
-    text += QStringLiteral("Dashed rings: start positions. \u25C6 blue: ball-ball contact, \u25C6 red: cushion, \u25B2 pocketed.");
+    text += atEnd ? tr("Balls where they rest (t = %1). ").arg(seconds(time_))
+                  : tr("Balls at t = %1 of %2; paths dashed after it. ").arg(seconds(time_), seconds(result_->endTime));
+    text += tr("Dashed rings: start positions. \u25C6 blue: ball-ball contact, \u25C6 red: cushion, \u25B2 pocketed.");
     return text;
 }
 
@@ -103,9 +110,42 @@ double ShotDiagram::captionHeight() const
     double h = 0.0;
     if (!text_.title.isEmpty()) h += QFontMetricsF(pixelFont(22, true)).height() + 6;
     h += QFontMetricsF(pixelFont(14)).boundingRect(QRectF(0, 0, width, 1e6), Qt::TextWordWrap, captionText()).height() + 8;
+    h += factsHeight();
     if (!text_.notes.isEmpty())
         h += QFontMetricsF(pixelFont(14)).boundingRect(QRectF(0, 0, width, 1e6), Qt::TextWordWrap, text_.notes).height() + 4;
     return h;
+}
+
+// The shot on the left, the physics on the right, one fact a row (name in grey, value in black).
+double ShotDiagram::factsHeight() const
+{
+    const qsizetype rows = std::max(text_.facts.shot.size(), text_.facts.physics.size());
+    return rows > 0 ? static_cast<double>(rows + 1) * kFactRow + 8 : 0.0;
+}
+
+void ShotDiagram::paintFacts(QPainter& p, double y) const
+{
+    const double width = kCanvasWidth - 2 * kMargin;
+    const double column = (width - 20) / 2;
+    const auto table = [&](double x, const QString& heading, const QList<Fact>& facts) {
+        p.setFont(pixelFont(kFactPx, true));
+        p.setPen(Qt::black);
+        p.drawText(QRectF(x, y, column, kFactRow), Qt::AlignLeft | Qt::AlignVCenter, heading);
+        double row = y + kFactRow;
+        p.setFont(pixelFont(kFactPx));
+        const QFontMetricsF metrics(p.font());
+        for (const Fact& f : facts) {
+            p.setPen(QColor(90, 90, 90));
+            p.drawText(QRectF(x, row, column * 0.4, kFactRow), Qt::AlignLeft | Qt::AlignVCenter,
+                       metrics.elidedText(f.name, Qt::ElideRight, column * 0.4 - 4));
+            p.setPen(Qt::black);
+            p.drawText(QRectF(x + column * 0.4, row, column * 0.6, kFactRow), Qt::AlignLeft | Qt::AlignVCenter,
+                       metrics.elidedText(f.value, Qt::ElideRight, column * 0.6));
+            row += kFactRow;
+        }
+    };
+    if (!text_.facts.shot.isEmpty()) table(kMargin, tr("The shot"), text_.facts.shot);
+    if (!text_.facts.physics.isEmpty()) table(kMargin + column + 20, tr("The physics"), text_.facts.physics);
 }
 
 QColor ShotDiagram::ballColour(int ball) const
@@ -316,6 +356,20 @@ void ShotDiagram::paintBalls(QPainter& p, const QTransform& m) const
             p.setBrush(Qt::NoBrush);
             p.drawPath(ring);
         }
+        // A pocketed ball is not on the table: its label stands at its start, so every ball is named.
+        if (now.motion == MotionState::Pocketed) {
+            const BallLook look = ballLook(result_->table.kind, ball.id);
+            const QString label = look.number > 0 ? QString::number(look.number) : QString::fromStdString(ball.id);
+            p.setFont(pixelFont(12, true));
+            const QPointF c = m.map(QPointF(start.x(), start.y()));
+            const QRectF box = QFontMetricsF(p.font()).boundingRect(label).adjusted(-2, 0, 2, 0);
+            const QRectF placed = box.translated(c + QPointF(r + 3, r + 3) - box.topLeft());
+            p.setPen(Qt::NoPen);
+            p.setBrush(QColor(255, 255, 255, 210));
+            p.drawRect(placed);
+            p.setPen(pathColour(b));
+            p.drawText(placed, Qt::AlignCenter, label);
+        }
     }
     for (int b = 0; b < static_cast<int>(result_->balls.size()); ++b) {
         const Ball& ball = result_->balls[static_cast<std::size_t>(b)];
@@ -378,6 +432,8 @@ void ShotDiagram::paintCaption(QPainter& p) const
     const QRectF box = QFontMetricsF(p.font()).boundingRect(QRectF(0, 0, width, 1e6), Qt::TextWordWrap, caption);
     p.drawText(QRectF(kMargin, y, width, box.height()), Qt::TextWordWrap, caption);
     y += box.height() + 8;
+    paintFacts(p, y);
+    y += factsHeight();
     if (!text_.notes.isEmpty()) {
         p.setPen(QColor(50, 50, 50));
         const QRectF notes = QFontMetricsF(p.font()).boundingRect(QRectF(0, 0, width, 1e6), Qt::TextWordWrap, text_.notes);

@@ -2,12 +2,14 @@
 // A top-down shot diagram in print style (the drills players print, the figures of a handout): the
 // table's cushions and pockets, every ball numbered at the chosen time with its start marked, the
 // paths with arrows, a marker with its time at every contact, and a caption with the setup's name,
-// the outcome and the lesson's notes. Drawn with QPainter, so the same code paints on screen, into a
+// the outcome, the shot and physics as a table (ShotFacts.h) and the lesson's notes; every ball is
+// labelled (a pocketed ball at its start). Drawn with QPainter, so the same code paints on screen, into a
 // PNG, an SVG (QSvgGenerator), a PDF page (QPdfWriter) and `cuelab --screenshot OUT.svg|OUT.pdf`.
 //
 // The only circles drawn (QPainter::drawEllipse, <circle> in SVG) are the balls on the table at the
 // chosen time; pockets, start marks and markers are paths or polygons.
 
+#include "ShotFacts.h"
 #include "Simulation.h"
 
 #include <QColor>
@@ -24,6 +26,7 @@ namespace cuelab {
 struct DiagramText {
     QString title;  // the setup's name
     QString notes;  // the lesson text
+    ShotFacts facts;  // the shot and the physics, printed under the caption (none: not printed)
 };
 
 struct DiagramStyle {
@@ -61,6 +64,8 @@ private:
     void paintCaption(QPainter& p) const;
     QString captionText() const;
     double captionHeight() const;
+    double factsHeight() const;
+    void paintFacts(QPainter& p, double y) const;
     QColor ballColour(int ball) const;
     QColor pathColour(int ball) const;
 

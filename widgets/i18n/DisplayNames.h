@@ -8,6 +8,8 @@
 
 #include <QString>
 
+#include <string>
+
 namespace cuelab {
 
 QString displayName(MotionState state);
@@ -17,5 +19,10 @@ QString displayName(EventKind kind);
 // first (CONTRACT.md, Extensions version 2). Every surface of the window (Events list, Inspector,
 // Explain, Compare, plots, the transport, the report, exports) writes event numbers with it.
 QString eventNumber(int index);
+
+// A table element's id as a person reads it: "pocket-tr" → "top-right pocket", "rail-t-left" →
+// "top rail (left half)"; translated. An id it does not know shows as it is.
+QString displayElementName(const std::string& id);
+
 
 }  // namespace cuelab

@@ -1,9 +1,11 @@
 #include "LessonPanel.h"
 
 #include "editor/Document.h"
+#include "export/ShotFacts.h"
 
 #include <QEvent>
 #include <QFormLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QTimer>
@@ -42,6 +44,14 @@ LessonPanel::LessonPanel(Document* document, QWidget* parent) : QWidget(parent),
     notes_->setObjectName(QStringLiteral("lessonNotes"));
     notes_->setPlaceholderText(tr("What this shot teaches: write the lesson here."));
     notes_->setToolTip(tr("The setup's notes (saved in the file as \"notes\"); each finished edit is one undo step"));
+    stale_ = new QLabel(this);
+    stale_->setObjectName(QStringLiteral("lessonStaleNotes"));
+    stale_->setWordWrap(true);
+    stale_->setTextFormat(Qt::PlainText);
+    stale_->setStyleSheet(QStringLiteral("QLabel { color: #8a3b00; background: #fff1dc; border: 1px solid #e0a050; padding: 4px; }"));
+    stale_->setToolTip(tr("The notes describe the shot as it was when they were written. Undo the changes, or edit the "
+                          "notes to match the shot (that clears this flag). The lesson report prints the same warning."));
+    stale_->hide();
     pause_ = new QTimer(this);
     pause_->setSingleShot(true);
     pause_->setInterval(1200);
@@ -49,6 +59,7 @@ LessonPanel::LessonPanel(Document* document, QWidget* parent) : QWidget(parent),
     auto* form = new QFormLayout(this);
     form->setContentsMargins(4, 4, 4, 4);
     form->addRow(tr("Name"), name_);
+    form->addRow(stale_);
     form->addRow(notes_);
 
     connect(name_, &QLineEdit::editingFinished, this, &LessonPanel::commit);
@@ -80,6 +91,17 @@ void LessonPanel::load()
     if (name_->text() != name) name_->setText(name);
     if (notes_->toPlainText() != notes) notes_->setPlainText(notes);
     loading_ = false;
+    flagStaleNotes();
+}
+
+void LessonPanel::flagStaleNotes()
+{
+    const QStringList changes = document_->setup().notes.empty()
+                                    ? QStringList()
+                                    : factChanges(document_->notesWrittenFor(), document_->setup());
+    stale_->setVisible(!changes.isEmpty());
+    if (!changes.isEmpty())
+        stale_->setText(tr("These notes were written for the shot before these changes:\n• %1").arg(changes.join(QStringLiteral("\n• "))));
 }
 
 }  // namespace cuelab

@@ -1,5 +1,6 @@
 #include "OutcomePanel.h"
 
+#include "OutcomeLine.h"
 #include "i18n/DisplayNames.h"
 
 #include <QHeaderView>
@@ -66,6 +67,13 @@ OutcomePanel::OutcomePanel(QWidget* parent) : QWidget(parent)
     setResult(nullptr);
 }
 
+void OutcomePanel::setRecordingResidual(const QString& text)
+{
+    if (text == recordingResidual_) return;
+    recordingResidual_ = text;
+    setResult(result_);
+}
+
 void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
 {
     result_ = std::move(result);
@@ -79,7 +87,7 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
     }
     const SimulationResult& r = *result_;
     outcome_ = shotOutcome(r);
-    summary_ = QString::fromStdString(outcomeSummary(r, outcome_));
+    summary_ = outcomeLine(r, outcome_);
     header_->setText(summary_);
     auto id = [&](int ball) { return QString::fromStdString(r.balls.at(static_cast<std::size_t>(ball)).id); };
     auto addFact = [&](const QString& what, const QString& value, int event = -1, const QString& tip = {}) {
@@ -103,9 +111,12 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
     if (o.pocketed.empty()) addFact(tr("Pocketed"), tr("none"));
     for (const PocketedBall& p : o.pocketed)
         addFact(tr("Pocketed"),
-                tr("%1 in %2 at %3 s").arg(id(p.ball), QString::fromStdString(r.table.pockets[p.pocket].id)).arg(p.time, 0, 'f', 4),
+                tr("%1 in the %2 at %3 s").arg(id(p.ball), displayElementName(r.table.pockets[p.pocket].id)).arg(p.time, 0, 'f', 4),
                 eventIndex(r, EventKind::BallPocket, p.ball, p.time));
     addFact(tr("Struck ball pocketed"), o.struckBall >= 0 && o.struckBallPocketed ? tr("yes (a scratch)") : tr("no"));
+    if (!recordingResidual_.isEmpty())
+        addFact(tr("Against the recording"), recordingResidual_, -1,
+                tr("RMSE (cm) of the recorded samples against the simulated balls (the Recording dock has the details)"));
     facts_->resizeColumnToContents(0);
 
     for (int b = 0; b < static_cast<int>(r.balls.size()); ++b) {
@@ -114,7 +125,7 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
         balls_->setItem(b, 0, item(id(b)));
         balls_->setItem(b, 1, item(QString::number(o.cushionHits[b])));
         const QString state = s.motion == MotionState::Pocketed
-                                  ? tr("in %1").arg(QString::fromStdString(r.table.pockets[s.pocket].id))
+                                  ? tr("in the %1").arg(displayElementName(r.table.pockets[s.pocket].id))
                                   : displayName(s.motion);
         balls_->setItem(b, 2, item(state));
         balls_->setItem(b, 3, item(s.motion == MotionState::Pocketed ? QString()

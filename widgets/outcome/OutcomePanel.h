@@ -23,6 +23,8 @@ public:
     void setResult(std::shared_ptr<const SimulationResult> result);
     const ShotOutcome& outcome() const { return outcome_; }
     QString summary() const { return summary_; }  // the status bar's line
+    // The residual against an open recording (issue 24), a row of the facts; empty: no row.
+    void setRecordingResidual(const QString& text);
     QTableWidget* factsTable() const { return facts_; }
     QTableWidget* ballsTable() const { return balls_; }
 
@@ -34,6 +36,7 @@ private:
     std::shared_ptr<const SimulationResult> result_;
     ShotOutcome outcome_;
     QString summary_;
+    QString recordingResidual_;
     QLabel* header_ = nullptr;
     QTableWidget* facts_ = nullptr;
     QTableWidget* balls_ = nullptr;

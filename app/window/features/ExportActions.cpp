@@ -42,10 +42,10 @@ bool eventsJson(const SimulationResult& result, const QString& path, QString* er
     return writeFileAtomically(path, QByteArray::fromStdString(cli::simulationJson(result)), error);
 }
 
-bool lessonReport(std::shared_ptr<const SimulationResult> result, const QString& title, const QString& notes,
+bool lessonReport(std::shared_ptr<const SimulationResult> result, const Setup& setup, const QStringList& noteChanges,
                   const QString& path, QString* error, const Progress& progress)
 {
-    const LessonReport report(std::move(result), title, notes);
+    const LessonReport report(std::move(result), setup, noteChanges);
     return report.write(path, error, [&](int done, int total) {
         return !progress || progress(static_cast<double>(done) / total);
     });

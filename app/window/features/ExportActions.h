@@ -4,9 +4,11 @@
 // file and the reason, and a file already there is left intact. The long ones take a progress
 // callback (fraction done, 0..1) that cancels the work by returning false (then *error = "cancelled").
 
+#include "Setup.h"
 #include "Simulation.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <memory>
@@ -26,8 +28,9 @@ bool trajectoryJson(const SimulationResult& result, double frameDt, const QStrin
 bool eventsCsv(const SimulationResult& result, const QString& path, QString* error);
 bool eventsJson(const SimulationResult& result, const QString& path, QString* error);
 
-// The lesson report (widgets/export/LessonReport): several PDF pages.
-bool lessonReport(std::shared_ptr<const SimulationResult> result, const QString& title, const QString& notes,
+// The lesson report (widgets/export/LessonReport): several PDF pages, with the setup's shot and
+// physics, and `noteChanges` (what changed since the notes were written) beside the notes.
+bool lessonReport(std::shared_ptr<const SimulationResult> result, const Setup& setup, const QStringList& noteChanges,
                   const QString& path, QString* error, const Progress& progress = {});
 
 }  // namespace cuelab::exports

@@ -8,6 +8,7 @@
 #include "editor/Document.h"
 #include "editor/Playback.h"
 #include "export/DiagramFiles.h"
+#include "export/ShotFacts.h"
 #include "view/Screenshot.h"
 #include "view/TableView.h"
 
@@ -179,7 +180,8 @@ void exportDiagram(MainWindow& window, bool pdf)
                              : askPath(window, tr("Export the Shot Diagram as SVG"), QStringLiteral(".svg"), tr("SVG images (*.svg)"));
     if (path.isEmpty()) return;
     const Setup& setup = window.document()->setup();
-    const DiagramText text{QString::fromStdString(setup.name), QString::fromStdString(setup.notes)};
+    DiagramText text{QString::fromStdString(setup.name), QString::fromStdString(setup.notes)};
+    text.facts = shotFacts(setup);
     // At the transport's time, unless it stands at the start: then where the balls come to rest.
     const double t = window.playback()->time() > 0.0 ? window.playback()->time() : -1.0;
     runInBackground(window, tr("Drawing the shot diagram..."), path, [result, text, t, path, pdf](const exports::Progress&, QString* error) {
@@ -220,15 +222,16 @@ void installExport(MainWindow& window)
         const QString path = askPath(*w, tr("Export the Lesson Report"), QStringLiteral("-report.pdf"), tr("PDF documents (*.pdf)"));
         if (path.isEmpty()) return;
         const Setup& setup = w->document()->setup();
+        const QStringList changes = setup.notes.empty() ? QStringList() : factChanges(w->document()->notesWrittenFor(), setup);
         runInBackground(*w, tr("Writing the lesson report..."), path,
-                        [result, path, title = QString::fromStdString(setup.name), notes = QString::fromStdString(setup.notes)](
-                            const exports::Progress& progress, QString* error) {
-                            return exports::lessonReport(result, title, notes, path, error, progress);
+                        [result, path, setup, changes](const exports::Progress& progress, QString* error) {
+                            return exports::lessonReport(result, setup, changes, path, error, progress);
                         });
     });
     report->setObjectName(QStringLiteral("exportReport"));
     report->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+R")));
-    report->setStatusTip(tr("A printable report: the diagram, the lesson's notes, the outcome, the event table, the plots"));
+    report->setStatusTip(tr("A printable report: the diagram, the lesson's notes, the shot and physics, the outcome, the key "
+                            "collision derived, the event table, the plots"));
     menu->addSeparator();
 
     struct Data {
