@@ -15,6 +15,8 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <optional>
+#include <utility>
 
 int main(int argc, char* argv[])
 {
@@ -46,6 +48,10 @@ int main(int argc, char* argv[])
                       QStringLiteral("The language of the interface: en or hu (default: the system's, from LANGUAGE, "
                                      "LC_ALL, LC_MESSAGES or LANG)."),
                       QStringLiteral("code")});
+    parser.addOption({QStringLiteral("layout"),
+                      QStringLiteral("Open with a named layout of View > Layouts: teach, coach, edit or reset (the first "
+                                     "start's)."),
+                      QStringLiteral("name")});
     parser.process(app);
 
     // The interface's language, before any window or picture is made (app/window/Translations.h).
@@ -74,9 +80,25 @@ int main(int argc, char* argv[])
         return 1;
     }
 
+    std::optional<cuelab::Arrangement> layout;
+    if (parser.isSet(QStringLiteral("layout"))) {
+        const QString name = parser.value(QStringLiteral("layout")).toLower();
+        const std::pair<const char*, cuelab::Arrangement> known[] = {{"teach", cuelab::Arrangement::Teach},
+                                                                     {"coach", cuelab::Arrangement::Coach},
+                                                                     {"edit", cuelab::Arrangement::Edit},
+                                                                     {"reset", cuelab::Arrangement::Default}};
+        for (const auto& [key, value] : known)
+            if (name == QLatin1String(key)) layout = value;
+        if (!layout) {
+            cuelab::printCommandLineError(QStringLiteral("--layout: expected teach, coach, edit or reset, found '%1'").arg(name));
+            return 2;
+        }
+    }
+
     cuelab::MainWindow window;
     window.showOnStart();  // maximised on the first start (up to 1920 px wide), else as left
     window.activateWindow();  // keyboard shortcuts work at once, even without a window manager
+    if (layout) window.arrange(*layout);
     const QStringList args = parser.positionalArguments();
     if (!args.isEmpty()) {
         // After the window is up, so that a refused file's message has a window to sit on.

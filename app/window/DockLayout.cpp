@@ -5,6 +5,8 @@
 #include <QEvent>
 #include <QLayout>
 #include <QMainWindow>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QTabBar>
 #include <QTimer>
 
@@ -213,6 +215,19 @@ QDockWidget* DockLayout::sideDock(Qt::DockWidgetArea area) const
     return widest;
 }
 
+int DockLayout::contentWidth(const QDockWidget* dock)
+{
+    // Every dock's content sits in a scroll area (MainWindow::addPanel): the width its panel needs
+    // is the panel's minimum, plus the vertical scroll bar and the frames around it.
+    const auto* scroll = qobject_cast<const QScrollArea*>(dock->widget());
+    const QWidget* content = scroll ? scroll->widget() : dock->widget();
+    if (!content) return 0;
+    int width = content->minimumSizeHint().width();
+    if (scroll) width += scroll->verticalScrollBar()->sizeHint().width() + 2 * scroll->frameWidth();
+    const QMargins margins = dock->contentsMargins();
+    return width + margins.left() + margins.right() + 2;
+}
+
 int DockLayout::sideWidth(Qt::DockWidgetArea area) const
 {
     const QDockWidget* d = sideDock(area);
@@ -242,7 +257,10 @@ void DockLayout::applyShares(int attempts)
     for (const auto& [area, share] : {std::pair{Qt::LeftDockWidgetArea, left_}, std::pair{Qt::RightDockWidgetArea, right_}}) {
         if (QDockWidget* d = sideDock(area)) {
             docks << d;
-            widths << std::max(kMinimumDockWidth, static_cast<int>(share * w));
+            // The share, but never narrower than the front panel's content (the Shot panel at
+            // 1280x800), as long as the side stays within kMaxShare of the window.
+            const int content = std::min(contentWidth(d), static_cast<int>(kMaxShare * w));
+            widths << std::max({kMinimumDockWidth, static_cast<int>(share * w), content});
         }
     }
     if (docks.isEmpty()) return;

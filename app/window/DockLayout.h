@@ -65,6 +65,7 @@ private:
     void wholeTabNames();
     void recordShares();
     int sideWidth(Qt::DockWidgetArea area) const;
+    static int contentWidth(const QDockWidget* dock);  // px the dock's panel needs beside its scroll bar
     QDockWidget* sideDock(Qt::DockWidgetArea area) const;
 
     static constexpr int kSettleMs = 40;  // after the last resize event, the docks take their shares

@@ -237,6 +237,16 @@ private slots:
         // The side columns run the whole height beside the view (the window's corners are theirs).
         const QDockWidget* shot = window.findChild<QDockWidget*>(QStringLiteral("ShotDock"));
         QVERIFY2(shot->height() >= window.tableView()->height(), qPrintable(describe(window)));
+        // The left column is as wide as the Shot panel's content from 1280x800 up: no sideways scrolling.
+        if (size.width() >= 1280) {
+            const auto* scroll = qobject_cast<const QScrollArea*>(shot->widget());
+            QVERIFY(scroll);
+            QTRY_VERIFY2_WITH_TIMEOUT(scroll->horizontalScrollBar()->maximum() == 0,
+                                      qPrintable(describe(window) + QStringLiteral(" shot content %1 in %2")
+                                                                        .arg(scroll->widget()->minimumSizeHint().width())
+                                                                        .arg(scroll->viewport()->width())),
+                                      3000);
+        }
     }
 
     // View > Layouts: each named layout shows its panels in front, and only those; Reset Layout
