@@ -13,6 +13,7 @@ void installFeatures(MainWindow& window)
     installExplain(window);
     installAnalysis(window);
     installCompare(window);
+    installRecording(window);
 }
 
 }  // namespace cuelab

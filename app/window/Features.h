@@ -18,5 +18,6 @@ void installExport(MainWindow& window);   // issue 10: File > Export
 void installExplain(MainWindow& window);  // features/ExplainFeature.cpp: Explain and Lesson docks, export
 void installAnalysis(MainWindow& window);  // features/AnalysisFeature.cpp: the Analysis dock and menu
 void installCompare(MainWindow& window);  // features/CompareFeature.cpp
+void installRecording(MainWindow& window);  // features/RecordingFeature.cpp: recorded shots (issue 24)
 
 }  // namespace cuelab

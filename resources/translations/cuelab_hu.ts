@@ -250,6 +250,26 @@
         <source>In the table view: the selected collision&apos;s contact point, contact normal and impulse, and each ball&apos;s momentum before and after, as labelled arrows</source>
         <translation>Az asztalnézetben: a kijelölt ütközés érintkezési pontja, érintkezési normálisa és erőlökése, valamint minden golyó lendülete előtte és utána, feliratozott nyilakként</translation>
     </message>
+    <message>
+        <source>f(τ), the gap, from t₀ = %1 s</source>
+        <translation>f(τ), a rés, t₀ = %1 s-tól</translation>
+    </message>
+    <message>
+        <source>τ = %1 s</source>
+        <translation>τ = %1 s</translation>
+    </message>
+    <message>
+        <source>blue: f(τ); dashed: f = 0; red dot: the chosen root τ* = %1 s</source>
+        <translation>kék: f(τ); szaggatott: f = 0; piros pont: a választott gyök, τ* = %1 s</translation>
+    </message>
+    <message>
+        <source>Time of impact</source>
+        <translation>Az ütközés időpontja</translation>
+    </message>
+    <message>
+        <source>Momentum and energy</source>
+        <translation>Lendület és energia</translation>
+    </message>
 </context>
 <context>
     <name>cuelab</name>
@@ -378,10 +398,6 @@
         <translation>A leckejegyzet írása…</translation>
     </message>
     <message>
-        <source>A printable report: the diagram, the lesson&apos;s notes, the outcome, the event table, the plots</source>
-        <translation>Nyomtatható jegyzet: az ábra, a lecke megjegyzései, az eredmény, az eseménytáblázat, a grafikonok</translation>
-    </message>
-    <message>
         <source>Writing the trajectory...</source>
         <translation>A pálya írása…</translation>
     </message>
@@ -436,6 +452,474 @@
     <message>
         <source>Arrows: 1 N·s = %1 m</source>
         <translation>Nyilak: 1 N·s = %1 m</translation>
+    </message>
+    <message>
+        <source>A printable report: the diagram, the lesson&apos;s notes, the shot and physics, the outcome, the key collision derived, the event table, the plots</source>
+        <translation>Nyomtatható jelentés: az ábra, a lecke jegyzetei, az ütés és a fizika, a eredmény, a kulcsütközés levezetése, az eseménytáblázat, a grafikonok</translation>
+    </message>
+    <message>
+        <source>recorded %1</source>
+        <translation>rögzített %1</translation>
+    </message>
+    <message>
+        <source>red dots: recorded samples of %1</source>
+        <translation>piros pontok: %1 rögzített mintái</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>Felvétel</translation>
+    </message>
+    <message>
+        <source>Open Recording</source>
+        <translation>Felvétel megnyitása</translation>
+    </message>
+    <message>
+        <source>%1: the recorded balls do not fit on the table</source>
+        <translation>%1: a rögzített golyók nem férnek el az asztalon</translation>
+    </message>
+    <message>
+        <source>The current shot has no ball &quot;%1&quot;. Start a new shot from the recording (its table, its balls where they were first tracked and a strike guessed from their first motion)?</source>
+        <translation>A mostani ütésben nincs „%1” golyó. Induljon új ütés a felvételből (az asztala, a golyói az első követett helyükön, és az első mozgásukból becsült ütés)?</translation>
+    </message>
+    <message>
+        <source>Opened the recording %1</source>
+        <translation>Megnyitva a felvétel: %1</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recording…</source>
+        <translation>&amp;Felvétel megnyitása…</translation>
+    </message>
+    <message>
+        <source>Open a tracked shot (cuelab-recording JSON or CSV) and show it against the simulation</source>
+        <translation>Követett ütés megnyitása (cuelab-recording JSON vagy CSV) és összevetése a szimulációval</translation>
+    </message>
+    <message>
+        <source>Recordings (*.json *.csv);;All files (*)</source>
+        <translation>Felvételek (*.json *.csv);;Minden fájl (*)</translation>
+    </message>
+    <message>
+        <source>Fit Strike to Recording</source>
+        <translation>Ütés illesztése a felvételhez</translation>
+    </message>
+    <message>
+        <source>Find the strike whose simulation follows the open recording best (one undoable edit)</source>
+        <translation>Az ütés megkeresése, amelynek szimulációja a legjobban követi a megnyitott felvételt (egy visszavonható szerkesztés)</translation>
+    </message>
+    <message>
+        <source>page %1 of %2</source>
+        <translation>%1. oldal / %2</translation>
+    </message>
+    <message>
+        <source>Shot</source>
+        <translation>Ütés</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lecke</translation>
+    </message>
+    <message>
+        <source>(This setup has no notes.)</source>
+        <translation>(Ehhez a felálláshoz nincs jegyzet.)</translation>
+    </message>
+    <message>
+        <source>Note: these notes were written for the shot before these changes: %1. The tables and figures of this report are the shot as it is now.</source>
+        <translation>Figyelem: ezek a jegyzetek az ütés alábbi változtatások előtti állapotához készültek: %1. A jelentés táblázatai és ábrái az ütést mostani állapotában mutatják.</translation>
+    </message>
+    <message>
+        <source>The shot</source>
+        <translation>Az ütés</translation>
+    </message>
+    <message>
+        <source>The physics</source>
+        <translation>A fizika</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Eredmény</translation>
+    </message>
+    <message>
+        <source>Struck ball: %1</source>
+        <translation>Megütött golyó: %1</translation>
+    </message>
+    <message>
+        <source>none (no shot)</source>
+        <translation>nincs (nincs ütés)</translation>
+    </message>
+    <message>
+        <source>First contact: %1</source>
+        <translation>Első érintkezés: %1</translation>
+    </message>
+    <message>
+        <source>%1 at %2 s</source>
+        <translation>%1, %2 s-nál</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nincs</translation>
+    </message>
+    <message>
+        <source>Cushions before the first contact: %1</source>
+        <translation>Mantinelek az első érintkezés előtt: %1</translation>
+    </message>
+    <message>
+        <source>%1 in the %2 at %3 s</source>
+        <translation>%1: %2ban, %3 s-nál</translation>
+    </message>
+    <message>
+        <source>Pocketed: %1</source>
+        <translation>Lyukba esett: %1</translation>
+    </message>
+    <message>
+        <source>Struck ball pocketed: %1</source>
+        <translation>A megütött golyó lyukba esett: %1</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>igen</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nem</translation>
+    </message>
+    <message>
+        <source>The shot ends at %1 s, after %2 events.</source>
+        <translation>Az ütés %1 s-nál ér véget, %2 esemény után.</translation>
+    </message>
+    <message>
+        <source>Balls: cushion contacts and final positions</source>
+        <translation>Golyók: mantinelérintések és végső helyzetek</translation>
+    </message>
+    <message>
+        <source>ball</source>
+        <translation>golyó</translation>
+    </message>
+    <message>
+        <source>cushions</source>
+        <translation>mantinelek</translation>
+    </message>
+    <message>
+        <source>state</source>
+        <translation>állapot</translation>
+    </message>
+    <message>
+        <source>position x, y (m)</source>
+        <translation>helyzet x, y (m)</translation>
+    </message>
+    <message>
+        <source>in the %1</source>
+        <translation>%1ban</translation>
+    </message>
+    <message>
+        <source>The key collision, derived</source>
+        <translation>A kulcsütközés levezetése</translation>
+    </message>
+    <message>
+        <source>This shot has no collision.</source>
+        <translation>Ebben az ütésben nincs ütközés.</translation>
+    </message>
+    <message>
+        <source>Model: %1</source>
+        <translation>Modell: %1</translation>
+    </message>
+    <message>
+        <source>… the rest of the derivation: File → Export → Explanation.</source>
+        <translation>… a levezetés többi része: Fájl → Exportálás → Magyarázat.</translation>
+    </message>
+    <message>
+        <source>Events</source>
+        <translation>Események</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>idő (s)</translation>
+    </message>
+    <message>
+        <source>type</source>
+        <translation>típus</translation>
+    </message>
+    <message>
+        <source>balls</source>
+        <translation>golyók</translation>
+    </message>
+    <message>
+        <source>cushion / pocket</source>
+        <translation>mantinel / lyuk</translation>
+    </message>
+    <message>
+        <source>speed before → after (m/s)</source>
+        <translation>sebesség előtte → utána (m/s)</translation>
+    </message>
+    <message>
+        <source>Plots against time</source>
+        <translation>Grafikonok az idő függvényében</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Sebesség</translation>
+    </message>
+    <message>
+        <source>Slip speed at the cloth</source>
+        <translation>Csúszási sebesség a posztón</translation>
+    </message>
+    <message>
+        <source>Side spin ωz</source>
+        <translation>Oldalpörgés ωz</translation>
+    </message>
+    <message>
+        <source>Kinetic energy</source>
+        <translation>Mozgási energia</translation>
+    </message>
+    <message>
+        <source>%1: there is no simulation to report</source>
+        <translation>%1: nincs jelenthető szimuláció</translation>
+    </message>
+    <message>
+        <source>%1: cannot write the file: %2</source>
+        <translation>%1: a fájl nem írható: %2</translation>
+    </message>
+    <message>
+        <source>CueLab lesson report</source>
+        <translation>CueLab leckejelentés</translation>
+    </message>
+    <message>
+        <source>%1: cannot draw the PDF</source>
+        <translation>%1: a PDF nem rajzolható meg</translation>
+    </message>
+    <message>
+        <source>CueLab lesson report — %1</source>
+        <translation>CueLab leckejelentés — %1</translation>
+    </message>
+    <message>
+        <source>untitled shot</source>
+        <translation>névtelen ütés</translation>
+    </message>
+    <message>
+        <source>Struck ball</source>
+        <translation>Megütött golyó</translation>
+    </message>
+    <message>
+        <source>Cue speed</source>
+        <translation>Dákósebesség</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Irány</translation>
+    </message>
+    <message>
+        <source>Tip offset, side</source>
+        <translation>Dákóvég eltolása, oldalt</translation>
+    </message>
+    <message>
+        <source>R (+ right)</source>
+        <translation>R (+ jobbra)</translation>
+    </message>
+    <message>
+        <source>Tip offset, height</source>
+        <translation>Dákóvég eltolása, magasság</translation>
+    </message>
+    <message>
+        <source>R (+ above centre)</source>
+        <translation>R (+ a közép fölött)</translation>
+    </message>
+    <message>
+        <source>Cue elevation</source>
+        <translation>Dákó emelése</translation>
+    </message>
+    <message>
+        <source>Cue mass</source>
+        <translation>Dákótömeg</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <source>Squirt (cue end mass)</source>
+        <translation>Kitérés (dákóvég tömege)</translation>
+    </message>
+    <message>
+        <source>g</source>
+        <translation>g</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Asztal</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>nyitva</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>zárva</translation>
+    </message>
+    <message>
+        <source>Sliding friction μs</source>
+        <translation>Csúszási súrlódás μs</translation>
+    </message>
+    <message>
+        <source>Rolling resistance μr</source>
+        <translation>Gördülési ellenállás μr</translation>
+    </message>
+    <message>
+        <source>Spin friction μsp</source>
+        <translation>Pörgési súrlódás μsp</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Nehézségi gyorsulás</translation>
+    </message>
+    <message>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <source>, μb from Alciatore&apos;s fit</source>
+        <translation>, μb Alciatore illesztéséből</translation>
+    </message>
+    <message>
+        <source>, μb = %1</source>
+        <translation>, μb = %1</translation>
+    </message>
+    <message>
+        <source>Ball-ball model</source>
+        <translation>Golyó–golyó modell</translation>
+    </message>
+    <message>
+        <source>Ball-ball restitution e</source>
+        <translation>Golyó–golyó ütközési szám e</translation>
+    </message>
+    <message>
+        <source>Ball-cushion model</source>
+        <translation>Golyó–mantinel modell</translation>
+    </message>
+    <message>
+        <source>Cushion restitution e</source>
+        <translation>Mantinel ütközési száma e</translation>
+    </message>
+    <message>
+        <source>Cushion friction μ</source>
+        <translation>Mantinel súrlódása μ</translation>
+    </message>
+    <message>
+        <source>the cue strike was removed</source>
+        <translation>a dákóütés megszűnt</translation>
+    </message>
+    <message>
+        <source>a cue strike was added</source>
+        <translation>dákóütés került be</translation>
+    </message>
+    <message>
+        <source>the balls (positions, motion or sizes)</source>
+        <translation>a golyók (helyzet, mozgás vagy méret)</translation>
+    </message>
+    <message>
+        <source>bottom-left pocket</source>
+        <translation>bal alsó lyuk</translation>
+    </message>
+    <message>
+        <source>bottom-right pocket</source>
+        <translation>jobb alsó lyuk</translation>
+    </message>
+    <message>
+        <source>top-left pocket</source>
+        <translation>bal felső lyuk</translation>
+    </message>
+    <message>
+        <source>top-right pocket</source>
+        <translation>jobb felső lyuk</translation>
+    </message>
+    <message>
+        <source>bottom side pocket</source>
+        <translation>alsó középső lyuk</translation>
+    </message>
+    <message>
+        <source>top side pocket</source>
+        <translation>felső középső lyuk</translation>
+    </message>
+    <message>
+        <source>bottom rail</source>
+        <translation>alsó mantinel</translation>
+    </message>
+    <message>
+        <source>top rail</source>
+        <translation>felső mantinel</translation>
+    </message>
+    <message>
+        <source>left rail</source>
+        <translation>bal mantinel</translation>
+    </message>
+    <message>
+        <source>right rail</source>
+        <translation>jobb mantinel</translation>
+    </message>
+    <message>
+        <source>left half</source>
+        <translation>bal fele</translation>
+    </message>
+    <message>
+        <source>right half</source>
+        <translation>jobb fele</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>jaw of the %1, %2</source>
+        <translation>%1 pofája, %2</translation>
+    </message>
+    <message>
+        <source>facing of the %1, %2</source>
+        <translation>%1 oldallapja, %2</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>1 cushion</source>
+        <translation>1 mantinel</translation>
+    </message>
+    <message>
+        <source>%1 cushions</source>
+        <translation>%1 mantinel</translation>
+    </message>
+    <message>
+        <source>no shot</source>
+        <translation>nincs ütés</translation>
+    </message>
+    <message>
+        <source>%1 → %2 at %3, %4 before</source>
+        <translation>%1 → %2, %3-nál, előtte %4</translation>
+    </message>
+    <message>
+        <source>%1 touched no ball, %2</source>
+        <translation>%1 nem ért golyót, %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2, %3)</source>
+        <translation>%1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>; pocketed: %1</source>
+        <translation>; lyukba esett: %1</translation>
+    </message>
+    <message>
+        <source>; %1 pocketed too</source>
+        <translation>; %1 is lyukba esett</translation>
+    </message>
+    <message>
+        <source>%1, %2 × %3 m</source>
+        <translation>%1, %2 × %3 m</translation>
+    </message>
+    <message>
+        <source>Pockets</source>
+        <translation>Lyukak</translation>
     </message>
 </context>
 <context>
@@ -1592,6 +2076,16 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <source>Name</source>
         <translation>Név</translation>
     </message>
+    <message>
+        <source>The notes describe the shot as it was when they were written. Undo the changes, or edit the notes to match the shot (that clears this flag). The lesson report prints the same warning.</source>
+        <translation>A jegyzetek az ütést az írásuk idején érvényes állapotában írják le. Vonja vissza a változtatásokat, vagy igazítsa a jegyzeteket az ütéshez (ez eltünteti ezt a jelzést). A leckejelentés ugyanezt a figyelmeztetést nyomtatja.</translation>
+    </message>
+    <message>
+        <source>These notes were written for the shot before these changes:
+• %1</source>
+        <translation>Ezek a jegyzetek az ütés alábbi változtatások előtti állapotához készültek:
+• %1</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::MainWindow</name>
@@ -2272,10 +2766,6 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>Lyukba esett</translation>
     </message>
     <message>
-        <source>%1 in %2 at %3 s</source>
-        <translation>%1 a(z) %2 lyukban, %3 s-nál</translation>
-    </message>
-    <message>
         <source>Struck ball pocketed</source>
         <translation>A megütött golyó lyukba esett</translation>
     </message>
@@ -2288,12 +2778,24 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>nem</translation>
     </message>
     <message>
-        <source>in %1</source>
-        <translation>a(z) %1 lyukban</translation>
-    </message>
-    <message>
         <source>Final position in metres (table frame)</source>
         <translation>Végső hely méterben (az asztal koordináta-rendszerében)</translation>
+    </message>
+    <message>
+        <source>%1 in the %2 at %3 s</source>
+        <translation>%1: %2ban, %3 s-nál</translation>
+    </message>
+    <message>
+        <source>Against the recording</source>
+        <translation>A felvételhez mérve</translation>
+    </message>
+    <message>
+        <source>RMSE (cm) of the recorded samples against the simulated balls (the Recording dock has the details)</source>
+        <translation>A rögzített minták négyzetes középeltérése (cm) a szimulált golyókhoz képest (részletek a Felvétel panelen)</translation>
+    </message>
+    <message>
+        <source>in the %1</source>
+        <translation>%1ban</translation>
     </message>
 </context>
 <context>
@@ -2685,6 +3187,109 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     </message>
 </context>
 <context>
+    <name>cuelab::RecordingPanel</name>
+    <message>
+        <source>∞</source>
+        <translation>∞</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <source>Distance (cm) between each recorded sample and the simulated ball at the sample&apos;s time (s), one line per ball: where the model and the recording part</source>
+        <translation>Az egyes rögzített minták távolsága (cm) a szimulált golyótól a minta idejében (s), golyónként egy vonal: ahol a modell és a felvétel elválik</translation>
+    </message>
+    <message>
+        <source>The residual over time, once a recording is open</source>
+        <translation>Az eltérés az idő függvényében, ha van megnyitott felvétel</translation>
+    </message>
+    <message>
+        <source>Distance to the simulation (cm)</source>
+        <translation>Távolság a szimulációtól (cm)</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Root mean square of the distances (cm) between the recorded samples and the simulated balls at the same times: over the struck ball, and over every recorded ball</source>
+        <translation>A rögzített minták és az azonos idejű szimulált golyók távolságainak négyzetes közepe (cm): a megütött golyóra és minden rögzített golyóra</translation>
+    </message>
+    <message>
+        <source>Ball</source>
+        <translation>Golyó</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Minták</translation>
+    </message>
+    <message>
+        <source>RMSE</source>
+        <translation>RMSE</translation>
+    </message>
+    <message>
+        <source>Per recorded ball: its samples and their RMSE (cm) against the simulation</source>
+        <translation>Rögzített golyónként: a minták száma és négyzetes középeltérésük (cm) a szimulációhoz képest</translation>
+    </message>
+    <message>
+        <source>Fit Strike</source>
+        <translation>Ütés illesztése</translation>
+    </message>
+    <message>
+        <source>Find the heading (°), cue speed (m/s) and tip offsets (R) whose simulation follows the recording best (the same fit as cuelab-cli fit); the result is one undoable edit</source>
+        <translation>Az irány (°), a dákósebesség (m/s) és a dákóvég-eltolások (R) megkeresése, amelyek szimulációja a legjobban követi a felvételt (ugyanaz az illesztés, mint a cuelab-cli fit); az eredmény egy visszavonható szerkesztés</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Mégse</translation>
+    </message>
+    <message>
+        <source>Stop the fit; the shot stays as it was</source>
+        <translation>Az illesztés leállítása; az ütés változatlan marad</translation>
+    </message>
+    <message>
+        <source>Local searches of the fit done</source>
+        <translation>Az illesztés elvégzett helyi keresései</translation>
+    </message>
+    <message>
+        <source>struck ball %1, every ball %2</source>
+        <translation>megütött golyó %1, minden golyó %2</translation>
+    </message>
+    <message>
+        <source>No recording open. File → Open Recording… reads a tracked shot (cuelab-recording JSON or CSV) and shows it against the simulation.</source>
+        <translation>Nincs megnyitott felvétel. A Fájl → Felvétel megnyitása… beolvas egy követett ütést (cuelab-recording JSON vagy CSV), és a szimulációval együtt mutatja.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2 recorded balls, %3 s</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: %2 rögzített golyó, %3 s</translation>
+    </message>
+    <message>
+        <source>The shot has no ball &quot;%1&quot;: open the recording again to start from its own setup.</source>
+        <translation>Az ütésben nincs „%1” golyó: nyissa meg újra a felvételt, hogy a saját felállásából induljon.</translation>
+    </message>
+    <message>
+        <source>RMSE: %1</source>
+        <translation>RMSE: %1</translation>
+    </message>
+    <message>
+        <source>Fit cancelled: the shot is as it was</source>
+        <translation>Illesztés megszakítva: az ütés változatlan</translation>
+    </message>
+    <message>
+        <source>Fit the strike to the recording</source>
+        <translation>Az ütés illesztése a felvételhez</translation>
+    </message>
+    <message>
+        <source>Strike fitted in %1 s: RMSE %2 (moved balls); Edit → Undo takes it back</source>
+        <translation>Ütés illesztve %1 s alatt: RMSE %2 (mozgó golyók); Szerkesztés → Visszavonás visszaveszi</translation>
+    </message>
+    <message>
+        <source>The fitted strike was refused</source>
+        <translation>Az illesztett ütést a felállás nem fogadta el</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::ShortcutsDialog</name>
     <message>
         <source>Table view</source>
@@ -2801,6 +3406,33 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>Mouse</source>
         <translation>Egér</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::ShotDiagram</name>
+    <message>
+        <source>Outcome: %1</source>
+        <translation>Eredmény: %1</translation>
+    </message>
+    <message>
+        <source>Balls where they rest (t = %1). </source>
+        <translation>A golyók nyugalmi helyükön (t = %1). </translation>
+    </message>
+    <message>
+        <source>Balls at t = %1 of %2; paths dashed after it. </source>
+        <translation>A golyók t = %1-nál (összesen %2); utána a pályák szaggatottak. </translation>
+    </message>
+    <message>
+        <source>Dashed rings: start positions. ◆ blue: ball-ball contact, ◆ red: cushion, ▲ pocketed.</source>
+        <translation>Szaggatott körök: kezdőhelyek. ◆ kék: golyó–golyó érintkezés, ◆ piros: mantinel, ▲ lyukba esett.</translation>
+    </message>
+    <message>
+        <source>The shot</source>
+        <translation>Az ütés</translation>
+    </message>
+    <message>
+        <source>The physics</source>
+        <translation>A fizika</translation>
     </message>
 </context>
 <context>

@@ -1,0 +1,158 @@
+// Recorded shots in the window (issue 24, item 4): a recording dropped on the window opens in the
+// Recording dock, its samples are drawn over the view (layer "recording"), its residual shows per ball,
+// over time and in the Outcome dock, and Fit Strike finds the recorded strike again as one undoable
+// edit, with progress and Cancel.
+
+#include "../recording/SyntheticRecording.h"
+
+#include "MainWindow.h"
+#include "RecordingFile.h"
+#include "SetupFile.h"
+#include "editor/Document.h"
+#include "outcome/OutcomePanel.h"
+#include "recording/RecordingPanel.h"
+#include "view/TableView.h"
+
+#include <QDockWidget>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace cuelab;
+
+namespace {
+
+// Drops `path` on the window as a file manager would.
+void drop(MainWindow& window, const QString& path)
+{
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(path)});
+    const QPoint at = window.rect().center();
+    QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&window, &enter);
+    QDropEvent dropped(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&window, &dropped);
+}
+
+QString factValue(OutcomePanel* panel, const QString& what)
+{
+    QTableWidget* facts = panel->factsTable();
+    for (int row = 0; row < facts->rowCount(); ++row)
+        if (facts->item(row, 0)->text() == what) return facts->item(row, 1)->text();
+    return {};
+}
+
+}  // namespace
+
+class TestRecordingWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void recordingAgainstTheSimulation()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openExample(QStringLiteral(":/examples/three-cushion.json")));
+        window.document()->waitForResult();
+        const Setup truth = window.document()->setup();
+        test::SamplingOptions sampling;
+        sampling.duration = 2.0;
+        sampling.noise = 0.0;  // the samples are the simulation: the residual is zero
+        const Recording recording = test::synthesize(truth, sampling);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("three-cushion.rec.json"));
+        {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(io::serializeRecording(recording));
+        }
+        drop(window, path);
+        auto* panel = window.findChild<RecordingPanel*>();
+        QVERIFY(panel);
+        QVERIFY(panel->recording());
+        QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("RecordingDock"))->isVisible());
+        QCOMPARE(window.document()->setup().balls.size(), truth.balls.size());  // the shot stayed
+        // The samples over the view: one dot per sample, one ghost per recorded ball.
+        const ViewLayers& layers = window.tableView()->layers();
+        QVERIFY(layers.count(QStringLiteral("recording")));
+        std::size_t samples = 0;
+        for (const RecordedBall& b : recording.balls) samples += b.samples.size();
+        QCOMPARE(layers.at(QStringLiteral("recording")).markers.size(), samples);
+        QCOMPARE(layers.at(QStringLiteral("recording")).ghosts.size(), recording.balls.size());
+        // The residual: zero, per ball and over time.
+        QVERIFY(panel->residual());
+        QVERIFY2(panel->residual()->rmse < 1e-9, qPrintable(QString::number(panel->residual()->rmse)));
+        QCOMPARE(int(panel->residual()->samples.size()), int(samples));
+        QCOMPARE(panel->ballsTable()->rowCount(), int(recording.balls.size()));
+        auto* outcome = window.findChild<OutcomePanel*>();
+        QVERIFY2(factValue(outcome, QStringLiteral("Against the recording")).startsWith(QStringLiteral("struck ball 0.00 cm")),
+                 qPrintable(factValue(outcome, QStringLiteral("Against the recording"))));
+
+        // Aim 1.5° off: the residual grows; Fit Strike finds the heading again, as one undo step.
+        std::optional<CueStrike> shot = truth.shot;
+        shot->headingDeg += 1.5;
+        QVERIFY(window.document()->setShot(shot, QStringLiteral("Heading"), 0));
+        window.document()->waitForResult();
+        QTRY_VERIFY(panel->residual() && panel->residual()->rmse > 0.01);
+        QVERIFY(panel->fitButton()->isEnabled());
+        const int steps = window.document()->undoStack()->count();
+        QSignalSpy finished(panel, &RecordingPanel::fitFinished);
+        panel->fitStrike();
+        QVERIFY(panel->isFitting());
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
+        QCOMPARE(window.document()->undoStack()->count(), steps + 1);
+        const CueStrike fitted = *window.document()->setup().shot;
+        QVERIFY2(std::abs(fitted.headingDeg - truth.shot->headingDeg) < 0.05, qPrintable(QString::number(fitted.headingDeg)));
+        QVERIFY2(std::abs(fitted.speed / truth.shot->speed - 1.0) < 0.01, qPrintable(QString::number(fitted.speed)));
+        window.document()->waitForResult();
+        QTRY_VERIFY(panel->residual() && panel->residual()->rmse < 0.005);
+        window.document()->undoStack()->undo();
+        QCOMPARE(window.document()->setup().shot->headingDeg, shot->headingDeg);
+
+        // Cancel: the shot stays as it was.
+        QSignalSpy cancelled(panel, &RecordingPanel::fitFinished);
+        panel->fitStrike();
+        panel->cancelFit();
+        QVERIFY(cancelled.wait(120000));
+        QVERIFY(!cancelled.front().at(0).toBool());
+        QCOMPARE(window.document()->setup().shot->headingDeg, shot->headingDeg);
+        QCOMPARE(window.document()->undoStack()->count(), steps + 1);  // the fit's step is still there to redo
+    }
+
+    // A recording of balls the shot lacks, refused or broken files.
+    void brokenRecordingIsRefused()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("broken.csv"));
+        {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write("t,ball,x,y\n0,cue,0.5,0.5\n0,cue,0.6,0.5\n");
+        }
+        QTimer::singleShot(0, &window, [] {
+            // The refusal's message box: close it.
+            QTRY_VERIFY(QApplication::activeModalWidget());
+            QApplication::activeModalWidget()->close();
+        });
+        drop(window, path);
+        QVERIFY(!window.findChild<RecordingPanel*>()->recording());
+    }
+};
+
+QTEST_MAIN(TestRecordingWindow)
+#include "tst_recordingwindow.moc"

@@ -1,0 +1,308 @@
+#include "RecordingPanel.h"
+
+#include "StrikeFit.h"
+#include "editor/Document.h"
+
+#include <QFutureWatcher>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPainter>
+#include <QPainterPath>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QtConcurrent>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <variant>
+
+namespace cuelab {
+
+namespace {
+
+const QColor kBallColours[] = {QColor(40, 110, 220), QColor(230, 130, 20), QColor(40, 160, 70), QColor(200, 40, 160),
+                               QColor(120, 80, 40), QColor(100, 100, 100)};
+
+QString centimetres(double metres)
+{
+    if (!std::isfinite(metres)) return RecordingPanel::tr("∞");
+    return RecordingPanel::tr("%1 cm").arg(metres * 100.0, 0, 'f', metres < 0.1 ? 2 : 1);
+}
+
+}  // namespace
+
+// Each recorded sample's distance to its simulated ball (cm) against time (s), a line per ball.
+class ResidualChart : public QWidget {
+public:
+    explicit ResidualChart(QWidget* parent) : QWidget(parent)
+    {
+        setMinimumSize(220, 150);
+        setToolTip(RecordingPanel::tr("Distance (cm) between each recorded sample and the simulated ball at the sample's "
+                                      "time (s), one line per ball: where the model and the recording part"));
+    }
+    void set(const std::optional<Residual>& residual, const Recording* recording)
+    {
+        residual_ = residual;
+        ids_.clear();
+        if (recording)
+            for (const RecordedBall& b : recording->balls) ids_ << QString::fromStdString(b.id);
+        update();
+    }
+    QSize sizeHint() const override { return {320, 200}; }
+
+protected:
+    void paintEvent(QPaintEvent*) override
+    {
+        QPainter p(this);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.fillRect(rect(), palette().base());
+        const QFontMetricsF fm(font());
+        const double line = fm.height();
+        if (!residual_ || residual_->samples.empty()) {
+            p.setPen(palette().color(QPalette::Disabled, QPalette::Text));
+            p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, RecordingPanel::tr("The residual over time, once a recording is open"));
+            return;
+        }
+        double tMax = 1e-9, dMax = 1e-9;
+        for (const SampleResidual& s : residual_->samples) {
+            tMax = std::max(tMax, s.time);
+            if (std::isfinite(s.distance)) dMax = std::max(dMax, s.distance);
+        }
+        const double cm = dMax * 100.0;
+        const QRectF plot = QRectF(rect()).adjusted(fm.horizontalAdvance(QStringLiteral("000.0")) + 8, line + 4, -8, -2.2 * line);
+        p.setPen(palette().color(QPalette::Text));
+        p.drawText(QRectF(0, 0, width(), line), Qt::AlignHCenter, RecordingPanel::tr("Distance to the simulation (cm)"));
+        p.setPen(QPen(palette().color(QPalette::Mid), 1.0));
+        p.drawRect(plot);
+        p.setPen(palette().color(QPalette::Text));
+        p.drawText(QRectF(0, plot.top() - line / 2, plot.left() - 4, line), Qt::AlignRight | Qt::AlignVCenter, QString::number(cm, 'f', 1));
+        p.drawText(QRectF(0, plot.bottom() - line / 2, plot.left() - 4, line), Qt::AlignRight | Qt::AlignVCenter, QStringLiteral("0"));
+        p.drawText(QRectF(plot.left(), plot.bottom() + 2, plot.width(), line), Qt::AlignLeft, QStringLiteral("0"));
+        p.drawText(QRectF(plot.left(), plot.bottom() + 2, plot.width(), line), Qt::AlignRight, RecordingPanel::tr("%1 s").arg(tMax, 0, 'g', 3));
+        const auto at = [&](const SampleResidual& s) {
+            const double d = std::isfinite(s.distance) ? s.distance : dMax;
+            return QPointF(plot.left() + plot.width() * s.time / tMax, plot.bottom() - plot.height() * d / dMax);
+        };
+        // Samples come ball by ball: one path per ball.
+        double keyX = plot.left();
+        for (int ball = 0; ball < ids_.size(); ++ball) {
+            QPainterPath path;
+            bool any = false;
+            for (const SampleResidual& s : residual_->samples) {
+                if (s.ball != ball) continue;
+                if (!any) path.moveTo(at(s));
+                else path.lineTo(at(s));
+                any = true;
+            }
+            if (!any) continue;
+            const QColor colour = kBallColours[ball % std::size(kBallColours)];
+            p.setPen(QPen(colour, 1.5));
+            p.setBrush(Qt::NoBrush);
+            p.drawPath(path);
+            const double y = plot.bottom() + line + 2;
+            p.drawLine(QPointF(keyX, y + line / 2), QPointF(keyX + 14, y + line / 2));
+            p.setPen(palette().color(QPalette::Text));
+            p.drawText(QPointF(keyX + 17, y + fm.ascent()), ids_[ball]);
+            keyX += 27 + fm.horizontalAdvance(ids_[ball]);
+        }
+    }
+
+private:
+    std::optional<Residual> residual_;
+    QStringList ids_;
+};
+
+RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
+    : QWidget(parent), document_(document), watcher_(new QFutureWatcher<std::shared_ptr<fit::FitResult>>(this))
+{
+    setObjectName(QStringLiteral("recordingPanel"));
+    header_ = new QLabel(this);
+    header_->setWordWrap(true);
+    header_->setObjectName(QStringLiteral("recordingHeader"));
+    rmse_ = new QLabel(this);
+    rmse_->setWordWrap(true);
+    rmse_->setObjectName(QStringLiteral("recordingRmse"));
+    rmse_->setToolTip(tr("Root mean square of the distances (cm) between the recorded samples and the simulated balls at "
+                         "the same times: over the struck ball, and over every recorded ball"));
+    balls_ = new QTableWidget(0, 3, this);
+    balls_->setObjectName(QStringLiteral("recordingBalls"));
+    balls_->setHorizontalHeaderLabels({tr("Ball"), tr("Samples"), tr("RMSE")});
+    balls_->horizontalHeader()->setStretchLastSection(true);
+    balls_->verticalHeader()->hide();
+    balls_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    balls_->setToolTip(tr("Per recorded ball: its samples and their RMSE (cm) against the simulation"));
+    chart_ = new ResidualChart(this);
+    fit_ = new QPushButton(tr("Fit Strike"), this);
+    fit_->setObjectName(QStringLiteral("recordingFit"));
+    fit_->setToolTip(tr("Find the heading (°), cue speed (m/s) and tip offsets (R) whose simulation follows the recording best "
+                        "(the same fit as cuelab-cli fit); the result is one undoable edit"));
+    cancel_ = new QPushButton(tr("Cancel"), this);
+    cancel_->setObjectName(QStringLiteral("recordingCancel"));
+    cancel_->setToolTip(tr("Stop the fit; the shot stays as it was"));
+    cancel_->setEnabled(false);
+    progress_ = new QProgressBar(this);
+    progress_->setObjectName(QStringLiteral("recordingProgress"));
+    progress_->setToolTip(tr("Local searches of the fit done"));
+    progress_->setRange(0, 1);
+    progress_->setValue(0);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(fit_);
+    buttons->addWidget(cancel_);
+    buttons->addWidget(progress_, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(header_);
+    layout->addWidget(rmse_);
+    layout->addLayout(buttons);
+    layout->addWidget(chart_, 2);
+    layout->addWidget(balls_, 1);
+
+    connect(fit_, &QPushButton::clicked, this, &RecordingPanel::fitStrike);
+    connect(cancel_, &QPushButton::clicked, this, &RecordingPanel::cancelFit);
+    connect(watcher_, &QFutureWatcher<std::shared_ptr<fit::FitResult>>::finished, this, &RecordingPanel::fitDone);
+    connect(document_, &Document::resultChanged, this, &RecordingPanel::refresh);
+    refresh();
+}
+
+RecordingPanel::~RecordingPanel()
+{
+    if (stop_) stop_->request_stop();
+    watcher_->waitForFinished();
+}
+
+void RecordingPanel::setRecording(std::optional<Recording> recording)
+{
+    cancelFit();
+    recording_ = std::move(recording);
+    refresh();
+    emit recordingChanged();
+}
+
+QString RecordingPanel::summary() const
+{
+    if (!residual_ || !recording_) return {};
+    const std::optional<CueStrike>& shot = document_->setup().shot;
+    // The residual pools every recorded ball (refresh: BallSelection::All).
+    double struck = residual_->rmse;
+    if (shot)
+        for (const BallResidual& b : residual_->perBall)
+            if (b.id == shot->ball) struck = b.rmse;
+    return tr("struck ball %1, every ball %2").arg(centimetres(struck), centimetres(residual_->rmse));
+}
+
+void RecordingPanel::refresh()
+{
+    const std::shared_ptr<const SimulationResult> result = document_->result();
+    residual_.reset();
+    if (recording_ && result && missingBall(*recording_, document_->setup()).empty()) {
+        ResidualOptions options;
+        options.balls = BallSelection::All;
+        options.keepSamples = true;
+        const std::string struck = document_->setup().shot ? document_->setup().shot->ball : std::string();
+        residual_ = cuelab::residual(*result, *recording_, struck, options);
+    }
+    if (!recording_) {
+        header_->setText(tr("No recording open. File → Open Recording… reads a tracked shot (cuelab-recording JSON or CSV) "
+                            "and shows it against the simulation."));
+    } else {
+        QString text = tr("<b>%1</b>: %2 recorded balls, %3 s")
+                           .arg(QString::fromStdString(recording_->name).toHtmlEscaped())
+                           .arg(recording_->balls.size())
+                           .arg(recording_->duration(), 0, 'f', 2);
+        if (!recording_->source.empty()) text += QStringLiteral("<br><small>%1</small>").arg(QString::fromStdString(recording_->source).toHtmlEscaped());
+        const std::string missing = missingBall(*recording_, document_->setup());
+        if (!missing.empty())
+            text += QStringLiteral("<br>") + tr("The shot has no ball \"%1\": open the recording again to start from its own setup.")
+                                                 .arg(QString::fromStdString(missing).toHtmlEscaped());
+        header_->setText(text);
+    }
+    rmse_->setText(residual_ ? tr("RMSE: %1").arg(summary()) : QString());
+    balls_->setRowCount(0);
+    if (recording_) {
+        for (std::size_t b = 0; b < recording_->balls.size(); ++b) {
+            const int row = balls_->rowCount();
+            balls_->insertRow(row);
+            balls_->setItem(row, 0, new QTableWidgetItem(QString::fromStdString(recording_->balls[b].id)));
+            balls_->setItem(row, 1, new QTableWidgetItem(QString::number(recording_->balls[b].samples.size())));
+            balls_->setItem(row, 2, new QTableWidgetItem(residual_ ? centimetres(residual_->perBall[b].rmse) : QString()));
+        }
+        balls_->resizeColumnsToContents();
+    }
+    chart_->set(residual_, recording_ ? &*recording_ : nullptr);
+    fit_->setEnabled(residual_.has_value() && document_->setup().shot.has_value() && !isFitting());
+    emit residualChanged();
+}
+
+bool RecordingPanel::isFitting() const { return watcher_->isRunning(); }
+
+void RecordingPanel::fitStrike()
+{
+    if (isFitting() || !recording_ || !document_->setup().shot) return;
+    const Setup base = document_->setup();
+    const auto keys = fit::resolveFitKeys(base, fit::defaultStrikeKeys());
+    if (!std::holds_alternative<std::vector<fit::FitKey>>(keys)) return;
+    stop_ = std::make_unique<std::stop_source>();
+    auto done = std::make_shared<std::atomic_int>(0);
+    auto total = std::make_shared<std::atomic_int>(1);
+    auto* timer = new QTimer(this);
+    connect(timer, &QTimer::timeout, this, [this, done, total, timer] {
+        if (!isFitting()) {
+            timer->deleteLater();
+            return;
+        }
+        progress_->setRange(0, std::max(1, total->load()));
+        progress_->setValue(done->load());
+    });
+    timer->start(100);
+    fit_->setEnabled(false);
+    cancel_->setEnabled(true);
+    progress_->setRange(0, 0);  // busy until the first search reports
+    watcher_->setFuture(QtConcurrent::run(
+        [base, recording = *recording_, keys = std::get<std::vector<fit::FitKey>>(keys), token = stop_->get_token(), done, total] {
+            fit::FitOptions options;
+            options.balls = BallSelection::Moved;
+            return std::make_shared<fit::FitResult>(fit::fitStrike(
+                base, recording, keys, options,
+                [done, total](const fit::FitProgress& p) {
+                    done->store(p.searchesDone);
+                    total->store(p.searchesTotal);
+                },
+                token));
+        }));
+}
+
+void RecordingPanel::cancelFit()
+{
+    if (stop_) stop_->request_stop();
+}
+
+void RecordingPanel::fitDone()
+{
+    cancel_->setEnabled(false);
+    progress_->setRange(0, 1);
+    progress_->setValue(0);
+    const std::shared_ptr<fit::FitResult> result = watcher_->result();
+    const bool cancelled = stop_ && stop_->stop_requested();
+    stop_.reset();
+    if (!result || cancelled || result->cancelled) {
+        refresh();
+        emit fitFinished(false, tr("Fit cancelled: the shot is as it was"));
+        return;
+    }
+    // The fitted strike replaces the shot: one undo step.
+    Setup after = document_->setup();
+    after.shot = result->setup.shot;
+    const bool applied = document_->edit(tr("Fit the strike to the recording"), after);
+    refresh();
+    emit fitFinished(applied, applied ? tr("Strike fitted in %1 s: RMSE %2 (moved balls); Edit → Undo takes it back")
+                                            .arg(result->seconds, 0, 'f', 1)
+                                            .arg(centimetres(result->rmse))
+                                      : tr("The fitted strike was refused"));
+}
+
+}  // namespace cuelab

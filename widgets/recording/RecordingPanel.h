@@ -1,0 +1,77 @@
+#pragma once
+// The Recording dock (issue 24): a recorded shot (core/recording) against the simulation of the
+// current setup. It shows the recording's balls and length, the residual (RMSE over the struck ball
+// and over every ball, per ball), a plot of each sample's distance to the simulated ball over time,
+// and fits the strike to the recording (core/fit: the same fitStrike as `cuelab-cli fit`) on a worker
+// thread with progress and Cancel; the fitted strike is one undoable edit of the document. The
+// residual comes from core/recording's residual(), recomputed whenever the result changes.
+
+#include "Recording.h"
+#include "Residual.h"
+#include "Simulation.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <stop_token>
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+template <typename T> class QFutureWatcher;
+
+namespace cuelab {
+
+class Document;
+class ResidualChart;
+
+namespace fit {
+struct FitResult;
+}
+
+class RecordingPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit RecordingPanel(Document* document, QWidget* parent = nullptr);
+    ~RecordingPanel() override;
+
+    void setRecording(std::optional<Recording> recording);
+    const std::optional<Recording>& recording() const { return recording_; }
+    // Of the current result against the recording, samples kept (none without both).
+    const std::optional<Residual>& residual() const { return residual_; }
+    // "struck ball 3.2 cm, every ball 5.1 cm" (empty without a residual): the Outcome dock's line.
+    QString summary() const;
+
+    void fitStrike();    // starts the fit (no-op while one runs)
+    void cancelFit();
+    bool isFitting() const;
+
+    QTableWidget* ballsTable() const { return balls_; }
+    QPushButton* fitButton() const { return fit_; }
+
+signals:
+    void recordingChanged();  // opened or closed
+    void residualChanged();
+    void fitFinished(bool applied, const QString& message);
+
+private:
+    void refresh();  // the residual and everything that shows it
+    void fitDone();
+
+    Document* document_;
+    std::optional<Recording> recording_;
+    std::optional<Residual> residual_;
+    QLabel* header_;
+    QLabel* rmse_;
+    QTableWidget* balls_;
+    ResidualChart* chart_;
+    QPushButton* fit_;
+    QPushButton* cancel_;
+    QProgressBar* progress_;
+    QFutureWatcher<std::shared_ptr<fit::FitResult>>* watcher_;
+    std::unique_ptr<std::stop_source> stop_;
+};
+
+}  // namespace cuelab
