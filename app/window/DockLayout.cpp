@@ -222,7 +222,9 @@ int DockLayout::contentWidth(const QDockWidget* dock)
     const auto* scroll = qobject_cast<const QScrollArea*>(dock->widget());
     const QWidget* content = scroll ? scroll->widget() : dock->widget();
     if (!content) return 0;
-    int width = content->minimumSizeHint().width();
+    // A panel that can reflow narrower (the Shot panel stacks its tip picker) says the width it
+    // prefers in the property "preferredDockWidth"; the side gets it when it has room.
+    int width = std::max(content->minimumSizeHint().width(), content->property("preferredDockWidth").toInt());
     if (scroll) width += scroll->verticalScrollBar()->sizeHint().width() + 2 * scroll->frameWidth();
     const QMargins margins = dock->contentsMargins();
     return width + margins.left() + margins.right() + 2;

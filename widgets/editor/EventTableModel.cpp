@@ -52,7 +52,8 @@ QString EventTableModel::agents(const SimulationResult& result, const Event& e)
     QString text = ballName(result, e.balls[0]);
     const Table& table = result.table;
     const auto name = [](const auto& list, int i) {
-        return i >= 0 && i < static_cast<int>(list.size()) ? QString::fromStdString(list[static_cast<std::size_t>(i)].id)
+        // As a person reads it ("top-right pocket", translated), not the file's id ("pocket-tr").
+        return i >= 0 && i < static_cast<int>(list.size()) ? displayElementName(list[static_cast<std::size_t>(i)].id)
                                                            : QStringLiteral("?");
     };
     switch (e.kind) {

@@ -103,7 +103,7 @@ void InspectorPanel::showBall(const SimulationResult& result, int index, double 
     auto* top = add(nullptr, tr("Ball %1").arg(QString::fromStdString(ball.id)), tr("at t = %1").arg(formatQuantity(time, QStringLiteral("s"), 4)));
     addState(top, s, ball.radius);
     if (s.motion == MotionState::Pocketed && s.pocket >= 0 && s.pocket < static_cast<int>(result.table.pockets.size()))
-        add(top, tr("Pocket"), QString::fromStdString(result.table.pockets[static_cast<std::size_t>(s.pocket)].id));
+        add(top, tr("Pocket"), displayElementName(result.table.pockets[static_cast<std::size_t>(s.pocket)].id));
     add(top, tr("Momentum"), formatVector(momentum(s, ball.mass), QStringLiteral("kg·m/s"), 4));
     add(top, tr("Kinetic energy"), formatQuantity(kineticEnergy(s, ball.radius, ball.mass), QStringLiteral("J"), 5),
         tr("Translation plus rotation, I = 2/5 m R²"));

@@ -10,6 +10,8 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QBoxLayout>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -58,13 +60,13 @@ ShotPanel::ShotPanel(Document* document, QWidget* parent) : QWidget(parent), doc
     headingRow->addWidget(heading_);
     form->addRow(tr("Heading"), headingRow);
     form->addRow(tr("Elevation"), elevation_);
-    auto* tipRow = new QHBoxLayout;
+    tipRow_ = new QBoxLayout(QBoxLayout::LeftToRight);
     auto* tipNumbers = new QFormLayout;
     tipNumbers->addRow(tr("Side"), side_);
     tipNumbers->addRow(tr("Height"), height_);
-    tipRow->addWidget(tip_, 1);
-    tipRow->addLayout(tipNumbers);
-    form->addRow(tr("Tip"), tipRow);
+    tipRow_->addWidget(tip_, 1);
+    tipRow_->addLayout(tipNumbers);
+    form->addRow(tr("Tip"), tipRow_);
     form->addRow(tr("Cue mass"), cueMass_);
     form->addRow(tr("End mass"), new SquirtControl(document_, this));  // squirt (shot.end_mass)
 
@@ -94,6 +96,10 @@ ShotPanel::ShotPanel(Document* document, QWidget* parent) : QWidget(parent), doc
 
     connect(document_, &Document::setupChanged, this, &ShotPanel::refresh);
     refresh();
+    // The width with the picker beside its fields; the window's side column gets it when it has room
+    // (app/window/DockLayout reads "preferredDockWidth").
+    sideBySideWidth_ = minimumSizeHint().width();
+    setProperty("preferredDockWidth", sideBySideWidth_);
 }
 
 void ShotPanel::refresh()
@@ -154,6 +160,34 @@ void ShotPanel::commit(Field field, const QString& text)
         }
     }
     if (!document_->setShot(shot, text, field)) refresh();  // refused: show the setup as it is
+}
+
+bool ShotPanel::tipStacked() const { return tipRow_->direction() == QBoxLayout::TopToBottom; }
+
+void ShotPanel::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    // In a dock the panel sits in a scroll area: its viewport's width is what the panel may take.
+    if (QWidget* viewport = parentWidget()) {
+        viewport->removeEventFilter(this);
+        viewport->installEventFilter(this);
+        fitTipRow(viewport->width());
+    }
+}
+
+bool ShotPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == parentWidget() && event->type() == QEvent::Resize) fitTipRow(parentWidget()->width());
+    return QWidget::eventFilter(watched, event);
+}
+
+void ShotPanel::fitTipRow(int available)
+{
+    const QBoxLayout::Direction want = available < sideBySideWidth_ ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight;
+    if (tipRow_->direction() != want) {
+        tipRow_->setDirection(want);
+        updateGeometry();
+    }
 }
 
 }  // namespace cuelab

@@ -256,9 +256,9 @@ void PlotsPanel::rebuild()
             m.event = i;
             QString agents = QString::fromStdString(r.balls[e.balls[0]].id);
             if (e.kind == EventKind::BallBall) agents += QStringLiteral(" \u2013 ") + QString::fromStdString(r.balls[e.balls[1]].id);
-            if (e.kind == EventKind::BallCushion) agents += QStringLiteral(", ") + QString::fromStdString(r.table.cushions[e.cushion].id);
-            if (e.kind == EventKind::BallJaw) agents += QStringLiteral(", ") + QString::fromStdString(r.table.jaws[e.jaw].id);
-            if (e.kind == EventKind::BallPocket) agents += QStringLiteral(", ") + QString::fromStdString(r.table.pockets[e.pocket].id);
+            if (e.kind == EventKind::BallCushion) agents += QStringLiteral(", ") + displayElementName(r.table.cushions[e.cushion].id);
+            if (e.kind == EventKind::BallJaw) agents += QStringLiteral(", ") + displayElementName(r.table.jaws[e.jaw].id);
+            if (e.kind == EventKind::BallPocket) agents += QStringLiteral(", ") + displayElementName(r.table.pockets[e.pocket].id);
             m.name = tr("Event %1: %2 (%3) at %4 s").arg(eventNumber(i), displayName(e.kind), agents)
                          .arg(e.time, 0, 'f', 4);
             markers.push_back(m);
