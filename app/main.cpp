@@ -1,10 +1,13 @@
 // cuelab: the editor and analysis window, and `cuelab --screenshot` to render a setup to a PNG
 // without showing a window.
 
+#include "Features.h"
 #include "HeadlessScreenshot.h"
 #include "MainWindow.h"
 #include "OpenGLProbe.h"
 #include "Translations.h"
+#include "editor/Document.h"
+#include "editor/Selection.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -52,6 +55,14 @@ int main(int argc, char* argv[])
                       QStringLiteral("Open with a named layout of View > Layouts: teach, coach, edit or reset (the first "
                                      "start's)."),
                       QStringLiteral("name")});
+    parser.addOption({QStringLiteral("recording"),
+                      QStringLiteral("Open a recorded shot (cuelab-recording JSON or CSV) against the simulation; without "
+                                     "a setup, the shot starts from the recording."),
+                      QStringLiteral("file")});
+    parser.addOption({QStringLiteral("event"),
+                      QStringLiteral("Open with event #N of the setup selected (its time, its explanation), counted from "
+                                     "1 as the Events list shows them."),
+                      QStringLiteral("N")});
     parser.process(app);
 
     // The interface's language, before any window or picture is made (app/window/Translations.h).
@@ -95,14 +106,48 @@ int main(int argc, char* argv[])
         }
     }
 
+    int event = 0;
+    if (parser.isSet(QStringLiteral("event"))) {
+        QString text = parser.value(QStringLiteral("event"));
+        if (text.startsWith(QLatin1Char('#'))) text.remove(0, 1);
+        bool ok = false;
+        event = text.toInt(&ok);
+        if (!ok || event < 1) {
+            cuelab::printCommandLineError(QStringLiteral("--event: expected an event number from 1, found '%1'")
+                                              .arg(parser.value(QStringLiteral("event"))));
+            return 2;
+        }
+    }
+
     cuelab::MainWindow window;
     window.showOnStart();  // maximised on the first start (up to 1920 px wide), else as left
     window.activateWindow();  // keyboard shortcuts work at once, even without a window manager
     if (layout) window.arrange(*layout);
     const QStringList args = parser.positionalArguments();
+    if (event > 0) {
+        // Once the result of the setup asked for lands (the file's, when one is given: the document
+        // is replaced first): a number beyond its events selects nothing.
+        auto* once = new QObject(&window);
+        const auto select = [&window, once, event] {
+            QObject::connect(window.document(), &cuelab::Document::resultChanged, once, [&window, once, event] {
+                const auto result = window.document()->result();
+                if (!window.document()->isResultCurrent()) return;
+                if (result && event <= static_cast<int>(result->events.size())) window.selection()->selectEvent(event - 1);
+                once->deleteLater();
+            });
+        };
+        if (args.isEmpty()) select();
+        else QObject::connect(window.document(), &cuelab::Document::documentReplaced, once, select, Qt::SingleShotConnection);
+    }
     if (!args.isEmpty()) {
         // After the window is up, so that a refused file's message has a window to sit on.
         QTimer::singleShot(0, &window, [&window, path = args.front()] { window.openFile(path); });
+    }
+    if (parser.isSet(QStringLiteral("recording"))) {
+        // After the setup (when one is given), so that the recording meets its balls.
+        QTimer::singleShot(0, &window, [&window, path = parser.value(QStringLiteral("recording"))] {
+            cuelab::openRecording(window, path, false);
+        });
     }
     return QApplication::exec();
 }

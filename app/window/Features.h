@@ -4,6 +4,8 @@
 // selection and table view). One install function per feature, defined in
 // app/window/features/<Name>Feature.cpp, declared here and called from Features.cpp.
 
+#include <QString>
+
 namespace cuelab {
 
 class MainWindow;
@@ -19,5 +21,10 @@ void installExplain(MainWindow& window);  // features/ExplainFeature.cpp: Explai
 void installAnalysis(MainWindow& window);  // features/AnalysisFeature.cpp: the Analysis dock and menu
 void installCompare(MainWindow& window);  // features/CompareFeature.cpp
 void installRecording(MainWindow& window);  // features/RecordingFeature.cpp: recorded shots (issue 24)
+
+// Opens a recording file in the window's Recording dock (RecordingFeature.cpp). A recording of balls
+// the shot lacks starts a new shot from the recording, after asking when `ask` and the current shot
+// is worth keeping (a file, an example, unsaved edits). False when refused (the message is shown).
+bool openRecording(MainWindow& window, const QString& path, bool ask);
 
 }  // namespace cuelab

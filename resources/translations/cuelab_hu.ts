@@ -462,10 +462,6 @@
         <translation>rögzített %1</translation>
     </message>
     <message>
-        <source>red dots: recorded samples of %1</source>
-        <translation>piros pontok: %1 rögzített mintái</translation>
-    </message>
-    <message>
         <source>Recording</source>
         <translation>Felvétel</translation>
     </message>
@@ -920,6 +916,10 @@
     <message>
         <source>Pockets</source>
         <translation>Lyukak</translation>
+    </message>
+    <message>
+        <source>dots: the recorded samples of %1, a colour per ball as in the Recording dock</source>
+        <translation>pontok: %1 rögzített mintái, golyónként egy szín, mint a Felvétel panelen</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 
 #include "../recording/SyntheticRecording.h"
 
+#include "Features.h"
 #include "MainWindow.h"
 #include "RecordingFile.h"
 #include "SetupFile.h"
@@ -129,6 +130,41 @@ private slots:
         QVERIFY(!cancelled.front().at(0).toBool());
         QCOMPARE(window.document()->setup().shot->headingDeg, shot->headingDeg);
         QCOMPARE(window.document()->undoStack()->count(), steps + 1);  // the fit's step is still there to redo
+    }
+
+    // A recording of balls the shot lacks starts a new shot from the recording (cuelab --recording):
+    // its balls where first tracked, the strike guessed, the residual shown.
+    void recordingStartsItsOwnShot()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QString error;
+        const std::optional<Setup> truth = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/three-cushion.json"), &error);
+        QVERIFY2(truth, qPrintable(error));
+        test::SamplingOptions sampling;
+        sampling.duration = 2.0;
+        const Recording recording = test::synthesize(*truth, sampling);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("three.rec.json"));
+        {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(io::serializeRecording(recording));
+        }
+        QVERIFY(openRecording(window, path, false));
+        const Setup& setup = window.document()->setup();
+        QCOMPARE(setup.balls.size(), recording.balls.size());
+        for (std::size_t i = 0; i < setup.balls.size(); ++i) {
+            QCOMPARE(setup.balls[i].id, recording.balls[i].id);
+            // At the first sample (5 mm noise), or the nearest legal spot to it.
+            QVERIFY((setup.balls[i].state.position - recording.balls[i].samples.front().position).norm() < 0.03);
+        }
+        QVERIFY(setup.shot && setup.shot->ball == truth->shot->ball);
+        window.document()->waitForResult();
+        auto* panel = window.findChild<RecordingPanel*>();
+        QTRY_VERIFY(panel->residual().has_value());
+        QVERIFY(!panel->summary().isEmpty());
     }
 
     // A recording of balls the shot lacks, refused or broken files.

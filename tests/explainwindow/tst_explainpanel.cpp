@@ -96,6 +96,10 @@ private slots:
         QCOMPARE(panel_->shownEvent(), roll);
         QVERIFY(!panel_->explanation()->toi);
         QCOMPARE(chart->markedRoots(), 0);
+        // Its chart would be empty: hidden, the derivation gets the room; a collision brings it back.
+        QVERIFY(chart->isHidden());
+        window_->selection()->selectEvent(hit);
+        QVERIFY(!chart->isHidden());
     }
 
     // ΔE rounded to what matters: an elastic collision's rounding error reads 0 J.

@@ -114,6 +114,10 @@ void ExplainPanel::showEvent(int index)
     }
     chart_->setExplanation(explanation_ ? &*explanation_ : nullptr);
     conservation_->setExplanation(explanation_ ? &*explanation_ : nullptr);
+    // A figure with nothing to show gives its room to the derivation: no chart for an event whose
+    // time is closed-form (a transition, the cue strike), no momenta without bodies.
+    chart_->setVisible(!explanation_ || explanation_->toi.has_value());
+    conservation_->setVisible(!explanation_ || !explanation_->bodies.empty());
     emit explanationChanged();
 }
 

@@ -100,7 +100,7 @@ protected:
                 any = true;
             }
             if (!any) continue;
-            const QColor colour = kBallColours[ball % std::size(kBallColours)];
+            const QColor colour = RecordingPanel::ballColour(ball);
             p.setPen(QPen(colour, 1.5));
             p.setBrush(Qt::NoBrush);
             p.drawPath(path);
@@ -116,6 +116,11 @@ private:
     std::optional<Residual> residual_;
     QStringList ids_;
 };
+
+QColor RecordingPanel::ballColour(int index)
+{
+    return kBallColours[static_cast<std::size_t>(index) % std::size(kBallColours)];
+}
 
 RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
     : QWidget(parent), document_(document), watcher_(new QFutureWatcher<std::shared_ptr<fit::FitResult>>(this))

@@ -10,6 +10,7 @@
 #include "Residual.h"
 #include "Simulation.h"
 
+#include <QColor>
 #include <QWidget>
 
 #include <memory>
@@ -43,6 +44,8 @@ public:
     const std::optional<Residual>& residual() const { return residual_; }
     // "struck ball 3.2 cm, every ball 5.1 cm" (empty without a residual): the Outcome dock's line.
     QString summary() const;
+    // The colour of recorded ball `index`: its line in the residual plot and its dots in the view.
+    static QColor ballColour(int index);
 
     void fitStrike();    // starts the fit (no-op while one runs)
     void cancelFit();

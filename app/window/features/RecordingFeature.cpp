@@ -37,11 +37,14 @@ QString tr(const char* text) { return QCoreApplication::translate("cuelab", text
 constexpr double kSampleDot = 5.0;  // logical px across, a recorded sample
 const QString kLayer = QStringLiteral("recording");
 
-// The recorded samples as dots and each recorded ball as a ghost following them (red: recorded).
+// The recorded samples as dots and each recorded ball as a ghost following them, in the ball's colour
+// of the Recording dock's plot.
 ViewLayer recordingLayer(const Recording& recording, const Setup& setup)
 {
     ViewLayer layer;
-    for (const RecordedBall& ball : recording.balls) {
+    for (std::size_t k = 0; k < recording.balls.size(); ++k) {
+        const RecordedBall& ball = recording.balls[k];
+        const QColor colour = RecordingPanel::ballColour(static_cast<int>(k));
         GhostTrack& g = layer.ghosts.emplace_back();
         g.label = tr("recorded %1").arg(QString::fromStdString(ball.id));
         const int index = [&] {
@@ -51,15 +54,16 @@ ViewLayer recordingLayer(const Recording& recording, const Setup& setup)
         }();
         g.ball = index;
         g.radius = ball.radius.value_or(index >= 0 ? setup.balls[static_cast<std::size_t>(index)].radius : 0.028575);
-        g.colour = QColor(230, 40, 40, 110);
+        g.colour = QColor(colour.red(), colour.green(), colour.blue(), 120);
         g.showPath = false;  // the dots are the path
         for (const RecordedSample& s : ball.samples) {
             g.times.push_back(s.time);
             g.positions.push_back(s.position);
-            layer.markers.push_back({Vec3(s.position.x(), s.position.y(), 0.001), QColor(230, 40, 40, 220), float(kSampleDot), {}});
+            layer.markers.push_back({Vec3(s.position.x(), s.position.y(), 0.001), colour, float(kSampleDot), {}});
         }
     }
-    layer.legend = tr("red dots: recorded samples of %1").arg(QString::fromStdString(recording.name));
+    layer.legend = tr("dots: the recorded samples of %1, a colour per ball as in the Recording dock")
+                       .arg(QString::fromStdString(recording.name));
     return layer;
 }
 
@@ -72,10 +76,15 @@ bool isRecordingFile(const QString& path)
     return file.read(4096).contains("cuelab-recording");
 }
 
-class RecordingDrops : public QObject {
+// Opens recordings for the window: File > Open Recording, a dropped file, openRecording().
+class RecordingOpener : public QObject {
 public:
-    RecordingDrops(MainWindow& window, std::function<void(const QString&)> open)
-        : QObject(&window), open_(std::move(open)) {}
+    using Open = std::function<bool(const QString& path, bool ask)>;
+    RecordingOpener(MainWindow& window, Open open) : QObject(&window), open_(std::move(open))
+    {
+        setObjectName(QStringLiteral("recordingOpener"));
+    }
+    bool open(const QString& path, bool ask) const { return open_(path, ask); }
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override
@@ -86,12 +95,12 @@ protected:
         if (urls.size() != 1 || !urls.front().isLocalFile() || !isRecordingFile(urls.front().toLocalFile()))
             return QObject::eventFilter(watched, event);
         drop->acceptProposedAction();
-        if (event->type() == QEvent::Drop) open_(urls.front().toLocalFile());
+        if (event->type() == QEvent::Drop) open_(urls.front().toLocalFile(), true);
         return true;
     }
 
 private:
-    std::function<void(const QString&)> open_;
+    Open open_;
 };
 
 }  // namespace
@@ -116,12 +125,12 @@ void installRecording(MainWindow& window)
         QObject::connect(panel, &RecordingPanel::residualChanged, outcome, [panel, outcome] { outcome->setRecordingResidual(panel->summary()); });
     QObject::connect(panel, &RecordingPanel::fitFinished, w, [w](bool, const QString& message) { w->statusBar()->showMessage(message, 8000); });
 
-    const auto open = [w, panel, dock, document](const QString& path) {
+    const auto open = [w, panel, dock, document](const QString& path, bool ask) {
         QString error;
         std::optional<Recording> recording = io::loadRecording(path, &error);
         if (!recording) {
             QMessageBox::warning(w, tr("Open Recording"), error);
-            return;
+            return false;
         }
         // A recording of balls the shot lacks starts from its own setup (its table, its balls where
         // first tracked, a guessed strike), as a new untitled document.
@@ -130,26 +139,30 @@ void installRecording(MainWindow& window)
             const std::optional<Setup> setup = setupFromRecording(*recording);
             if (!setup) {
                 QMessageBox::warning(w, tr("Open Recording"), tr("%1: the recorded balls do not fit on the table").arg(QFileInfo(path).fileName()));
-                return;
+                return false;
             }
-            const auto answer = QMessageBox::question(
-                w, tr("Open Recording"),
-                tr("The current shot has no ball \"%1\". Start a new shot from the recording (its table, its balls where "
-                   "they were first tracked and a strike guessed from their first motion)?")
-                    .arg(QString::fromStdString(missing)));
-            if (answer != QMessageBox::Yes) return;
+            if (ask && (document->isModified() || !document->filePath().isEmpty() || document->isBundledExample())) {
+                const auto answer = QMessageBox::question(
+                    w, tr("Open Recording"),
+                    tr("The current shot has no ball \"%1\". Start a new shot from the recording (its table, its balls where "
+                       "they were first tracked and a strike guessed from their first motion)?")
+                        .arg(QString::fromStdString(missing)));
+                if (answer != QMessageBox::Yes) return false;
+            }
             QString problem;
             const QString name = QString::fromStdString(recording->name.empty() ? QFileInfo(path).completeBaseName().toStdString() : recording->name);
             if (!document->loadData(io::serializeSetup(*setup), name, &problem)) {
                 QMessageBox::warning(w, tr("Open Recording"), problem);
-                return;
+                return false;
             }
         }
         panel->setRecording(std::move(recording));
         dock->show();
         dock->raise();
         w->statusBar()->showMessage(tr("Opened the recording %1").arg(QFileInfo(path).fileName()), 6000);
+        return true;
     };
+    auto* opener = new RecordingOpener(window, open);
 
     QMenu* file = window.menu(WindowMenu::File);
     QAction* openAction = new QAction(tr("Open &Recording…"), w);
@@ -165,7 +178,7 @@ void installRecording(MainWindow& window)
     QObject::connect(openAction, &QAction::triggered, w, [w, open] {
         const QString path = QFileDialog::getOpenFileName(w, tr("Open Recording"), QString(),
                                                           tr("Recordings (*.json *.csv);;All files (*)"));
-        if (!path.isEmpty()) open(path);
+        if (!path.isEmpty()) open(path, true);
     });
     QAction* fitAction = window.menu(WindowMenu::Analysis)->addAction(tr("Fit Strike to Recording"));
     fitAction->setObjectName(QStringLiteral("fitStrikeAction"));
@@ -175,7 +188,13 @@ void installRecording(MainWindow& window)
         dock->raise();
         panel->fitStrike();
     });
-    window.installEventFilter(new RecordingDrops(window, open));
+    window.installEventFilter(opener);
+}
+
+bool openRecording(MainWindow& window, const QString& path, bool ask)
+{
+    const auto* opener = dynamic_cast<const RecordingOpener*>(window.findChild<QObject*>(QStringLiteral("recordingOpener")));
+    return opener && opener->open(path, ask);
 }
 
 }  // namespace cuelab
