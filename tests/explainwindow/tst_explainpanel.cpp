@@ -147,6 +147,14 @@ private slots:
         QTRY_VERIFY2(conservation->stacked(), qPrintable(QStringLiteral("panel %1 wide, figure %2").arg(panel->width()).arg(conservation->width())));
         QVERIFY(conservation->height() >= 380);
         QVERIFY2(panel->width() <= area.viewport()->width(), "no sideways scrolling");
+        // A short dock (Teach at 1280x800: about 350 x 740): the derivation keeps nearly a third of it
+        // (before: 80 px of 740, two lines).
+        area.resize(350, 740);
+        auto* text = panel->findChild<QWidget*>(QStringLiteral("explainText"));
+        QVERIFY(text);
+        QTRY_VERIFY2(text->height() >= 0.3 * panel->height(),
+                     qPrintable(QStringLiteral("text %1 of %2").arg(text->height()).arg(panel->height())));
+        QVERIFY(conservation->height() >= 260);
     }
 
     void followsTransport()

@@ -71,9 +71,13 @@ void ExplainPanel::reflow()
 {
     const bool wide = width() >= kFiguresSideBySideWidth;
     figures_->setOrientation(wide ? Qt::Horizontal : Qt::Vertical);
-    // Narrow, the momenta stand above the energy: the figure needs more height.
+    // Narrow, the momenta stand above the energy: the figure needs more height. In a short dock (a
+    // window of 800 px or less in height) the figures give some of it up, so that the derivation
+    // keeps a third of the dock.
+    const bool tall = height() >= kTallHeight;
     const int conservationWidth = wide ? width() / 2 : width();
-    conservation_->setMinimumHeight(conservationWidth < ConservationWidget::kSideBySideWidth ? 380 : 230);
+    conservation_->setMinimumHeight(conservationWidth < ConservationWidget::kSideBySideWidth ? (tall ? 380 : 260) : 230);
+    chart_->setMinimumHeight(230);  // lower, Qt Charts elides the axes' numbers
 }
 
 void ExplainPanel::followTime(double t)

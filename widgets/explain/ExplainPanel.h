@@ -40,6 +40,7 @@ signals:
 public:
     // The figures reflow with the dock: the chart beside the momenta and energy when the panel is
     // at least this wide, above them otherwise.
+    static constexpr int kTallHeight = 850;  // px: shorter, the figures shrink for the derivation
     static constexpr int kFiguresSideBySideWidth = 760;
     bool figuresSideBySide() const;
 
