@@ -921,6 +921,106 @@
         <source>dots: the recorded samples of %1, a colour per ball as in the Recording dock</source>
         <translation>pontok: %1 rögzített mintái, golyónként egy szín, mint a Felvétel panelen</translation>
     </message>
+    <message>
+        <source>Heading (°)</source>
+        <translation>Irány (°)</translation>
+    </message>
+    <message>
+        <source>Cue speed (m/s)</source>
+        <translation>Dákósebesség (m/s)</translation>
+    </message>
+    <message>
+        <source>Cue elevation (°)</source>
+        <translation>Dákó emelése (°)</translation>
+    </message>
+    <message>
+        <source>Tip offset, side (R)</source>
+        <translation>Dákóvég eltolása, oldalt (R)</translation>
+    </message>
+    <message>
+        <source>Tip offset, height (R)</source>
+        <translation>Dákóvég eltolása, magasság (R)</translation>
+    </message>
+    <message>
+        <source>Cue mass (kg)</source>
+        <translation>Dákótömeg (kg)</translation>
+    </message>
+    <message>
+        <source>Cue end mass (kg)</source>
+        <translation>Dákóvég tömege (kg)</translation>
+    </message>
+    <message>
+        <source>Gravity (m/s²)</source>
+        <translation>Nehézségi gyorsulás (m/s²)</translation>
+    </message>
+    <message>
+        <source>Ball-ball friction μb</source>
+        <translation>Golyó–golyó súrlódás μb</translation>
+    </message>
+    <message>
+        <source>Table length (m)</source>
+        <translation>Asztal hossza (m)</translation>
+    </message>
+    <message>
+        <source>Table width (m)</source>
+        <translation>Asztal szélessége (m)</translation>
+    </message>
+    <message>
+        <source>Cushion height (m)</source>
+        <translation>Mantinel magassága (m)</translation>
+    </message>
+    <message>
+        <source>Frame step (s)</source>
+        <translation>Képkocka-lépés (s)</translation>
+    </message>
+    <message>
+        <source>Time limit (s)</source>
+        <translation>Időkorlát (s)</translation>
+    </message>
+    <message>
+        <source>x (m)</source>
+        <translation>x (m)</translation>
+    </message>
+    <message>
+        <source>y (m)</source>
+        <translation>y (m)</translation>
+    </message>
+    <message>
+        <source>vx (m/s)</source>
+        <translation>vx (m/s)</translation>
+    </message>
+    <message>
+        <source>vy (m/s)</source>
+        <translation>vy (m/s)</translation>
+    </message>
+    <message>
+        <source>ωx (rad/s)</source>
+        <translation>ωx (rad/s)</translation>
+    </message>
+    <message>
+        <source>ωy (rad/s)</source>
+        <translation>ωy (rad/s)</translation>
+    </message>
+    <message>
+        <source>ωz (rad/s)</source>
+        <translation>ωz (rad/s)</translation>
+    </message>
+    <message>
+        <source>radius (m)</source>
+        <translation>sugár (m)</translation>
+    </message>
+    <message>
+        <source>mass (kg)</source>
+        <translation>tömeg (kg)</translation>
+    </message>
+    <message>
+        <source>Ball %1, %2</source>
+        <translation>%1 golyó, %2</translation>
+    </message>
+    <message>
+        <source>Cushion model&apos;s %1</source>
+        <translation>A mantinelmodell %1 paramétere</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::AnalysisPanel</name>
@@ -1147,6 +1247,62 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>Height</source>
         <translation>Magasság</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Paraméter</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Ettől</translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation>Eddig</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Szélesség</translation>
+    </message>
+    <message>
+        <source>Below</source>
+        <translation>Alatta</translation>
+    </message>
+    <message>
+        <source>Above</source>
+        <translation>Fölötte</translation>
+    </message>
+    <message>
+        <source>What lies below the window: the goal fails there, or the scan ends (the window may go on)</source>
+        <translation>Ami az ablak alatt van: ott a cél nem teljesül, vagy ott ér véget a letapogatás (az ablak folytatódhat)</translation>
+    </message>
+    <message>
+        <source>What lies above the window: the goal fails there, or the scan ends (the window may go on)</source>
+        <translation>Ami az ablak fölött van: ott a cél nem teljesül, vagy ott ér véget a letapogatás (az ablak folytatódhat)</translation>
+    </message>
+    <message>
+        <source>Each parameter&apos;s window around the current shot, in its unit (°, m/s, R)</source>
+        <translation>Minden paraméter ablaka a mostani ütés körül, a saját egységében (°, m/s, R)</translation>
+    </message>
+    <message>
+        <source>Goal: %1</source>
+        <translation>Cél: %1</translation>
+    </message>
+    <message>
+        <source>Scanned %1 parameters, %2 shots simulated.</source>
+        <translation>%1 paraméter letapogatva, %2 ütés szimulálva.</translation>
+    </message>
+    <message>
+        <source>none in the scan</source>
+        <translation>nincs a letapogatott tartományban</translation>
+    </message>
+    <message>
+        <source>scan&apos;s edge</source>
+        <translation>a letapogatás széle</translation>
+    </message>
+    <message>
+        <source>fails</source>
+        <translation>nem teljesül</translation>
     </message>
 </context>
 <context>
@@ -3674,6 +3830,18 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>%1 shots simulated; the window&apos;s edges are refined by bisection. Grey: misses the goal, dark: illegal value, green: meets it; the black line is the current value.</source>
         <translation>%1 ütés szimulálva; az ablak széleit felezéssel finomítja. Szürke: nem teljesíti a célt, sötét: szabálytalan érték, zöld: teljesíti; a fekete vonal az aktuális érték.</translation>
+    </message>
+    <message>
+        <source>%1: from %2 to %3, ±%4</source>
+        <translation>%1: %2 és %3 között, ±%4</translation>
+    </message>
+    <message>
+        <source> (reaches the end of the scan)</source>
+        <translation> (eléri a letapogatás végét)</translation>
+    </message>
+    <message>
+        <source>%1: no value in the scanned range meets the goal</source>
+        <translation>%1: a letapogatott tartomány egyetlen értéke sem teljesíti a célt</translation>
     </message>
 </context>
 <context>

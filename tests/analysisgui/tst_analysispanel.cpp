@@ -10,10 +10,13 @@
 #include "editor/Document.h"
 
 #include <QComboBox>
+#include <QTableWidget>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QUndoStack>
+#include <QLabel>
+#include <QTableWidget>
 #include <QtTest>
 
 using namespace cuelab;
@@ -121,6 +124,28 @@ void TestAnalysisPanel::toleranceBarsFindTheWindow()
     QVERIFY(heading.low < 40.005 && heading.high > 40.005 && heading.width() < 1.0);
     QVERIFY2(bars[0]->text().contains(QStringLiteral("from ")) && bars[0]->text().contains(QStringLiteral("±")),
              qPrintable(bars[0]->text()));
+    // The goal is said once, above the bars, not on every bar.
+    auto* goal = f.panel.findChild<QLabel*>(QStringLiteral("toleranceGoal"));
+    QVERIFY(goal && goal->text().startsWith(QStringLiteral("Goal: ")));
+    for (ToleranceBar* bar : bars) QVERIFY2(!bar->text().contains(QStringLiteral("pot ")), qPrintable(bar->text()));
+    // The windows as a number table: from, to, width, and what lies beyond each end.
+    QTableWidget* table = f.panel.toleranceTable();
+    QVERIFY(table->isVisibleTo(&f.panel));
+    QCOMPARE(table->rowCount(), 5);
+    QCOMPARE(table->item(0, 0)->text(), QStringLiteral("Heading"));
+    QCOMPARE(table->item(0, 1)->text(), QString::number(heading.low, 'f', 2) + QStringLiteral("°"));
+    QCOMPARE(table->item(0, 2)->text(), QString::number(heading.high, 'f', 2) + QStringLiteral("°"));
+    QCOMPARE(table->item(0, 3)->text(), QString::number(heading.width(), 'f', 2) + QStringLiteral("°"));
+    // The heading's window lies inside the ±2° scan: the pot fails beyond both ends.
+    QVERIFY(!heading.lowAtScanEdge && !heading.highAtScanEdge);
+    QCOMPARE(table->item(0, 4)->text(), QStringLiteral("fails"));
+    QCOMPARE(table->item(0, 5)->text(), QStringLiteral("fails"));
+    for (int row = 0; row < table->rowCount(); ++row) {
+        const auto& scan = *bars[std::size_t(row)]->scan();
+        if (!scan.found) continue;
+        QCOMPARE(table->item(row, 4)->text(), scan.lowAtScanEdge ? QStringLiteral("scan's edge") : QStringLiteral("fails"));
+        QCOMPARE(table->item(row, 5)->text(), scan.highAtScanEdge ? QStringLiteral("scan's edge") : QStringLiteral("fails"));
+    }
     qInfo("%s", qPrintable(f.panel.statusText()));
     QVERIFY(f.panel.grab().save(QStringLiteral(CUELAB_BINARY_DIR "/analysis-tolerance.png")));
 }

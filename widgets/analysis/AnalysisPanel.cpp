@@ -4,6 +4,7 @@
 #include "OddsSection.h"
 #include "OutcomeMap.h"
 #include "ToleranceBar.h"
+#include "i18n/DisplayNames.h"
 
 #include "editor/Document.h"
 
@@ -20,6 +21,8 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QHeaderView>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <chrono>
@@ -119,11 +122,27 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     scan_->setToolTip(tr("Scan heading (±2°), speed (±50%), elevation (±10°) and the tip offsets (±0.5 R) one at a "
                          "time around their current values: the window in which the shot still meets the goal"));
     toleranceLayout->addWidget(scan_, 0, Qt::AlignLeft);
+    toleranceGoal_ = new QLabel(tolerance);
+    toleranceGoal_->setObjectName(QStringLiteral("toleranceGoal"));
+    toleranceGoal_->setWordWrap(true);
+    toleranceLayout->addWidget(toleranceGoal_);
     for (const BarSpec& b : kBars) {
         auto* bar = new ToleranceBar(tr(b.label), tolerance);
         bars_.push_back(bar);
         toleranceLayout->addWidget(bar);
     }
+    toleranceTable_ = new QTableWidget(0, 6, tolerance);
+    toleranceTable_->setObjectName(QStringLiteral("toleranceTable"));
+    toleranceTable_->setHorizontalHeaderLabels({tr("Parameter"), tr("From"), tr("To"), tr("Width"), tr("Below"), tr("Above")});
+    toleranceTable_->horizontalHeaderItem(4)->setToolTip(tr("What lies below the window: the goal fails there, or the scan ends "
+                                                            "(the window may go on)"));
+    toleranceTable_->horizontalHeaderItem(5)->setToolTip(tr("What lies above the window: the goal fails there, or the scan ends "
+                                                            "(the window may go on)"));
+    toleranceTable_->verticalHeader()->hide();
+    toleranceTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    toleranceTable_->setToolTip(tr("Each parameter's window around the current shot, in its unit (°, m/s, R)"));
+    toleranceTable_->setVisible(false);
+    toleranceLayout->addWidget(toleranceTable_);
 
     auto* mapBox = new QGroupBox(tr("Outcome map"), this);
     auto* mapLayout = new QVBoxLayout(mapBox);
@@ -206,13 +225,13 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     connect(mode_, &QComboBox::currentIndexChanged, this, &AnalysisPanel::updateAxisChoices);
     connect(xKey_, &QComboBox::activated, this, [this] {
         const Setup& s = document_->setup();
-        const double v = parameterOf(s, xKey_->currentText().toStdString()).number(s);
+        const double v = parameterOf(s, xKey_->currentData().toString().toStdString()).number(s);
         xFrom_->setValue(v - std::max(0.1, std::abs(v) * 0.1));
         xTo_->setValue(v + std::max(0.1, std::abs(v) * 0.1));
     });
     connect(yKey_, &QComboBox::activated, this, [this] {
         const Setup& s = document_->setup();
-        const double v = parameterOf(s, yKey_->currentText().toStdString()).number(s);
+        const double v = parameterOf(s, yKey_->currentData().toString().toStdString()).number(s);
         yFrom_->setValue(v - std::max(0.1, std::abs(v) * 0.1));
         yTo_->setValue(v + std::max(0.1, std::abs(v) * 0.1));
     });
@@ -283,15 +302,16 @@ void AnalysisPanel::updateAxisChoices()
         mapForm_->setRowVisible(1, two);
         mapForm_->setRowVisible(2, two);
     }
-    const QString x = xKey_->currentText(), y = yKey_->currentText();
+    const QString x = xKey_->currentData().toString(), y = yKey_->currentData().toString();
     xKey_->clear();
     yKey_->clear();
     for (const std::string& key : overridableKeys(s, true)) {
-        xKey_->addItem(QString::fromStdString(key));
-        yKey_->addItem(QString::fromStdString(key));
+        // By name, the key itself kept as the item's data (what the sweep is given).
+        xKey_->addItem(displayKeyName(key), QString::fromStdString(key));
+        yKey_->addItem(displayKeyName(key), QString::fromStdString(key));
     }
     const auto choose = [](QComboBox* box, const QString& wanted, const QString& fallback) {
-        const int i = box->findText(wanted.isEmpty() ? fallback : wanted);
+        const int i = box->findData(wanted.isEmpty() ? fallback : wanted);
         box->setCurrentIndex(i >= 0 ? i : 0);
     };
     choose(xKey_, x, QStringLiteral("shot.heading"));
@@ -341,9 +361,12 @@ void AnalysisPanel::runTolerance()
     const SweepSpec spec = baseSpec(*goal);
     const QString goalWords = QString::fromStdString(describeGoal(std::get<Goal>(parseGoal(goal_->text().trimmed().toStdString()))));
     for (ToleranceBar* bar : bars_) bar->setPending(tr("scanning…"));
+    toleranceGoal_->setText(tr("Goal: %1").arg(goalWords));
+    toleranceTable_->setRowCount(0);
+    toleranceTable_->setVisible(false);
     setStatus(tr("Scanning the tolerance of %1 parameters for: %2").arg(bars_.size()).arg(goalWords));
     const std::vector<ToleranceBar*> bars = bars_;
-    job_->start([spec, bars, goalWords, this](AnalysisJob::Context& context) {
+    job_->start([spec, bars, this](AnalysisJob::Context& context) {
         const long long perScan = kBarPoints + 2 * 20 + 1;
         const long long total = perScan * static_cast<long long>(std::size(kBars));
         for (std::size_t i = 0; i < std::size(kBars) && !context.stop.stop_requested(); ++i) {
@@ -360,15 +383,50 @@ void AnalysisPanel::runTolerance()
                                                      [&](long long done, long long) { context.progress(offset + done, total); });
             if (context.stop.stop_requested()) break;
             ToleranceBar* bar = bars[i];
-            context.post([bar, scan, goalWords] { bar->setScan(scan, goalWords); });
+            context.post([bar, scan] { bar->setScan(scan); });
         }
         context.progress(total, total);
         context.post([this] {
-            QStringList lines;
-            for (ToleranceBar* bar : bars_) lines << bar->text();
-            setStatus(lines.join(QLatin1Char('\n')));
+            fillToleranceTable();
+            long long shots = 0;
+            for (ToleranceBar* bar : bars_)
+                if (bar->scan()) shots += bar->scan()->shots;
+            // The windows are in the bars and the table: the status says only what was done.
+            setStatus(tr("Scanned %1 parameters, %2 shots simulated.").arg(toleranceTable_->rowCount()).arg(shots));
         });
     });
+}
+
+void AnalysisPanel::fillToleranceTable()
+{
+    toleranceTable_->setRowCount(0);
+    const auto item = [](const QString& text) {
+        auto* it = new QTableWidgetItem(text);
+        it->setFlags(Qt::ItemIsSelectable | Qt::ItemIsEnabled);
+        return it;
+    };
+    for (std::size_t i = 0; i < bars_.size(); ++i) {
+        if (!bars_[i]->scan()) continue;
+        const analysis::ToleranceScan& s = *bars_[i]->scan();
+        const int row = toleranceTable_->rowCount();
+        toleranceTable_->insertRow(row);
+        toleranceTable_->setItem(row, 0, item(tr(kBars[i].label)));
+        if (!s.found) {
+            toleranceTable_->setItem(row, 1, item(tr("none in the scan")));
+            continue;
+        }
+        toleranceTable_->setItem(row, 1, item(valueText(s.key, s.low)));
+        toleranceTable_->setItem(row, 2, item(valueText(s.key, s.high)));
+        toleranceTable_->setItem(row, 3, item(valueText(s.key, s.width())));
+        toleranceTable_->setItem(row, 4, item(s.lowAtScanEdge ? tr("scan's edge") : tr("fails")));
+        toleranceTable_->setItem(row, 5, item(s.highAtScanEdge ? tr("scan's edge") : tr("fails")));
+    }
+    toleranceTable_->resizeColumnsToContents();
+    toleranceTable_->setVisible(toleranceTable_->rowCount() > 0);
+    // Tall enough for every row: the dock scrolls, the table does not.
+    int height = toleranceTable_->horizontalHeader()->height() + 2 * toleranceTable_->frameWidth();
+    for (int r = 0; r < toleranceTable_->rowCount(); ++r) height += toleranceTable_->rowHeight(r);
+    toleranceTable_->setFixedHeight(height);
 }
 
 void AnalysisPanel::runMap()
@@ -383,11 +441,11 @@ void AnalysisPanel::runMap()
         spec = tipOffsetMapSpec(base, n);
         if (!spec) return setStatus(tr("The setup has no cue strike: no tip offsets to map."));
     } else {
-        const auto x = Parameter::resolve(base.base, xKey_->currentText().toStdString());
-        const auto y = Parameter::resolve(base.base, yKey_->currentText().toStdString());
+        const auto x = Parameter::resolve(base.base, xKey_->currentData().toString().toStdString());
+        const auto y = Parameter::resolve(base.base, yKey_->currentData().toString().toStdString());
         if (!std::holds_alternative<Parameter>(x) || !std::holds_alternative<Parameter>(y))
             return setStatus(tr("Choose two keys of this setup."));
-        if (xKey_->currentText() == yKey_->currentText()) return setStatus(tr("Choose two different keys."));
+        if (xKey_->currentData() == yKey_->currentData()) return setStatus(tr("Choose two different keys."));
         spec = mapSpec(base, Variation{std::get<Parameter>(x), Range{xFrom_->value(), xTo_->value(), n}},
                        Variation{std::get<Parameter>(y), Range{yFrom_->value(), yTo_->value(), n}});
     }

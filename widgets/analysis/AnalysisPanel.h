@@ -19,6 +19,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
 class QLabel;
+class QTableWidget;
 class QLineEdit;
 class QProgressBar;
 class QPushButton;
@@ -46,6 +47,8 @@ public:
     AnalysisJob* job() const { return job_; }
     OutcomeMap* map() const { return map_; }
     const std::vector<ToleranceBar*>& bars() const { return bars_; }
+    // The windows as numbers: per parameter from, to, width, and what lies beyond each end.
+    QTableWidget* toleranceTable() const { return toleranceTable_; }
     QLineEdit* goalEdit() const { return goal_; }
     QComboBox* mapMode() const { return mode_; }
     QSpinBox* mapCells() const { return cells_; }
@@ -60,6 +63,7 @@ private:
     void onResultChanged();
     void updateAxisChoices();
     void setStatus(const QString& text);
+    void fillToleranceTable();  // from the bars' scans
     // The goal of the line edit for the current setup; nullopt (and a message shown) if it is wrong.
     std::optional<analysis::ResolvedGoal> currentGoal();
     QString defaultGoal() const;
@@ -72,6 +76,8 @@ private:
     QPushButton* goalFromShot_;
     QPushButton* scan_;
     std::vector<ToleranceBar*> bars_;
+    QLabel* toleranceGoal_;
+    QTableWidget* toleranceTable_;
     QFormLayout* mapForm_ = nullptr;
     QComboBox* mode_;
     QComboBox* xKey_;

@@ -1,5 +1,7 @@
 #include "OutcomeMap.h"
 
+#include "i18n/DisplayNames.h"
+
 #include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -151,14 +153,9 @@ void OutcomeMap::paintEvent(QPaintEvent*)
     }
     p.drawRect(r);
 
-    // Axes: the keys, their units and the ends of the ranges.
+    // Axes: the parameters by name with their units, and the ends of the ranges.
     const int fh = fontMetrics().height();
-    const auto label = [](const analysis::Variation& v) {
-        return QString::fromStdString(v.parameter.key()) +
-               QString::fromStdString(analysis::unitOf(v.parameter.key())).replace(QLatin1Char(' '), QString()).prepend(
-                   QStringLiteral(" ["))
-                   .append(QLatin1Char(']'));
-    };
+    const auto label = [](const analysis::Variation& v) { return displayKeyName(v.parameter.key()); };
     const auto number = [](double v) { return QString::number(v, 'g', 4); };
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), fh), Qt::AlignLeft, number(x_->range.from));
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), fh), Qt::AlignRight, number(x_->range.to));

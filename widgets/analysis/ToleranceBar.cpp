@@ -3,6 +3,7 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cuelab {
@@ -21,20 +22,30 @@ int decimalsFor(const std::string& key)
     return 3;
 }
 
+QString valueText(const std::string& key, double value)
+{
+    const QString unit = QString::fromStdString(analysis::unitOf(key)).trimmed();
+    const QString number = QString::number(value, 'f', decimalsFor(key));
+    if (unit.isEmpty()) return number;
+    return unit == QStringLiteral("°") ? number + unit : number + QLatin1Char(' ') + unit;
+}
+
 ToleranceBar::ToleranceBar(QString label, QWidget* parent) : QWidget(parent), label_(std::move(label))
 {
     setPending(tr("not scanned"));
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
 }
 
-void ToleranceBar::setScan(const analysis::ToleranceScan& scan, const QString& goalText)
+void ToleranceBar::setScan(const analysis::ToleranceScan& scan)
 {
     scan_ = scan;
-    if (scan.found)
-        text_ = QStringLiteral("%1: %2 %3").arg(label_, goalText,
-                                               QString::fromStdString(analysis::describeWindow(scan, decimalsFor(scan.key))));
-    else
-        text_ = QStringLiteral("%1: %2").arg(label_, QString::fromStdString(analysis::describeWindow(scan, 2)));
+    if (scan.found) {
+        text_ = tr("%1: from %2 to %3, ±%4")
+                    .arg(label_, valueText(scan.key, scan.low), valueText(scan.key, scan.high), valueText(scan.key, scan.halfWidth()));
+        if (scan.lowAtScanEdge || scan.highAtScanEdge) text_ += tr(" (reaches the end of the scan)");
+    } else {
+        text_ = tr("%1: no value in the scanned range meets the goal").arg(label_);
+    }
     if (scan.found && !scan.currentMet) text_ += tr(" (the current value misses)");
     setToolTip(tr("%1 shots simulated; the window's edges are refined by bisection. Grey: misses the goal, "
                   "dark: illegal value, green: meets it; the black line is the current value.")
@@ -49,8 +60,8 @@ void ToleranceBar::setPending(const QString& text)
     update();
 }
 
-QSize ToleranceBar::sizeHint() const { return {360, fontMetrics().height() + 24}; }
-QSize ToleranceBar::minimumSizeHint() const { return {200, fontMetrics().height() + 24}; }
+QSize ToleranceBar::sizeHint() const { return {360, 2 * fontMetrics().height() + 24}; }
+QSize ToleranceBar::minimumSizeHint() const { return {200, 2 * fontMetrics().height() + 24}; }
 
 void ToleranceBar::paintEvent(QPaintEvent*)
 {
@@ -86,6 +97,18 @@ void ToleranceBar::paintEvent(QPaintEvent*)
     p.setPen(QPen(Qt::black, 2));
     const double x = xOf(s.current);
     p.drawLine(QPointF(x, bar.top() - 2), QPointF(x, bar.bottom() + 2));
+    // The scale: the scanned range's ends and the current value, under the bar.
+    p.setPen(palette().color(QPalette::WindowText));
+    const QRectF under(bar.left(), bar.bottom() + 2, bar.width(), textHeight);
+    const QString current = valueText(s.key, s.current);
+    const double w = fontMetrics().horizontalAdvance(current) + 8;
+    const QRectF middle(std::clamp(x - w / 2, under.left(), under.right() - w), under.top(), w, textHeight);
+    const QString left = valueText(s.key, from), right = valueText(s.key, to);
+    if (fontMetrics().horizontalAdvance(left) + 4 < middle.left() - under.left())
+        p.drawText(under, Qt::AlignLeft | Qt::AlignVCenter, left);
+    if (fontMetrics().horizontalAdvance(right) + 4 < under.right() - middle.right())
+        p.drawText(under, Qt::AlignRight | Qt::AlignVCenter, right);
+    p.drawText(middle, Qt::AlignCenter, current);
 }
 
 }  // namespace cuelab

@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 #include <QStringList>
 
+#include <utility>
+
 namespace cuelab {
 
 namespace {
@@ -79,5 +81,53 @@ QString displayElementName(const std::string& id)
     return s;
 }
 
+
+QString displayKeyName(const std::string& key)
+{
+    static const std::pair<const char*, const char*> kNames[] = {
+        {"shot.heading", QT_TRANSLATE_NOOP("cuelab", "Heading (°)")},
+        {"shot.speed", QT_TRANSLATE_NOOP("cuelab", "Cue speed (m/s)")},
+        {"shot.elevation", QT_TRANSLATE_NOOP("cuelab", "Cue elevation (°)")},
+        {"shot.side", QT_TRANSLATE_NOOP("cuelab", "Tip offset, side (R)")},
+        {"shot.height", QT_TRANSLATE_NOOP("cuelab", "Tip offset, height (R)")},
+        {"shot.cue_mass", QT_TRANSLATE_NOOP("cuelab", "Cue mass (kg)")},
+        {"shot.end_mass", QT_TRANSLATE_NOOP("cuelab", "Cue end mass (kg)")},
+        {"physics.mu_slide", QT_TRANSLATE_NOOP("cuelab", "Sliding friction μs")},
+        {"physics.mu_roll", QT_TRANSLATE_NOOP("cuelab", "Rolling resistance μr")},
+        {"physics.mu_spin", QT_TRANSLATE_NOOP("cuelab", "Spin friction μsp")},
+        {"physics.gravity", QT_TRANSLATE_NOOP("cuelab", "Gravity (m/s²)")},
+        {"physics.ball_ball.restitution", QT_TRANSLATE_NOOP("cuelab", "Ball-ball restitution e")},
+        {"physics.ball_ball.friction", QT_TRANSLATE_NOOP("cuelab", "Ball-ball friction μb")},
+        {"physics.ball_cushion.restitution", QT_TRANSLATE_NOOP("cuelab", "Cushion restitution e")},
+        {"physics.ball_cushion.friction", QT_TRANSLATE_NOOP("cuelab", "Cushion friction μ")},
+        {"table.length", QT_TRANSLATE_NOOP("cuelab", "Table length (m)")},
+        {"table.width", QT_TRANSLATE_NOOP("cuelab", "Table width (m)")},
+        {"table.cushion_height", QT_TRANSLATE_NOOP("cuelab", "Cushion height (m)")},
+        {"simulation.frame_dt", QT_TRANSLATE_NOOP("cuelab", "Frame step (s)")},
+        {"simulation.max_time", QT_TRANSLATE_NOOP("cuelab", "Time limit (s)")},
+    };
+    for (const auto& [k, name] : kNames)
+        if (key == k) return tr(name);
+    // balls.ID.FIELD
+    const QString s = QString::fromStdString(key);
+    if (s.startsWith(QLatin1String("balls."))) {
+        const qsizetype dot = s.lastIndexOf(QLatin1Char('.'));
+        const QString id = s.mid(6, dot - 6);
+        const QString field = s.mid(dot + 1);
+        const std::pair<const char*, const char*> fields[] = {
+            {"x", QT_TRANSLATE_NOOP("cuelab", "x (m)")},          {"y", QT_TRANSLATE_NOOP("cuelab", "y (m)")},
+            {"vx", QT_TRANSLATE_NOOP("cuelab", "vx (m/s)")},      {"vy", QT_TRANSLATE_NOOP("cuelab", "vy (m/s)")},
+            {"wx", QT_TRANSLATE_NOOP("cuelab", "ωx (rad/s)")},    {"wy", QT_TRANSLATE_NOOP("cuelab", "ωy (rad/s)")},
+            {"wz", QT_TRANSLATE_NOOP("cuelab", "ωz (rad/s)")},    {"radius", QT_TRANSLATE_NOOP("cuelab", "radius (m)")},
+            {"mass", QT_TRANSLATE_NOOP("cuelab", "mass (kg)")},
+        };
+        for (const auto& [f, name] : fields)
+            if (field == QLatin1String(f)) return tr("Ball %1, %2").arg(id, tr(name));
+    }
+    // The model's own parameters (physics.ball_cushion.steps, ...): the key's last part.
+    if (s.startsWith(QLatin1String("physics.ball_cushion.")))
+        return tr("Cushion model's %1").arg(s.mid(21).replace(QLatin1Char('_'), QLatin1Char(' ')));
+    return s;
+}
 
 }  // namespace cuelab

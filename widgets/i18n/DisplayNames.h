@@ -24,5 +24,10 @@ QString eventNumber(int index);
 // "top rail (left half)"; translated. An id it does not know shows as it is.
 QString displayElementName(const std::string& id);
 
+// A `--set` key (core/analysis Override.h) as a person reads it, with its unit: "shot.heading" →
+// "Heading (°)", "physics.mu_roll" → "Rolling resistance μr", "balls.3.x" → "Ball 3, x (m)";
+// translated. A key it does not know shows as it is.
+QString displayKeyName(const std::string& key);
+
 
 }  // namespace cuelab
