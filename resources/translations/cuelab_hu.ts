@@ -3444,6 +3444,26 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <source>The fitted strike was refused</source>
         <translation>Az illesztett ütést a felállás nem fogadta el</translation>
     </message>
+    <message>
+        <source>Calibrate Cloth</source>
+        <translation>Posztó kalibrálása</translation>
+    </message>
+    <message>
+        <source>Fit the rolling resistance μr and the sliding friction μs (no unit) over every recording opened in this session, each with its own strike (the same calibration as cuelab-cli calibrate); the frictions and this recording&apos;s strike are one undoable edit</source>
+        <translation>A gördülési ellenállás μr és a csúszási súrlódás μs (mértékegység nélkül) illesztése az ebben a munkamenetben megnyitott összes felvételre, mindegyiknek a saját ütésével (ugyanaz a kalibrálás, mint a cuelab-cli calibrate); a súrlódások és ennek a felvételnek az ütése egy visszavonható szerkesztés</translation>
+    </message>
+    <message>
+        <source>%1 recordings open in this session (Calibrate Cloth uses them all)</source>
+        <translation>%1 felvétel van nyitva ebben a munkamenetben (a posztó kalibrálása mindet használja)</translation>
+    </message>
+    <message>
+        <source>Calibrate the cloth to the recordings</source>
+        <translation>A posztó kalibrálása a felvételekhez</translation>
+    </message>
+    <message>
+        <source>Cloth calibrated: μr = %1, μs = %2; RMSE %3 (moved balls); Edit → Undo takes it back</source>
+        <translation>Posztó kalibrálva: μr = %1, μs = %2; RMSE %3 (mozgó golyók); Szerkesztés → Visszavonás visszaveszi</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::ShortcutsDialog</name>

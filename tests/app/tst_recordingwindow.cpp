@@ -115,6 +115,8 @@ private slots:
         QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
         QCOMPARE(window.document()->undoStack()->count(), steps + 1);
         const CueStrike fitted = *window.document()->setup().shot;
+        qInfo("fitted heading %.5f (true %.5f), speed %.5f (true %.5f): %s", fitted.headingDeg, truth.shot->headingDeg,
+              fitted.speed, truth.shot->speed, qPrintable(finished.front().at(1).toString()));
         QVERIFY2(std::abs(fitted.headingDeg - truth.shot->headingDeg) < 0.05, qPrintable(QString::number(fitted.headingDeg)));
         QVERIFY2(std::abs(fitted.speed / truth.shot->speed - 1.0) < 0.01, qPrintable(QString::number(fitted.speed)));
         window.document()->waitForResult();
@@ -130,6 +132,48 @@ private slots:
         QVERIFY(!cancelled.front().at(0).toBool());
         QCOMPARE(window.document()->setup().shot->headingDeg, shot->headingDeg);
         QCOMPARE(window.document()->undoStack()->count(), steps + 1);  // the fit's step is still there to redo
+    }
+
+    // Calibrate Cloth finds the rolling resistance the recording was made with, together with the
+    // strike, as one undoable edit.
+    void calibrateClothToTheRecording()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openExample(QStringLiteral(":/examples/three-cushion.json")));
+        window.document()->waitForResult();
+        const Setup opened = window.document()->setup();
+        Setup truth = opened;
+        truth.physics.muRoll = opened.physics.muRoll * 1.5;  // the recorded cloth is slower
+        test::SamplingOptions sampling;
+        sampling.duration = 3.0;
+        const Recording recording = test::synthesize(truth, sampling);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("slow-cloth.rec.json"));
+        {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(io::serializeRecording(recording));
+        }
+        QVERIFY(openRecording(window, path, false));
+        auto* panel = window.findChild<RecordingPanel*>();
+        QTRY_VERIFY(panel->calibrateButton()->isEnabled());
+        const int steps = window.document()->undoStack()->count();
+        QSignalSpy finished(panel, &RecordingPanel::fitFinished);
+        panel->calibrateCloth();
+        QVERIFY(panel->isFitting());
+        QVERIFY(finished.wait(300000));
+        QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
+        QCOMPARE(window.document()->undoStack()->count(), steps + 1);
+        const double muRoll = window.document()->setup().physics.muRoll;
+        qInfo("calibrated mu_roll %.5f (recorded with %.5f): %s", muRoll, truth.physics.muRoll,
+              qPrintable(finished.front().at(1).toString()));
+        QVERIFY2(std::abs(muRoll / truth.physics.muRoll - 1.0) < 0.1,
+                 qPrintable(QStringLiteral("mu_roll %1, recorded with %2").arg(muRoll).arg(truth.physics.muRoll)));
+        window.document()->undoStack()->undo();
+        QCOMPARE(window.document()->setup().physics.muRoll, opened.physics.muRoll);
+        QCOMPARE(window.document()->setup().shot->headingDeg, opened.shot->headingDeg);
     }
 
     // A recording of balls the shot lacks starts a new shot from the recording (cuelab --recording):

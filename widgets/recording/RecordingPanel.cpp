@@ -1,5 +1,7 @@
 #include "RecordingPanel.h"
 
+#include "Calibration.h"
+#include "RecordingSetup.h"
 #include "StrikeFit.h"
 #include "editor/Document.h"
 
@@ -20,6 +22,7 @@
 #include <atomic>
 #include <cmath>
 #include <variant>
+#include <algorithm>
 
 namespace cuelab {
 
@@ -146,6 +149,11 @@ RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
     fit_->setObjectName(QStringLiteral("recordingFit"));
     fit_->setToolTip(tr("Find the heading (°), cue speed (m/s) and tip offsets (R) whose simulation follows the recording best "
                         "(the same fit as cuelab-cli fit); the result is one undoable edit"));
+    calibrate_ = new QPushButton(tr("Calibrate Cloth"), this);
+    calibrate_->setObjectName(QStringLiteral("recordingCalibrate"));
+    calibrate_->setToolTip(tr("Fit the rolling resistance μr and the sliding friction μs (no unit) over every recording opened "
+                              "in this session, each with its own strike (the same calibration as cuelab-cli calibrate); "
+                              "the frictions and this recording's strike are one undoable edit"));
     cancel_ = new QPushButton(tr("Cancel"), this);
     cancel_->setObjectName(QStringLiteral("recordingCancel"));
     cancel_->setToolTip(tr("Stop the fit; the shot stays as it was"));
@@ -157,6 +165,7 @@ RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
     progress_->setValue(0);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(fit_);
+    buttons->addWidget(calibrate_);
     buttons->addWidget(cancel_);
     buttons->addWidget(progress_, 1);
     auto* layout = new QVBoxLayout(this);
@@ -168,6 +177,7 @@ RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
     layout->addWidget(balls_, 1);
 
     connect(fit_, &QPushButton::clicked, this, &RecordingPanel::fitStrike);
+    connect(calibrate_, &QPushButton::clicked, this, &RecordingPanel::calibrateCloth);
     connect(cancel_, &QPushButton::clicked, this, &RecordingPanel::cancelFit);
     connect(watcher_, &QFutureWatcher<std::shared_ptr<fit::FitResult>>::finished, this, &RecordingPanel::fitDone);
     connect(document_, &Document::resultChanged, this, &RecordingPanel::refresh);
@@ -183,7 +193,16 @@ RecordingPanel::~RecordingPanel()
 void RecordingPanel::setRecording(std::optional<Recording> recording)
 {
     cancelFit();
+    watcher_->waitForFinished();
     recording_ = std::move(recording);
+    if (!recording_) session_.clear();
+    else {
+        const auto same = std::find_if(session_.begin(), session_.end(), [&](const Recording& r) {
+            return r.name == recording_->name && r.balls.size() == recording_->balls.size() &&
+                   r.duration() == recording_->duration();
+        });
+        if (same == session_.end()) session_.push_back(*recording_);
+    }
     refresh();
     emit recordingChanged();
 }
@@ -224,6 +243,7 @@ void RecordingPanel::refresh()
         if (!missing.empty())
             text += QStringLiteral("<br>") + tr("The shot has no ball \"%1\": open the recording again to start from its own setup.")
                                                  .arg(QString::fromStdString(missing).toHtmlEscaped());
+        if (session_.size() > 1) text += QStringLiteral("<br>") + tr("%1 recordings open in this session (Calibrate Cloth uses them all)").arg(session_.size());
         header_->setText(text);
     }
     rmse_->setText(residual_ ? tr("RMSE: %1").arg(summary()) : QString());
@@ -240,6 +260,7 @@ void RecordingPanel::refresh()
     }
     chart_->set(residual_, recording_ ? &*recording_ : nullptr);
     fit_->setEnabled(residual_.has_value() && document_->setup().shot.has_value() && !isFitting());
+    calibrate_->setEnabled(fit_->isEnabled());
     emit residualChanged();
 }
 
@@ -254,19 +275,7 @@ void RecordingPanel::fitStrike()
     stop_ = std::make_unique<std::stop_source>();
     auto done = std::make_shared<std::atomic_int>(0);
     auto total = std::make_shared<std::atomic_int>(1);
-    auto* timer = new QTimer(this);
-    connect(timer, &QTimer::timeout, this, [this, done, total, timer] {
-        if (!isFitting()) {
-            timer->deleteLater();
-            return;
-        }
-        progress_->setRange(0, std::max(1, total->load()));
-        progress_->setValue(done->load());
-    });
-    timer->start(100);
-    fit_->setEnabled(false);
-    cancel_->setEnabled(true);
-    progress_->setRange(0, 0);  // busy until the first search reports
+    startProgress(done, total);
     watcher_->setFuture(QtConcurrent::run(
         [base, recording = *recording_, keys = std::get<std::vector<fit::FitKey>>(keys), token = stop_->get_token(), done, total] {
             fit::FitOptions options;
@@ -279,6 +288,61 @@ void RecordingPanel::fitStrike()
                 },
                 token));
         }));
+}
+
+void RecordingPanel::startProgress(const std::shared_ptr<std::atomic_int>& done, const std::shared_ptr<std::atomic_int>& total)
+{
+    auto* timer = new QTimer(this);
+    connect(timer, &QTimer::timeout, this, [this, done, total, timer] {
+        if (!isFitting()) {
+            timer->deleteLater();
+            return;
+        }
+        progress_->setRange(0, std::max(1, total->load()));
+        progress_->setValue(done->load());
+    });
+    timer->start(100);
+    fit_->setEnabled(false);
+    calibrate_->setEnabled(false);
+    cancel_->setEnabled(true);
+    progress_->setRange(0, 0);  // busy until the first step reports
+}
+
+void RecordingPanel::calibrateCloth()
+{
+    if (isFitting() || !recording_ || !document_->setup().shot) return;
+    // The current recording with the document's setup, the others with the setup each suggests (the
+    // document's physics, so that the calibration starts from the frictions shown).
+    std::vector<fit::CalibrationProblem> problems;
+    problems.push_back({recording_->name, document_->setup(), *recording_});
+    for (const Recording& r : session_) {
+        if (r.name == recording_->name && r.duration() == recording_->duration()) continue;
+        std::optional<Setup> setup = setupFromRecording(r);
+        if (!setup || !setup->shot) continue;
+        setup->physics = document_->setup().physics;
+        problems.push_back({r.name, *setup, r});
+    }
+    const auto shared = fit::resolveFitKeys(document_->setup(), calibratedKeys());
+    if (!std::holds_alternative<std::vector<fit::FitKey>>(shared)) return;
+    stop_ = std::make_unique<std::stop_source>();
+    auto done = std::make_shared<std::atomic_int>(0);
+    auto total = std::make_shared<std::atomic_int>(1);
+    startProgress(done, total);
+    watcher_->setFuture(QtConcurrent::run([problems, keys = std::get<std::vector<fit::FitKey>>(shared), token = stop_->get_token(),
+                                           done, total] {
+        const fit::CalibrationResult r = fit::calibrate(
+            problems, keys, fit::defaultStrikeKeys(), {},
+            [done, total](const fit::CalibrationProgress& p) {
+                // Per round: the strike fits, then the outer search's trials (about 200 at most).
+                total->store(p.recordings + 200);
+                done->store(std::min(p.recordingsDone + p.outerEvaluations, p.recordings + 199));
+            },
+            token);
+        auto first = std::make_shared<fit::FitResult>(r.fits.empty() ? fit::FitResult{} : r.fits.front());
+        first->cancelled = r.cancelled || r.fits.empty();
+        // The calibrated frictions travel in the first fit's setup (the current recording's).
+        return first;
+    }));
 }
 
 void RecordingPanel::cancelFit()
@@ -299,10 +363,21 @@ void RecordingPanel::fitDone()
         emit fitFinished(false, tr("Fit cancelled: the shot is as it was"));
         return;
     }
-    // The fitted strike replaces the shot: one undo step.
+    // The fitted strike replaces the shot (and a calibration's frictions the cloth's): one undo step.
     Setup after = document_->setup();
     after.shot = result->setup.shot;
-    const bool applied = document_->edit(tr("Fit the strike to the recording"), after);
+    const bool calibration = result->setup.physics.muRoll != after.physics.muRoll || result->setup.physics.muSlide != after.physics.muSlide;
+    after.physics.muRoll = result->setup.physics.muRoll;
+    after.physics.muSlide = result->setup.physics.muSlide;
+    const bool applied = document_->edit(calibration ? tr("Calibrate the cloth to the recordings") : tr("Fit the strike to the recording"), after);
+    if (applied && calibration) {
+        refresh();
+        emit fitFinished(true, tr("Cloth calibrated: μr = %1, μs = %2; RMSE %3 (moved balls); Edit → Undo takes it back")
+                                   .arg(after.physics.muRoll, 0, 'g', 4)
+                                   .arg(after.physics.muSlide, 0, 'g', 4)
+                                   .arg(centimetres(result->rmse)));
+        return;
+    }
     refresh();
     emit fitFinished(applied, applied ? tr("Strike fitted in %1 s: RMSE %2 (moved balls); Edit → Undo takes it back")
                                             .arg(result->seconds, 0, 'f', 1)
