@@ -78,19 +78,6 @@ int main(int argc, char* argv[])
     }
     cuelab::installTranslations(cuelab::interfaceLocale(language));
 
-    if (parser.isSet(QStringLiteral("screenshot"))) return cuelab::takeScreenshot(parser, parser.value(QStringLiteral("screenshot")));
-    if (const QString stray = cuelab::strayScreenshotOption(parser); !stray.isEmpty()) {
-        cuelab::printCommandLineError(QStringLiteral("--%1 is an option of --screenshot only").arg(stray));
-        return 2;
-    }
-
-    QString problem;
-    if (!cuelab::probeOpenGL(&problem)) {
-        std::fprintf(stderr, "cuelab: %s\n", qPrintable(problem));
-        QMessageBox::critical(nullptr, QStringLiteral("CueLab"), problem);
-        return 1;
-    }
-
     std::optional<cuelab::Arrangement> layout;
     if (parser.isSet(QStringLiteral("layout"))) {
         const QString name = parser.value(QStringLiteral("layout")).toLower();
@@ -117,6 +104,27 @@ int main(int argc, char* argv[])
                                               .arg(parser.value(QStringLiteral("event"))));
             return 2;
         }
+    }
+
+    // The window's own options mean nothing to a picture: refused, not silently ignored.
+    if (parser.isSet(QStringLiteral("screenshot")))
+        for (const char* option : {"layout", "event", "recording"})
+            if (parser.isSet(QString::fromLatin1(option))) {
+                cuelab::printCommandLineError(QStringLiteral("--%1 is an option of the window, not of --screenshot").arg(QLatin1String(option)));
+                return 2;
+            }
+
+    if (parser.isSet(QStringLiteral("screenshot"))) return cuelab::takeScreenshot(parser, parser.value(QStringLiteral("screenshot")));
+    if (const QString stray = cuelab::strayScreenshotOption(parser); !stray.isEmpty()) {
+        cuelab::printCommandLineError(QStringLiteral("--%1 is an option of --screenshot only").arg(stray));
+        return 2;
+    }
+
+    QString problem;
+    if (!cuelab::probeOpenGL(&problem)) {
+        std::fprintf(stderr, "cuelab: %s\n", qPrintable(problem));
+        QMessageBox::critical(nullptr, QStringLiteral("CueLab"), problem);
+        return 1;
     }
 
     cuelab::MainWindow window;
