@@ -29,7 +29,7 @@ int usage(const char* why)
 {
     std::fprintf(stderr,
                  "cuelab-bench: %s\nusage: cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] "
-                 "[--class NAME] [--max-events N]\n       cuelab-bench --check [--set KEY=VALUE]... FILE...\n",
+                 "[--class NAME] [--max-events N] [--first K]\n       cuelab-bench --check [--set KEY=VALUE]... FILE...\n",
                  why);
     return 2;
 }
@@ -47,6 +47,7 @@ int soakCommand(int argc, char** argv)
         const std::string a = argv[k];
         long long n = 0;
         if (a == "--jobs" && k + 1 < argc && parseCount(argv[k + 1], n) && n >= 1) o.jobs = static_cast<int>(n), ++k;
+        else if (a == "--first" && k + 1 < argc && parseCount(argv[k + 1], n) && n >= 0) o.first = n, ++k;
         else if (a == "--max-events" && k + 1 < argc && parseCount(argv[k + 1], n) && n >= 1) o.maxEvents = n, ++k;
         else if (a == "--out" && k + 1 < argc) o.outDir = argv[++k];
         else if (a == "--no-determinism") o.checks.determinism = false;

@@ -4,8 +4,9 @@
 
 namespace cuelab::bench {
 
-// --soak N SEED [--jobs J] [--out DIR] [--no-determinism] [--class NAME] [--max-events N]
-// (argv after "--soak"): prints the summary as JSON; exit 0, or 2 on a usage error.
+// --soak N SEED [--jobs J] [--out DIR] [--no-determinism] [--class NAME] [--max-events N] [--first K]
+// (argv after "--soak"): shots K .. K + N - 1 of the soak SEED; prints the summary as JSON; exit 0, or
+// 2 on a usage error.
 int soakCommand(int argc, char** argv);
 
 // --check [--set KEY=VALUE]... FILE... (argv after "--check"): loads each file, applies the

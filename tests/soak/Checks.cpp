@@ -372,8 +372,9 @@ std::string timelineProblem(const SimulationResult& r, double positionTol, doubl
             const BallState end = continued(r, index, tl[k], seg.start);
             const BallState& begin = seg.state;
             // A segment that only goes on with the same motion (the same push, label, velocity and
-            // spin) changes nothing: the simulator may cut a timeline there.
-            const bool unchanged = seg.push == tl[k].push && begin.motion == end.motion
+            // spin) changes nothing: the simulator may cut a timeline there when it solves a held
+            // group at that instant (a ball it released a moment before, a few micrometres away).
+            const bool unchanged = solved.count(seg.start) && seg.push == tl[k].push && begin.motion == end.motion
                                    && (end.velocity - begin.velocity).norm() <= velocityTol
                                    && (end.spin - begin.spin).norm() * r.balls[i].radius <= velocityTol;
             if (extra && !unchanged && !heldHere())

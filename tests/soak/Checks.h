@@ -81,11 +81,11 @@ Vec2 clothCorrectedMomentum(const BallState& s, double radius, double mass);
 // group of its balls (the balls touching them, through held gaps of at most kHeldGap) keeps the sum
 // of clothCorrectedMomentum from just before to just after the instant (within 1e-12 x n of sum m |v|
 // before and after for n balls, plus m kSpeedEpsilon per ball for the snap of a label, + 1e-15 N s):
-// re-seating a rolling ball gives the cloth a share (5/7 of the impulse moves the ball),
-// and the correction takes it out. Not checked where the group shares its impulses otherwise: a
-// member at rest or slower than kRollOffSpeed (the cloth holds it whole, seatContacts), a member touching a cushion or jaw,
-// another kind of event of a member at that instant, or the frictional ball-ball law (its impulse
-// off the centres turns the spins too). Returns "" or what broke; *worst (if given) receives the
+// re-seating a rolling ball gives the cloth a share (5/7 of the impulse moves the ball), and the
+// correction takes it out. Not checked where the group shares its impulses otherwise: a member at
+// rest or slower than kRollOffSpeed (the cloth holds it whole, seatContacts), a member touching a
+// cushion or jaw, another kind of event of a member at that instant, or the frictional ball-ball
+// law (its impulse off the centres turns the spins too). Returns "" or what broke; *worst (if given) receives the
 // largest change checked.
 std::string groupMomentumProblem(const SimulationResult& r, double* worst = nullptr);
 
@@ -99,12 +99,12 @@ BallState continued(const SimulationResult& r, int index, const MotionSegment& s
 // moves it to the pocket's centre). A segment is begun by an event of this ball at its start time,
 // in order, except in a held push (Contact.h), whose group is solved again without an event (at
 // another ball's event, or when a frozen direction has turned far enough), or where the timeline is
-// only cut (the same push, label, velocity and spin go on). The excuse of a held group is per ball:
-// the ball touches (through gaps of at most kHeldGap) a ball of that instant's solve (a ball of a
-// held or grouped event there, or one whose push begins, goes on in a new segment or ends there; the
-// ball itself, when its own push does). Its velocity may then change by the re-seating of its
-// contacts, at most kHoldSpeed per contact it has there (balls, cushions and jaws within kHeldGap).
-// Returns "" or what broke (ball, segment, numbers).
+// only cut at an instant a held group is solved (the same push, label, velocity and spin go on).
+// The excuse of a held group is per ball: the ball touches (through gaps of at most kHeldGap) a ball
+// of that instant's solve (a ball of a held or grouped event there, or one whose push begins, goes
+// on in a new segment or ends there; the ball itself, when its own push does). Its velocity may then
+// change by the re-seating of its contacts, at most kHoldSpeed per contact it has there (balls,
+// cushions and jaws within kHeldGap). Returns "" or what broke (ball, segment, numbers).
 std::string timelineProblem(const SimulationResult& r, double positionTol = 1e-9, double velocityTol = 1e-9);
 
 }  // namespace cuelab::testing

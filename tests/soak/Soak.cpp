@@ -102,7 +102,7 @@ SoakSummary runSoak(const SoakOptions& options, const SoakProgress& progress)
     std::vector<SoakSummary> parts(static_cast<std::size_t>(jobs));
     auto work = [&](SoakSummary& part) {
         for (long long k = next++; k < options.count; k = next++) {
-            runShot(options, static_cast<std::uint64_t>(k), part);
+            runShot(options, static_cast<std::uint64_t>(options.first + k), part);
             const long long finished = ++done;
             if (progress) {
                 const std::lock_guard<std::mutex> lock(progressMutex);
@@ -120,6 +120,7 @@ SoakSummary runSoak(const SoakOptions& options, const SoakProgress& progress)
     std::sort(summary.failures.begin(), summary.failures.end(),
               [](const SoakFailure& a, const SoakFailure& b) { return a.index < b.index; });
     summary.shots = std::max(0LL, options.count);
+    summary.first = options.first;
     summary.seed = options.seed;
     summary.jobs = jobs;
     summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
@@ -140,9 +141,9 @@ std::string toJson(const SoakSummary& s, std::size_t listed)
 {
     char buffer[256];
     std::snprintf(buffer, sizeof buffer,
-                  "{\"soak\": {\"shots\": %lld, \"seed\": %llu, \"jobs\": %d, \"events\": %lld, \"wall_seconds\": %.4g, "
+                  "{\"soak\": {\"shots\": %lld, \"first\": %lld, \"seed\": %llu, \"jobs\": %d, \"events\": %lld, \"wall_seconds\": %.4g, "
                   "\"cpu_seconds\": %.4g, \"simulate_cpu_seconds\": %.4g, \"failed_shots\": %lld,\n",
-                  s.shots, static_cast<unsigned long long>(s.seed), s.jobs, s.events, s.wallSeconds, s.cpuSeconds,
+                  s.shots, s.first, static_cast<unsigned long long>(s.seed), s.jobs, s.events, s.wallSeconds, s.cpuSeconds,
                   s.simulateCpuSeconds, s.failedShots);
     std::string out = buffer;
     out += " \"shots_per_class\": {";
@@ -161,7 +162,7 @@ std::string toJson(const SoakSummary& s, std::size_t listed)
                std::string(toString(f.shotClass)) + "\", \"kinds\": [";
         for (std::size_t q = 0; q < f.failures.size(); ++q)
             out += (q ? ", \"" : "\"") + std::string(toString(f.failures[q].kind)) + "\"";
-        out += "], \"first\": " + jsonString(f.failures.front().message) + ", \"file\": " + jsonString(f.file) + "}";
+        out += "], \"message\": " + jsonString(f.failures.front().message) + ", \"file\": " + jsonString(f.file) + "}";
     }
     out += "]}}";
     return out;

@@ -16,7 +16,8 @@
 namespace cuelab::soak {
 
 struct SoakOptions {
-    long long count = 1000;      // shots, indices 0 .. count - 1
+    long long count = 1000;      // shots, indices first .. first + count - 1
+    long long first = 0;         // the first shot's index (a long soak in pieces gives the same shots)
     std::uint64_t seed = 1;
     int jobs = 1;                // threads (std::thread); < 1: one per core
     std::string outDir;          // where failing setups are written ("" = nowhere)
@@ -42,6 +43,7 @@ struct ShotFigure {
 
 struct SoakSummary {
     long long shots = 0;
+    long long first = 0;                  // the first shot's index
     std::uint64_t seed = 0;
     int jobs = 0;
     long long events = 0;                 // over all shots (first runs)
