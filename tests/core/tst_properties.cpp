@@ -132,7 +132,6 @@ void TestProperties::randomShots()
         if (dump) writeFailureFile(dump, shot, why);
     }
     for (const QString& f : failures) qWarning("%s", qPrintable(f));
-    QVERIFY2(failures.empty(), qPrintable(QStringLiteral("%1 of %2 shots failed").arg(failures.size()).arg(shots)));
 
     // The runs did something, on every table and with every model.
     QVERIFY(tally.events > shots);
@@ -140,7 +139,7 @@ void TestProperties::randomShots()
     QCOMPARE(tally.tables.size(), std::size_t(5));
     QCOMPARE(tally.cushionModels.size(), cushionModels().size());
     QVERIFY(tally.frictional > shots / 4 && tally.frictional < shots * 3 / 4);
-    QVERIFY(tally.unequalRadii > 0);
+    if (shotClass != ShotClass::Break) QVERIFY(tally.unequalRadii > 0);  // a rack is of the table's balls
     const int* p = tally.placed.data();
     switch (shotClass) {
     case ShotClass::Property:
@@ -172,6 +171,8 @@ void TestProperties::randomShots()
           "%d grazing (%d touched), %d frictional, %d unequal radii, %d squirt",
           p[0], p[1], p[2], p[3], p[4], tally.moving, tally.unstruck, tally.grazing, tally.grazesThatTouched, tally.frictional,
           tally.unequalRadii, tally.squirt);
+    // Last, so that the draws above are checked whatever the physics does.
+    QVERIFY2(failures.empty(), qPrintable(QStringLiteral("%1 of %2 shots failed").arg(failures.size()).arg(shots)));
 }
 
 QTEST_APPLESS_MAIN(TestProperties)
