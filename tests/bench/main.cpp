@@ -7,12 +7,18 @@
 //   cuelab-bench --sweep       only the sweep figures, with the 10^6-shot sweep (about a minute)
 //   cuelab-bench --cushions    the cost of one cushion hit per model, and of mathavan2010 per step count
 //                              with its rebound error against 10^6 steps (issue 20)
+//   cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] [--class NAME] [--max-events N]
+//                              [--first K]
+//                              the random-shot soak's summary (issue 19, docs/soak.md)
+//   cuelab-bench --check [--set KEY=VALUE]... FILE...
+//                              the soak's checks on setup files; exit 1 if any fails
 
 #include "AnalysisBench.h"
 #include "CompareBench.h"
 #include "CushionBench.h"
 #include "QuarticBench.h"
 #include "SimulationBench.h"
+#include "SoakBench.h"
 
 #include <cstdio>
 #include <algorithm>
@@ -60,6 +66,8 @@ std::string sweepJson(bool million)
 int main(int argc, char** argv)
 {
     using namespace cuelab::bench;
+    if (argc > 1 && std::strcmp(argv[1], "--soak") == 0) return soakCommand(argc - 2, argv + 2);
+    if (argc > 1 && std::strcmp(argv[1], "--check") == 0) return checkCommand(argc - 2, argv + 2);
     if (argc > 1 && std::strcmp(argv[1], "--sweep") == 0) {
         std::printf("{%s}\n", sweepJson(true).c_str());
         return 0;

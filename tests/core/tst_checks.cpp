@@ -1,10 +1,14 @@
-// The shared checks of SimulationChecks.h must catch what they are for: a ball behind a rail near a
-// pocket (the old checks' blind zone), a ball in a pocket circle that did not drop, a pocketed ball
-// without its pocket event, a jump in a timeline, a momentum change at a ball-ball event; and they
-// must pass the legal places: on the cloth, touching a rail, crossing a side or corner mouth.
+// The shared checks of SimulationChecks.h (tests/soak/Checks.h) and the soak's checkRun must catch
+// what they are for: a ball behind a rail near a pocket (the old checks' blind zone), a ball in a
+// pocket circle that did not drop, a pocketed ball without its pocket event, a jump in a timeline, a
+// momentum change at a ball-ball event, and each kind of checkRun's failures; and they must pass the
+// legal places: on the cloth, touching a rail, crossing a side or corner mouth.
 
+#include "RunChecks.h"
 #include "Simulation.h"
 #include "SimulationChecks.h"
+
+#include <algorithm>
 
 #include <QtTest>
 
@@ -15,7 +19,7 @@ namespace {
 
 // A run on a 9-ft table: the cue ball rolls into the 1 ball, which goes into the top right corner
 // pocket's direction; gives a result with a table, timelines, a ball-ball event and transitions.
-SimulationResult sample()
+Setup sampleSetup()
 {
     Setup s;
     const Table t = makeTable(s.table);
@@ -27,7 +31,14 @@ SimulationResult sample()
     shot.headingDeg = 0.0;
     shot.height = 0.3;
     s.shot = shot;
-    return simulate(s);
+    return s;
+}
+
+SimulationResult sample() { return simulate(sampleSetup()); }
+
+bool has(const std::vector<soak::Failure>& failures, soak::FailureKind kind)
+{
+    return std::any_of(failures.begin(), failures.end(), [kind](const soak::Failure& f) { return f.kind == kind; });
 }
 
 BallState at(double x, double y)
@@ -47,6 +58,7 @@ private slots:
     void pocketed();
     void timelineJumps();
     void momentum();
+    void runChecks();
 };
 
 void TestChecks::places_data()
@@ -153,6 +165,63 @@ void TestChecks::momentum()
             QVERIFY(momentumChange(r, changed) > 1e-5);
         }
     QVERIFY(found);
+}
+
+// checkRun names what broke: each corruption of a good run gives its kind.
+void TestChecks::runChecks()
+{
+    using soak::FailureKind;
+    const Setup setup = sampleSetup();
+    const SimulationResult r = sample();
+    soak::RunMeasures m;
+    QVERIFY2(soak::checkRun(setup, r, {}, &m).empty(), soak::describe(soak::checkRun(setup, r)).c_str());
+    QVERIFY(m.initialEnergy > 0.0 && m.worstOverlap < 1e-9 && m.worstEnergyRise <= 0.0);
+
+    SimulationResult capped = r;
+    capped.status = SimulationStatus::EventLimit;
+    capped.error = "the event limit";
+    QVERIFY(has(soak::checkRun(setup, capped), FailureKind::EventLimit));
+
+    SimulationResult rolling = r;  // the last segment of ball 1 rolls on past end_time
+    MotionSegment& last = rolling.timelines[1].back();
+    last.state.velocity = Vec2(0.1, 0.0);
+    last.state.spin = Vec3(0.0, 0.1 / rolling.balls[1].radius, 0.0);
+    last.state.motion = MotionState::Rolling;
+    QVERIFY(has(soak::checkRun(setup, rolling), FailureKind::LostStop));
+
+    SimulationResult overlapping = r;  // ball 1 starts 1 mm inside the cue ball
+    overlapping.timelines[1].front().state.position = r.balls[0].state.position + Vec2(2 * r.balls[0].radius - 1e-3, 0.0);
+    QVERIFY(has(soak::checkRun(setup, overlapping), FailureKind::Overlap));
+
+    SimulationResult escaped = r;  // ball 1 starts behind the corner, beyond every cushion's reach
+    escaped.timelines[1].front().state.position = Vec2(-0.2, -0.2);
+    QVERIFY(has(soak::checkRun(setup, escaped), FailureKind::Escape));
+
+    // The ball-ball event gives the object ball 0.1 % more speed (momentum), or both balls 20 % more
+    // (energy, beyond what the restitution takes away).
+    SimulationResult pushed = r, hotter = r;
+    for (std::size_t k = 0; k < r.events.size(); ++k)
+        if (r.events[k].kind == EventKind::BallBall) {
+            pushed.events[k].after[1].velocity *= 1.001;
+            hotter.events[k].after[0].velocity *= 1.2;
+            hotter.events[k].after[1].velocity *= 1.2;
+            break;
+        }
+    QVERIFY(has(soak::checkRun(setup, pushed), FailureKind::Momentum));
+    QVERIFY(has(soak::checkRun(setup, hotter), FailureKind::Energy));
+
+    SimulationResult moved = r;  // a segment begins 1 um from where the previous one led
+    moved.timelines[0][1].state.position.x() += 1e-6;
+    QVERIFY(has(soak::checkRun(setup, moved), FailureKind::Timeline));
+
+    Setup other = setup;  // a run of another setup is not this setup's run
+    CueStrike faster = setup.shot.value();
+    faster.speed *= 1.0 + 1e-12;
+    other.shot = faster;
+    QVERIFY(has(soak::checkRun(other, r), FailureKind::Determinism));
+    soak::CheckOptions noSecondRun;
+    noSecondRun.determinism = false;
+    QVERIFY(soak::checkRun(other, r, noSecondRun).empty());
 }
 
 QTEST_APPLESS_MAIN(TestChecks)
