@@ -142,6 +142,17 @@ CueStrike randomStrike(Random& rng, const Setup& s, std::size_t ball, double vmi
     return shot;
 }
 
+void placeBalls(Random& rng, RandomShot& shot, const Table& t, int count, bool unequal)
+{
+    Setup& s = shot.setup;
+    for (int tries = 0; int(s.balls.size()) < count && tries < 1000; ++tries) {
+        const Placement kind = drawPlacement(rng, t);
+        const BallSize size = drawSize(rng, t, unequal);
+        if (addBall(s, std::to_string(s.balls.size()), candidate(kind, t, s, size.radius, rng), size))
+            ++shot.placed[static_cast<std::size_t>(kind)];
+    }
+}
+
 double headingTo(const Vec2& a, const Vec2& b) { return std::atan2(b.y() - a.y(), b.x() - a.x()) * 180.0 / M_PI; }
 
 // tst_properties' generator: 2 to 15 balls placed as drawPlacement says, some balls moving (a quarter
@@ -151,12 +162,7 @@ void propertyShot(Random& rng, RandomShot& shot, bool unequal)
     Setup& s = shot.setup;
     const Table t = makeTable(s.table);
     const int count = 2 + static_cast<int>(rng.uniform() * 14);
-    for (int tries = 0; int(s.balls.size()) < count && tries < 1000; ++tries) {
-        const Placement kind = drawPlacement(rng, t);
-        const BallSize size = drawSize(rng, t, unequal);
-        if (addBall(s, std::to_string(s.balls.size()), candidate(kind, t, s, size.radius, rng), size))
-            ++shot.placed[static_cast<std::size_t>(kind)];
-    }
+    placeBalls(rng, shot, t, count, unequal);
     shot.moving = rng.chance(0.25) && setMoving(rng, s, 0.5, 3.0);
     if (shot.moving && rng.chance(0.3)) return;  // no strike: the balls move on their own
     CueStrike strike = randomStrike(rng, s, 0, 0.3, 8.0);
@@ -187,12 +193,7 @@ void movingShot(Random& rng, RandomShot& shot, bool unequal)
     Setup& s = shot.setup;
     const Table t = makeTable(s.table);
     const int count = 1 + static_cast<int>(rng.uniform() * 16);
-    for (int tries = 0; int(s.balls.size()) < count && tries < 1000; ++tries) {
-        const Placement kind = drawPlacement(rng, t);
-        const BallSize size = drawSize(rng, t, unequal);
-        if (addBall(s, std::to_string(s.balls.size()), candidate(kind, t, s, size.radius, rng), size))
-            ++shot.placed[static_cast<std::size_t>(kind)];
-    }
+    placeBalls(rng, shot, t, count, unequal);
     shot.moving = setMoving(rng, s, 0.7, 5.0);
     if (!shot.moving) {  // at least one ball moves: the first, rolling
         Ball& b = s.balls.front();

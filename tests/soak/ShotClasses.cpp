@@ -182,12 +182,7 @@ void elevatedShot(Random& rng, RandomShot& shot, bool unequal)
     Setup& s = shot.setup;
     const Table t = makeTable(s.table);
     const int count = 1 + static_cast<int>(rng.uniform() * 8);
-    for (int tries = 0; int(s.balls.size()) < count && tries < 1000; ++tries) {
-        const Placement kind = drawPlacement(rng, t);
-        const BallSize size = drawSize(rng, t, unequal);
-        if (addBall(s, std::to_string(s.balls.size()), candidate(kind, t, s, size.radius, rng), size))
-            ++shot.placed[static_cast<std::size_t>(kind)];
-    }
+    placeBalls(rng, shot, t, count, unequal);
     if (s.balls.empty()) return;
     CueStrike strike = randomStrike(rng, s, 0, 0.5, 6.0);
     strike.elevationDeg = rng.uniform(15.0, 89.0);

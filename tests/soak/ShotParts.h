@@ -52,6 +52,10 @@ Placement drawPlacement(Random& rng, const Table& t);
 // Appends a ball with id `id` at p if the validator allows it there; true when it did.
 bool addBall(Setup& s, const std::string& id, const Vec2& p, const BallSize& size);
 
+// Places balls as drawPlacement says until the setup has `count` (at most 1000 tries), counting each
+// placement kind in shot.placed.
+void placeBalls(Random& rng, RandomShot& shot, const Table& t, int count, bool unequal);
+
 // Sets some balls moving: sliding, rolling (perhaps with side spin) or only spinning, up to vmax.
 // Returns whether any ball moves.
 bool setMoving(Random& rng, Setup& s, double share, double vmax);
