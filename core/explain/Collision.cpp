@@ -2,6 +2,7 @@
 // the bodies are, the contact geometry, the collision model's law, the separation floor when the
 // simulator applied it, and energy and momentum before and after.
 
+#include "Aim.h"
 #include "Detection.h"
 #include "Contact.h"
 #include "Motion.h"
@@ -80,24 +81,31 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
     std::vector<Step> model;
     const BallBallExplainer explainer = ballBallExplainer(r.physics.ballBallModel);
     const BallBallResult res = explainer ? explainer(in, model) : resolveBallBall(in.a, in.b, in.params);
+    // The aiming geometry a player reads (core/aim, CONTRACT.md version 2: cut_angle, ball_fraction).
+    const aim::AimGeometry aimed = *aim::contactOfEvent(r, index);
+    const std::string aiming = " The cut angle φ lies between a's path d (its velocity) and n: 0° a full hit, 30° "
+                               "a half-ball hit; the ball fraction f = 1 − sin φ is the share of b that a covers, "
+                               "seen along its path (1 full, 0.5 half, 0 a graze).";
     if (level)
         StepBuilder(e.steps, "Contact geometry",
                     "The normal n points from the centre of a to the centre of b; the contact point lies R_a along "
-                    "it. The balls approach when their relative velocity along n is positive.",
-                    "n = (r_b − r_a)/|r_b − r_a|,   r_c = r_a + R_a n,   v_n = (v_a − v_b)·n")
+                    "it. The balls approach when their relative velocity along n is positive." + aiming,
+                    "n = (r_b − r_a)/|r_b − r_a|,   r_c = r_a + R_a n,   v_n = (v_a − v_b)·n,   cos φ = d·n,   f = 1 − sin φ")
             .in("r_a", "r_a", ev.before[0].position, "m")
             .in("r_b", "r_b", ev.before[1].position, "m")
             .in("R_a", "R_a", in.a.radius, "m")
             .out("n", "n", res.normal, "")
             .out("r_c", "r_c", res.contactPoint, "m")
-            .out("v_n", "v_n", res.approachSpeed, "m/s");
+            .out("v_n", "v_n", res.approachSpeed, "m/s")
+            .out("cut_angle", "φ", aimed.cutAngleDeg, "°")
+            .out("ball_fraction", "f", aimed.ballFraction);
     else
         StepBuilder(e.steps, "Contact geometry (unequal radii)",
                     "The centres sit at the heights R_a and R_b, so the contact normal n₃ from the centre of a to "
                     "the centre of b leaves the cloth plane: its level part is c û, with û the horizontal "
                     "direction from a to b. The contact point lies R_a along n₃ (r_c is its place on the cloth "
                     "plane). The balls approach when their relative velocity along n₃ is positive; it has no "
-                    "vertical part, since both balls stay on the cloth.",
+                    "vertical part, since both balls stay on the cloth." + aiming,
                     "û = (r_b − r_a)/|r_b − r_a|,   c = 2 √(R_a R_b)/(R_a + R_b),   n₃ = (c û, (R_b − R_a)/(R_a + R_b)),"
                     "   r_c = r_a + R_a c û,   v_n = (v_a − v_b)·n₃ = c (v_a − v_b)·û")
             .in("r_a", "r_a", ev.before[0].position, "m")
@@ -108,7 +116,9 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
             .out("c", "c", touchDistance(Ra, Rb) / (Ra + Rb))
             .out("n3", "n₃", res.normal3, "")
             .out("r_c", "r_c", res.contactPoint, "m")
-            .out("v_n", "v_n", res.approachSpeed, "m/s");
+            .out("v_n", "v_n", res.approachSpeed, "m/s")
+            .out("cut_angle", "φ", aimed.cutAngleDeg, "°")
+            .out("ball_fraction", "f", aimed.ballFraction);
     if (!explainer)
         StepBuilder(e.steps, "Collision law (" + e.model + ")", "No step-by-step explanation of this model yet.",
                     "(v′, ω′) = resolve(v, ω)")

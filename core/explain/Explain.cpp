@@ -1,5 +1,7 @@
 #include "Explain.h"
 
+#include "Frames.h"
+
 #include "Motion.h"
 #include "Parts.h"
 
@@ -116,6 +118,9 @@ Explanation explain(const SimulationResult& result, int index, const std::option
         e.bodies.push_back(detail::makeBody(result, ev.balls[static_cast<std::size_t>(k)],
                                             ev.before[static_cast<std::size_t>(k)],
                                             ev.after[static_cast<std::size_t>(k)]));
+    const aim::EnergyParts energy = aim::energyParts(result, index);
+    for (std::size_t k = 0; k < e.bodies.size() && k < energy.balls.size(); ++k)
+        e.bodies[k].energyAfterPrevious = energy.balls[k].previous;
     if (isCollision(ev.kind) || ev.kind == EventKind::CueStrike) {
         e.hasContact = true;
         e.contactPoint = ev.contactPoint;
@@ -216,6 +221,10 @@ void addEnergyStep(Explanation& e, const std::string& where)
         after += body.translationAfter + body.rotationAfter;
     }
     const double change = after - before;
+    double previous = 0.0;
+    for (const Body& body : e.bodies) previous += body.energyAfterPrevious;
+    b.in("E_previous", "E_{prev}", previous, "J");
+    b.out("E_cloth", "E_{prev} − E", previous - before, "J");
     b.out("E_before", "E", before, "J")
         .out("E_after", "E′", after, "J")
         .out("dE", "ΔE", change, "J")
@@ -236,6 +245,21 @@ void addMomentumStep(Explanation& e, const std::string& law)
         after += body.momentumAfter();
     }
     const Vec2 change = after - before;
+    if (e.bodies.size() == 2) {
+        // The same momenta seen from the pair's centre of mass (core/aim/Frames.h): equal and opposite.
+        std::vector<aim::FrameBody> frame;
+        for (const Body& body : e.bodies) frame.push_back({body.mass, body.before.velocity, body.after.velocity});
+        const aim::CentreOfMassFrame com = aim::centreOfMassFrame(frame);
+        b.step().law += " In the frame of the pair's centre of mass, which moves at V = P / (m_a + m_b), the "
+                        "momenta p* = m (v − V) are equal and opposite before and after; an elastic, frictionless "
+                        "collision only turns them.";
+        b.step().formula += ",   V = P / (m_a + m_b),   p*_a = m_a (v_a − V) = −p*_b";
+        b.out("V_cm", "V", com.velocity, "m/s")
+            .out("p_cm_a", "p*_a", com.momentaBefore[0], "N s")
+            .out("p_cm_b", "p*_b", com.momentaBefore[1], "N s")
+            .out("p_cm_after_a", "p*′_a", com.momentaAfter[0], "N s")
+            .out("p_cm_after_b", "p*′_b", com.momentaAfter[1], "N s");
+    }
     b.out("P_before", "P", before, "N s")
         .out("P_after", "P′", after, "N s")
         .out("dP", "ΔP", change, "N s")

@@ -68,6 +68,9 @@ struct Body {
     BallState before, after;
     double translationBefore = 0.0, rotationBefore = 0.0;  // J
     double translationAfter = 0.0, rotationAfter = 0.0;    // J
+    // J, just after the ball's previous event (or as set up): the cloth took this minus the energy
+    // before the event since then (core/aim/Frames.h, energyParts).
+    double energyAfterPrevious = 0.0;
     Vec2 momentumBefore() const { return mass * before.velocity; }  // N s
     Vec2 momentumAfter() const { return mass * after.velocity; }
 };

@@ -113,6 +113,39 @@ private slots:
         QCOMPARE(e.value("balls").toArray().size(), 2);
     }
 
+    // CONTRACT.md version 2: the geometry step's result gains cut_angle (degrees) and ball_fraction.
+    // The half-ball cut is set up as its name says: 30° and 0.5 (core/aim, hand-worked in tst_aim); the
+    // momentum step gives the centre-of-mass momenta, equal and opposite.
+    void aimReadouts()
+    {
+        const QString file = kExamples + "half-ball-cut.json";
+        const Run r = cli({"explain", file, "--event", "#2"});
+        QCOMPARE(r.status, 0);
+        const QJsonObject e = object(r.out);
+        QJsonObject geometry, momentum;
+        for (const QJsonValue& s : e.value("steps").toArray()) {
+            if (s.toObject().value("title").toString() == "Contact geometry") geometry = s.toObject().value("result").toObject();
+            if (s.toObject().value("title").toString() == "Momentum before and after") momentum = s.toObject().value("result").toObject();
+        }
+        QVERIFY(geometry.value("cut_angle").isDouble());
+        QVERIFY(std::abs(geometry.value("cut_angle").toDouble() - 30.0) < 1e-3);
+        QVERIFY(std::abs(geometry.value("ball_fraction").toDouble() - 0.5) < 1e-3);
+        for (const char* axis : {"_x", "_y"}) {
+            const double a = momentum.value(QStringLiteral("p_cm_a") + axis).toDouble();
+            const double b = momentum.value(QStringLiteral("p_cm_b") + axis).toDouble();
+            QVERIFY(momentum.contains(QStringLiteral("p_cm_a") + axis));
+            QVERIFY(std::abs(a + b) < 1e-12);
+        }
+        QVERIFY(std::abs(momentum.value("p_cm_a_x").toDouble()) > 0.01);
+        const Run md = cli({"explain", file, "--event", "#2", "--format", "markdown"});
+        QCOMPARE(md.status, 0);
+        QVERIFY(md.out.contains("ball fraction"));
+        QVERIFY(md.out.contains("centre of mass"));
+        // The transition after it has no aiming geometry.
+        const QJsonObject t = object(cli({"explain", file, "--event", "#3"}).out);
+        QVERIFY(!QJsonDocument(t).toJson().contains("cut_angle"));
+    }
+
     void markdown()
     {
         const Run r = cli({"explain", kExamples + "half-ball-cut.json", "--event", "0", "--format", "markdown"});
