@@ -1,5 +1,6 @@
 #include "Curves.h"
 
+#include "Event.h"
 #include "Motion.h"
 
 #include <algorithm>
@@ -19,6 +20,11 @@ std::string_view label(Quantity q)
     case Quantity::TranslationalEnergy: return "translational energy";
     case Quantity::RotationalEnergy: return "rotational energy";
     case Quantity::KineticEnergy: return "kinetic energy";
+    case Quantity::Momentum: return "momentum";
+    case Quantity::MomentumX: return "momentum px";
+    case Quantity::MomentumY: return "momentum py";
+    case Quantity::EnergyLostToEvents: return "energy lost to events";
+    case Quantity::EnergyLostToCloth: return "energy lost to the cloth";
     }
     return "speed";
 }
@@ -31,13 +37,17 @@ std::string_view unit(Quantity q)
     case Quantity::SpinX:
     case Quantity::SpinY:
     case Quantity::SpinZ: return "rad/s";
+    case Quantity::Momentum:
+    case Quantity::MomentumX:
+    case Quantity::MomentumY: return "N s";
     default: return "J";
     }
 }
 
 bool isEnergy(Quantity q)
 {
-    return q == Quantity::TranslationalEnergy || q == Quantity::RotationalEnergy || q == Quantity::KineticEnergy;
+    return q == Quantity::TranslationalEnergy || q == Quantity::RotationalEnergy || q == Quantity::KineticEnergy ||
+           q == Quantity::EnergyLostToEvents || q == Quantity::EnergyLostToCloth;
 }
 
 double valueOf(Quantity q, const BallState& s, double radius, double mass)
@@ -52,6 +62,11 @@ double valueOf(Quantity q, const BallState& s, double radius, double mass)
     case Quantity::TranslationalEnergy: return 0.5 * mass * s.velocity.squaredNorm();
     case Quantity::RotationalEnergy: return 0.5 * ballInertia(mass, radius) * s.spin.squaredNorm();
     case Quantity::KineticEnergy: return kineticEnergy(s, radius, mass);
+    case Quantity::Momentum: return mass * s.velocity.norm();
+    case Quantity::MomentumX: return mass * s.velocity.x();
+    case Quantity::MomentumY: return mass * s.velocity.y();
+    case Quantity::EnergyLostToEvents:
+    case Quantity::EnergyLostToCloth: return 0.0;  // the table's only (tableCurve)
     }
     return 0.0;
 }
@@ -181,8 +196,41 @@ std::vector<TablePiece> sampleTable(const SimulationResult& result, const Sampli
     return pieces;
 }
 
+double energyPutIn(const SimulationResult& result, double t)
+{
+    double sum = 0.0;
+    for (const Ball& b : result.balls) sum += kineticEnergy(b.state, b.radius, b.mass);
+    for (const Event& e : result.events) {
+        if (e.time > t) break;
+        if (e.kind != EventKind::CueStrike) continue;
+        const Ball& b = result.balls.at(static_cast<std::size_t>(e.balls[0]));
+        sum += kineticEnergy(e.after[0], b.radius, b.mass) - kineticEnergy(e.before[0], b.radius, b.mass);
+    }
+    return sum;
+}
+
+double energyLostToEvents(const SimulationResult& result, double t)
+{
+    double sum = 0.0;
+    for (const Event& e : result.events) {
+        if (e.time > t) break;
+        if (e.kind == EventKind::CueStrike) continue;
+        for (std::size_t k = 0; k < 2 && e.balls[k] >= 0; ++k) {
+            const Ball& b = result.balls.at(static_cast<std::size_t>(e.balls[k]));
+            sum += kineticEnergy(e.before[k], b.radius, b.mass) - kineticEnergy(e.after[k], b.radius, b.mass);
+        }
+    }
+    return sum;
+}
+
 double totalOf(Quantity q, const SimulationResult& result, const std::vector<BallState>& states)
 {
+    if (q == Quantity::Momentum) {
+        Vec2 p = Vec2::Zero();
+        for (std::size_t b = 0; b < states.size(); ++b)
+            if (states[b].motion != MotionState::Pocketed) p += result.balls[b].mass * states[b].velocity;
+        return p.norm();
+    }
     double sum = 0.0;
     for (std::size_t b = 0; b < states.size(); ++b)
         sum += valueOf(q, states[b], result.balls[b].radius, result.balls[b].mass);
@@ -233,7 +281,18 @@ std::vector<Polyline> tableCurve(const SimulationResult& result, Quantity q, con
     for (const TablePiece& piece : sampleTable(result, options)) {
         Polyline line;
         line.times = piece.times;
-        for (const std::vector<BallState>& states : piece.states) line.values.push_back(totalOf(q, result, states));
+        if (q == Quantity::EnergyLostToEvents || q == Quantity::EnergyLostToCloth) {
+            // Inside a piece no event happens: the events' share and the energy put in are those
+            // of the events at or before its start.
+            const double start = piece.times.empty() ? 0.0 : piece.times.front();
+            const double events = energyLostToEvents(result, start), in = energyPutIn(result, start);
+            for (const std::vector<BallState>& states : piece.states)
+                line.values.push_back(q == Quantity::EnergyLostToEvents
+                                          ? events
+                                          : in - totalOf(Quantity::KineticEnergy, result, states) - events);
+        } else {
+            for (const std::vector<BallState>& states : piece.states) line.values.push_back(totalOf(q, result, states));
+        }
         append(curve, std::move(line));
     }
     return curve;

@@ -28,10 +28,21 @@ enum class Quantity : std::uint8_t {
     TranslationalEnergy,  // m |v|^2 / 2, J
     RotationalEnergy,     // I |w|^2 / 2, J
     KineticEnergy,        // the sum, J
+    Momentum,             // |p| = m |v|, N s; the table's total is |Σ p|, not Σ |p|
+    MomentumX,            // p_x, N s
+    MomentumY,            // p_y, N s
+    // The table only (tableCurve; 0 for a single ball): the kinetic energy the events took so far (a
+    // collision's restitution and friction, a ball falling into a pocket), and what the cloth took so
+    // far (the energy put in by the setup and the cue strike, minus what is left, minus the events'
+    // share). Translation + rotation + the two losses = the energy put in, at every time.
+    EnergyLostToEvents,   // J
+    EnergyLostToCloth,    // J
 };
 inline constexpr Quantity kQuantities[] = {Quantity::Speed, Quantity::SlipSpeed, Quantity::SpinX,
                                            Quantity::SpinY, Quantity::SpinZ, Quantity::TranslationalEnergy,
-                                           Quantity::RotationalEnergy, Quantity::KineticEnergy};
+                                           Quantity::RotationalEnergy, Quantity::KineticEnergy,
+                                           Quantity::Momentum, Quantity::MomentumX, Quantity::MomentumY,
+                                           Quantity::EnergyLostToEvents, Quantity::EnergyLostToCloth};
 
 std::string_view label(Quantity q);  // "speed", "slip speed", "spin wx", ... "kinetic energy"
 std::string_view unit(Quantity q);   // "m/s", "rad/s", "J"
@@ -71,7 +82,15 @@ struct TablePiece {
 };
 std::vector<TablePiece> sampleTable(const SimulationResult& result, const SamplingOptions& options = {});
 
-// The sum over the balls of a quantity at one sample of the table (energies mainly).
+// The energy put into the table up to time t (J): the balls' energy as set up plus what each cue
+// strike at or before t gave its ball.
+double energyPutIn(const SimulationResult& result, double t);
+// The kinetic energy the events at or before t took (J): Σ over them of the energy of their balls just
+// before minus just after (the cue strike excluded: it gives).
+double energyLostToEvents(const SimulationResult& result, double t);
+
+// The sum over the balls of a quantity at one sample of the table (energies mainly); for Momentum the
+// length of the summed momentum.
 double totalOf(Quantity q, const SimulationResult& result, const std::vector<BallState>& states);
 
 // A curve ready to draw: polylines of (time, value). Consecutive pieces are joined where the value
