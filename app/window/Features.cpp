@@ -11,6 +11,7 @@ void installFeatures(MainWindow& window)
     installOutcome(window);
     installExport(window);
     installExplain(window);
+    installAim(window);
     installAnalysis(window);
     installCompare(window);
     installRecording(window);

@@ -18,6 +18,7 @@ void installPlots(MainWindow& window);    // issue 10: the Plots dock
 void installOutcome(MainWindow& window);  // issue 10: the Outcome dock and status line
 void installExport(MainWindow& window);   // issue 10: File > Export
 void installExplain(MainWindow& window);  // features/ExplainFeature.cpp: Explain and Lesson docks, export
+void installAim(MainWindow& window);      // features/AimFeature.cpp: View > Overlays > Aim Line and Ghost Ball (issue 22)
 void installAnalysis(MainWindow& window);  // features/AnalysisFeature.cpp: the Analysis dock and menu
 void installCompare(MainWindow& window);  // features/CompareFeature.cpp
 void installRecording(MainWindow& window);  // features/RecordingFeature.cpp: recorded shots (issue 24)

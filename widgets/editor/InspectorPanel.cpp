@@ -4,6 +4,8 @@
 #include "EventTableModel.h"
 #include "Quantities.h"
 
+#include "Aim.h"
+#include "Frames.h"
 #include "Motion.h"
 
 #include <QHeaderView>
@@ -71,6 +73,32 @@ void InspectorPanel::addState(QTreeWidgetItem* parent, const BallState& s, doubl
         tr("Velocity of the contact point with the cloth, v + R (z × ω); zero when rolling"));
 }
 
+static QString cutSideText(aim::CutSide side)
+{
+    switch (side) {
+    case aim::CutSide::Left: return InspectorPanel::tr("left");
+    case aim::CutSide::Right: return InspectorPanel::tr("right");
+    case aim::CutSide::Straight: break;
+    }
+    return InspectorPanel::tr("straight");
+}
+
+void InspectorPanel::addAim(QTreeWidgetItem* parent, const aim::AimGeometry& g)
+{
+    auto* node = add(parent, tr("Aim"), QString());
+    add(node, tr("Cut angle"), tr("%1 %2").arg(formatQuantity(g.cutAngleDeg, QStringLiteral("°"), 4), cutSideText(g.side)),
+        tr("Angle in degrees between the first ball's path and the line of centres at contact: 0° full hit, "
+           "30° half ball; left or right: where the other ball goes, seen along the path"));
+    add(node, tr("Ball fraction"), QString::number(g.ballFraction, 'f', 3),
+        tr("1 − sin(cut angle): the share of the other ball the first covers along its path (1 full, 0.5 half ball, 0 a graze)"));
+    add(node, tr("Ghost ball"), formatVector(g.ghostBall, QStringLiteral("m"), 4),
+        tr("Where the first ball's centre is at contact (m): aim at it"));
+    add(node, tr("Contact on first ball"), formatQuantity(g.contactOnStruckDeg, QStringLiteral("°"), 4),
+        tr("Where on the first ball the contact lies: degrees from its path, counter-clockwise positive"));
+    add(node, tr("Contact on second ball"), formatQuantity(g.contactOnObjectDeg, QStringLiteral("°"), 4),
+        tr("Where on the second ball the contact lies: degrees from the first ball's path, counter-clockwise positive"));
+}
+
 namespace {
 // Rebuilding the tree on every frame of playback must neither flicker nor jump back to the top.
 class KeepScrollPosition {
@@ -132,6 +160,8 @@ void InspectorPanel::showEventDetails(const SimulationResult& result, int index)
         add(top, tr("|Impulse|"), formatQuantity(e.impulse.norm(), QStringLiteral("N·s"), 5));
     }
 
+    if (const std::optional<aim::AimGeometry> g = aim::contactOfEvent(result, index)) addAim(top, *g);
+
     const int agents = e.kind == EventKind::BallBall ? 2 : 1;
     Vec2 pBefore = Vec2::Zero(), pAfter = Vec2::Zero();
     double keBefore = 0.0, keAfter = 0.0;
@@ -155,6 +185,22 @@ void InspectorPanel::showEventDetails(const SimulationResult& result, int index)
     add(totals, tr("Kinetic energy before"), formatQuantity(keBefore, QStringLiteral("J"), 6), tr("Translation plus rotation, I = 2/5 m R²"));
     add(totals, tr("Kinetic energy after"), formatQuantity(keAfter, QStringLiteral("J"), 6));
     add(totals, tr("Energy change"), formatQuantity(keAfter - keBefore, QStringLiteral("J"), 6));
+    if (e.kind != EventKind::CueStrike) {
+        const aim::EnergyParts parts = aim::energyParts(result, index);
+        add(totals, tr("Lost to the cloth"), formatQuantity(parts.lostToCloth, QStringLiteral("J"), 6),
+            tr("Kinetic energy (J) the cloth took from these balls since each one's previous event"));
+    }
+    if (agents == 2) {
+        const aim::CentreOfMassFrame com = aim::centreOfMassFrame(aim::frameBodies(result, index));
+        auto* frame = add(totals, tr("Centre-of-mass frame"), formatVector(com.velocity, QStringLiteral("m/s"), 4),
+                          tr("The pair's centre of mass moves at V = (m_a v_a + m_b v_b) / (m_a + m_b) (m/s); seen "
+                             "from it the momenta p* = m (v − V) are equal and opposite"));
+        for (int k = 0; k < 2; ++k) {
+            const QString id = QString::fromStdString(result.balls[static_cast<std::size_t>(e.balls[static_cast<std::size_t>(k)])].id);
+            add(frame, tr("p* %1 before").arg(id), formatVector(com.momentaBefore[static_cast<std::size_t>(k)], QStringLiteral("kg·m/s"), 5));
+            add(frame, tr("p* %1 after").arg(id), formatVector(com.momentaAfter[static_cast<std::size_t>(k)], QStringLiteral("kg·m/s"), 5));
+        }
+    }
     tree_->expandAll();
 }
 

@@ -3,6 +3,7 @@
 // event (time of impact, contact normal, relative speed, impulse, the agents' velocities and spins
 // before and after, their momentum and kinetic energy before and after).
 
+#include "Aim.h"
 #include "Simulation.h"
 
 #include <QWidget>
@@ -29,6 +30,7 @@ private:
     QTreeWidgetItem* add(QTreeWidgetItem* parent, const QString& quantity, const QString& value,
                          const QString& toolTip = {});
     void addState(QTreeWidgetItem* parent, const BallState& state, double radius);
+    void addAim(QTreeWidgetItem* parent, const aim::AimGeometry& geometry);  // cut angle, ball fraction, ghost ball
 
     QTreeWidget* tree_;
 };

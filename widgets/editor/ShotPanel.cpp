@@ -1,5 +1,7 @@
 #include "ShotPanel.h"
 
+#include "AimControl.h"
+#include "LaunchReadout.h"
 #include "SquirtControl.h"
 
 #include "Document.h"
@@ -55,10 +57,12 @@ ShotPanel::ShotPanel(Document* document, QWidget* parent) : QWidget(parent), doc
     speedRow->addWidget(speedSlider_, 1);
     speedRow->addWidget(speed_);
     form->addRow(tr("Speed"), speedRow);
+    form->addRow(QString(), new LaunchReadout(document_, this));  // the ball's speed and spin after the strike
     auto* headingRow = new QHBoxLayout;
     headingRow->addWidget(headingSlider_, 1);
     headingRow->addWidget(heading_);
     form->addRow(tr("Heading"), headingRow);
+    form->addRow(tr("Aim at"), new AimControl(document_, this));  // the heading as a cut of an object ball
     form->addRow(tr("Elevation"), elevation_);
     tipRow_ = new QBoxLayout(QBoxLayout::LeftToRight);
     auto* tipNumbers = new QFormLayout;

@@ -1,5 +1,7 @@
 #include "ConservationWidget.h"
 
+#include "Frames.h"
+
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
@@ -40,22 +42,51 @@ ConservationWidget::ConservationWidget(QWidget* parent) : QWidget(parent)
 {
     setMinimumSize(240, 200);
     setToolTip(tr("Left: each ball's momentum m·v (N s) drawn tip to tail, before and after, with their total "
-                  "(dashed). Right: kinetic energy (J) before and after, translation (solid) and rotation "
-                  "(light)."));
+                  "(dashed); in the centre-of-mass frame the chain closes on itself. Right: kinetic energy (J) "
+                  "before and after, translation (solid) and rotation (light), and what was lost (hatched): to "
+                  "the collision, and to the cloth since each ball's previous event."));
 }
 
-ConservationWidget::Figure ConservationWidget::figureOf(const explain::Explanation* e)
+ConservationWidget::Figure ConservationWidget::figureOf(const explain::Explanation* e, bool centreOfMass)
 {
     Figure f;
     f.bodies = e ? e->bodies : std::vector<explain::Body>{};
     f.cushion = e && (e->kind == EventKind::BallCushion || e->kind == EventKind::BallJaw);
     f.cushionImpulse = e ? Vec2(e->impulse.head<2>()) : Vec2::Zero();
+    // A frame of its own only for a pair: a single ball's centre of mass is the ball.
+    f.centreOfMass = centreOfMass && f.bodies.size() == 2;
+    if (f.centreOfMass) {
+        std::vector<aim::FrameBody> frame;
+        for (const explain::Body& b : f.bodies) frame.push_back({b.mass, b.before.velocity, b.after.velocity});
+        f.frameVelocity = aim::centreOfMassFrame(frame).velocity;
+    }
+    if (e && e->kind != EventKind::CueStrike)
+        for (const explain::Body& b : f.bodies) {
+            const double before = b.translationBefore + b.rotationBefore, after = b.translationAfter + b.rotationAfter;
+            f.lostToEvent += before - after;
+            f.lostToCloth += b.energyAfterPrevious - before;
+        }
     return f;
+}
+
+Vec2 ConservationWidget::Figure::momentum(std::size_t body, int phase) const
+{
+    const explain::Body& b = bodies[body];
+    return (phase == 0 ? b.momentumBefore() : b.momentumAfter()) - b.mass * frameVelocity;
 }
 
 void ConservationWidget::setExplanation(const explain::Explanation* e)
 {
-    figure_ = figureOf(e);
+    explanation_ = e ? std::optional<explain::Explanation>(*e) : std::nullopt;
+    figure_ = figureOf(e, centreOfMass_);
+    update();
+}
+
+void ConservationWidget::setCentreOfMassFrame(bool on)
+{
+    if (on == centreOfMass_) return;
+    centreOfMass_ = on;
+    figure_ = figureOf(explanation_ ? &*explanation_ : nullptr, on);
     update();
 }
 
@@ -114,7 +145,9 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area, const Fig
     const QFontMetricsF metrics(p.font());
     const double line = metrics.height();
     p.setPen(palette.color(QPalette::Text));
-    p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft, tr("Momentum (N s)"));
+    p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft,
+               metrics.elidedText(f.centreOfMass ? tr("Momentum, centre-of-mass frame (N s)") : tr("Momentum (N s)"),
+                                  Qt::ElideRight, area.width()));
     // Below the panels: "before"/"after", |P|, then the key.
     const QRectF body = area.adjusted(0, line + 4, 0, -(3 * line + 6));
     // Two panels, before and after, one scale for both: the longest chain of arrows fits.
@@ -122,8 +155,8 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area, const Fig
     Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
     for (int phase = 0; phase < 2; ++phase) {
         Vec2 tip = Vec2::Zero();
-        for (const explain::Body& b : f.bodies) {
-            tip += phase == 0 ? b.momentumBefore() : b.momentumAfter();
+        for (std::size_t k = 0; k < f.bodies.size(); ++k) {
+            tip += f.momentum(k, phase);
             lo = lo.cwiseMin(tip);
             hi = hi.cwiseMax(tip);
         }
@@ -142,7 +175,7 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area, const Fig
         };
         Vec2 tip = Vec2::Zero();
         for (std::size_t k = 0; k < f.bodies.size(); ++k) {
-            const Vec2 pk = phase == 0 ? f.bodies[k].momentumBefore() : f.bodies[k].momentumAfter();
+            const Vec2 pk = f.momentum(k, phase);
             arrow(p, toScreen(tip), toScreen(tip + pk), kBodyColours[k % 2]);
             tip += pk;
         }
@@ -184,17 +217,21 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area, const Figu
     const double line = metrics.height();
     p.setPen(palette.color(QPalette::Text));
     p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft, tr("Energy (J)"));
-    // Rows: title, the totals, the bars, "before"/"after", the key (two lines), ΔE.
+    // Rows: title, the totals, the bars, "before"/"after", the key (three lines), ΔE.
     const QRectF values(area.left(), area.top() + line + 2, area.width(), line);
-    const QRectF body(area.left(), values.bottom() + 2, area.width(), std::max(10.0, area.height() - 6 * line - 10));
+    const QRectF body(area.left(), values.bottom() + 2, area.width(), std::max(10.0, area.height() - 7 * line - 10));
     double totals[2] = {0.0, 0.0};
     for (const explain::Body& b : f.bodies) {
         totals[0] += b.translationBefore + b.rotationBefore;
         totals[1] += b.translationAfter + b.rotationAfter;
     }
-    const double top = std::max({totals[0], totals[1], 1e-12});
+    // Both bars stand on the energy the balls had after their previous events: before, the cloth's
+    // share since then sits on top; after, the collision's share too. The parts add up to the total.
+    const double cloth = std::max(0.0, f.lostToCloth), event = std::max(0.0, f.lostToEvent);
+    const double top = std::max({totals[0] + cloth, totals[1] + cloth + event, 1e-12});
     const double barW = std::min(60.0, body.width() / 2.0 - 8.0);
     const double left = body.center().x() - barW - 4.0;
+    const QColor clothColour(150, 150, 150), eventColour(215, 60, 60);
     for (int phase = 0; phase < 2; ++phase) {
         const double x = left + phase * (barW + 8.0);
         double y = body.bottom();
@@ -210,12 +247,21 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area, const Figu
                 y -= h;
             }
         }
+        const double losses[2] = {phase == 1 ? event : 0.0, cloth};
+        const QColor lossColours[2] = {eventColour, clothColour};
+        for (int part = 0; part < 2; ++part) {
+            const double h = body.height() * losses[part] / top;
+            p.fillRect(QRectF(x, y - h, barW, h), QBrush(lossColours[part], Qt::BDiagPattern));
+            p.setPen(QPen(lossColours[part], 1.0));
+            if (h >= 1.0) p.drawRect(QRectF(x, y - h, barW, h));
+            y -= h;
+        }
         p.setPen(palette.color(QPalette::Text));
         p.drawText(QRectF(x - 6, body.bottom() + 1, barW + 12, line), Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
         // The total in its own row above the bars: never over the title or a bar.
         p.drawText(QRectF(x - 10, values.top(), barW + 20, line), Qt::AlignCenter, QString::number(totals[phase], 'g', 3));
     }
-    // The key: each ball's colour; the light part of a bar is rotation.
+    // The legend: each ball's colour; the light part of a bar is rotation; the hatched parts are lost.
     double x = area.left();
     const double keyY = body.bottom() + line + 3;
     for (std::size_t k = 0; k < f.bodies.size(); ++k) {
@@ -225,9 +271,20 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area, const Figu
         p.drawText(QPointF(x + 13, keyY + metrics.ascent()), name);
         x += 13 + metrics.horizontalAdvance(name) + 10;
     }
-    p.fillRect(QRectF(area.left(), keyY + line + 2, 10, line - 4), kBodyColours[0].lighter(150));
-    p.drawText(QRectF(area.left() + 13, keyY + line, area.width() - 13, line), Qt::AlignLeft,
-               metrics.elidedText(tr("light: rotation"), Qt::ElideRight, area.width() - 13));
+    p.fillRect(QRectF(x, keyY + 2, 10, line - 4), kBodyColours[0].lighter(150));
+    p.drawText(QRectF(x + 13, keyY, std::max(0.0, area.right() - x - 13), line), Qt::AlignLeft,
+               metrics.elidedText(tr("light: rotation"), Qt::ElideRight, std::max(0.0, area.right() - x - 13)));
+    const QString lossKeys[2] = {tr("lost to the collision"), tr("lost to the cloth since the previous event")};
+    const QColor lossColours[2] = {eventColour, clothColour};
+    for (int part = 0; part < 2; ++part) {
+        const double y = keyY + (part + 1) * line;
+        p.fillRect(QRectF(area.left(), y + 2, 10, line - 4), QBrush(lossColours[part], Qt::BDiagPattern));
+        p.setPen(QPen(lossColours[part], 1.0));
+        p.drawRect(QRectF(area.left(), y + 2, 10, line - 4));
+        p.setPen(palette.color(QPalette::Text));
+        p.drawText(QRectF(area.left() + 13, y, area.width() - 13, line), Qt::AlignLeft,
+                   metrics.elidedText(lossKeys[part], Qt::ElideRight, area.width() - 13));
+    }
     p.drawText(QRectF(area.left(), area.bottom() - line, area.width(), line), Qt::AlignCenter,
                energyChange(totals[0], totals[1]));
 }

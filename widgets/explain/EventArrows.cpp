@@ -26,8 +26,24 @@ double arrowPlaneHeight(const explain::Explanation& e)
     return top + kArrowPlaneLift;
 }
 
+Vec2 framedMomentum(const explain::Explanation& e, std::size_t body, int phase, ArrowFrame frame)
+{
+    const explain::Body& b = e.bodies.at(body);
+    const Vec2 p = phase == 0 ? b.momentumBefore() : b.momentumAfter();
+    if (frame == ArrowFrame::Table || e.bodies.size() != 2) return p;
+    std::vector<aim::FrameBody> bodies;
+    for (const explain::Body& x : e.bodies) bodies.push_back({x.mass, x.before.velocity, x.after.velocity});
+    return p - b.mass * aim::centreOfMassFrame(bodies).velocity;
+}
+
 ViewLayer eventArrowsLayer(const explain::Explanation& e, const EventArrowColours& colours)
 {
+    return eventArrowsLayer(e, ArrowFrame::Table, colours);
+}
+
+ViewLayer eventArrowsLayer(const explain::Explanation& e, ArrowFrame frame, const EventArrowColours& colours)
+{
+    const bool starred = frame == ArrowFrame::CentreOfMass && e.bodies.size() == 2;
     ViewLayer layer;
     if (!isCollision(e.kind) || !e.hasContact || e.bodies.empty()) return layer;
     const double z = arrowPlaneHeight(e);
@@ -38,7 +54,8 @@ ViewLayer eventArrowsLayer(const explain::Explanation& e, const EventArrowColour
     marker.colour = colours.contact;
     marker.size = 12.0f;
     marker.label = tr("contact");
-    layer.legend = tr("Arrows: 1 N·s = %1 m").arg(kArrowMetresPerNewtonSecond);
+    layer.legend = starred ? tr("Arrows: 1 N·s = %1 m; momenta p* in the centre-of-mass frame").arg(kArrowMetresPerNewtonSecond)
+                           : tr("Arrows: 1 N·s = %1 m").arg(kArrowMetresPerNewtonSecond);
 
     for (std::size_t k = 0; k < e.bodies.size(); ++k) {
         const explain::Body& b = e.bodies[k];
@@ -47,15 +64,17 @@ ViewLayer eventArrowsLayer(const explain::Explanation& e, const EventArrowColour
         const QColor pBefore = k == 0 ? colours.momentumBefore : colours.secondMomentumBefore;
         const QColor pAfter = k == 0 ? colours.momentumAfter : colours.secondMomentumAfter;
         const Vec3 centre(b.before.position.x(), b.before.position.y(), z);
-        const Vec2 before = b.momentumBefore(), after = b.momentumAfter();
+        const Vec2 before = framedMomentum(e, k, 0, frame), after = framedMomentum(e, k, 1, frame);
         if (kArrowMetresPerNewtonSecond * before.norm() >= kShortestArrow)
             layer.arrows.push_back({centre, centre + kArrowMetresPerNewtonSecond * Vec3(before.x(), before.y(), 0.0),
                                     pBefore, 3.5f,
-                                    tr("p %1 = %2 N·s").arg(id, newtonSeconds(before.norm()))});
+                                    starred ? tr("p* %1 = %2 N·s").arg(id, newtonSeconds(before.norm()))
+                                            : tr("p %1 = %2 N·s").arg(id, newtonSeconds(before.norm()))});
         if (kArrowMetresPerNewtonSecond * after.norm() >= kShortestArrow)
             layer.arrows.push_back({centre, centre + kArrowMetresPerNewtonSecond * Vec3(after.x(), after.y(), 0.0),
                                     pAfter, 3.5f,
-                                    tr("p′ %1 = %2 N·s").arg(id, newtonSeconds(after.norm()))});
+                                    starred ? tr("p*′ %1 = %2 N·s").arg(id, newtonSeconds(after.norm()))
+                                            : tr("p′ %1 = %2 N·s").arg(id, newtonSeconds(after.norm()))});
     }
     // The impulse by its horizontal part (see the header), its vertical part, if any, in the label;
     // then the normal, drawn last, on top: it lies along the line of centres, under the second

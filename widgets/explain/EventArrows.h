@@ -18,6 +18,7 @@
 // the impulse arrow is the change of the first ball's momentum on screen: p′ = p + J.
 
 #include "Explanation.h"
+#include "Frames.h"
 #include "view/ViewLayer.h"
 
 #include <QColor>
@@ -56,5 +57,14 @@ double arrowPlaneHeight(const explain::Explanation& e);
 // impulse on the first ball; last, on top, the normal. markers[0] is the contact point ("contact");
 // the scale is the layer's legend, drawn apart from every label.
 ViewLayer eventArrowsLayer(const explain::Explanation& e, const EventArrowColours& colours = {});
+
+// The frame the momenta are drawn in (View > Centre-of-Mass Frame, issue 22). In the pair's
+// centre-of-mass frame each ball's arrows are p* = m (v − V) and p*′ = m (v′ − V), V the pair's
+// velocity before the event (core/aim/Frames.h): equal and opposite. The impulse and the normal are
+// the same in every frame. A single ball (a cushion) has no frame of its own: drawn as in the table.
+enum class ArrowFrame { Table, CentreOfMass };
+ViewLayer eventArrowsLayer(const explain::Explanation& e, ArrowFrame frame, const EventArrowColours& colours = {});
+// Body k's momentum before (phase 0) or after (phase 1) in the frame, N s.
+Vec2 framedMomentum(const explain::Explanation& e, std::size_t body, int phase, ArrowFrame frame);
 
 }  // namespace cuelab

@@ -30,6 +30,7 @@ public:
     int shownEvent() const { return event_; }  // -1 when nothing is explained
     const std::optional<explain::Explanation>& explanation() const { return explanation_; }
     QString html() const;                        // what the text view shows
+    ConservationWidget* conservation() const { return conservation_; }  // the momenta and energy figure
 
 public slots:
     void showEvent(int index);                   // -1 clears

@@ -47,8 +47,14 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent)
     plotBox_->addItem(tr("Slip speed (m/s)"), QVariant::fromValue(Plot::SlipSpeed));
     plotBox_->addItem(tr("Spin wx, wy, wz (rad/s)"), QVariant::fromValue(Plot::Spin));
     plotBox_->addItem(tr("Kinetic energy (J)"), QVariant::fromValue(Plot::Energy));
+    plotBox_->addItem(tr("Momentum |p|, px, py (N s)"), QVariant::fromValue(Plot::Momentum));
+    plotBox_->addItem(tr("Energy parts and losses, whole table (J)"), QVariant::fromValue(Plot::EnergyParts));
     plotBox_->setToolTip(tr("What to plot against time (s). Slip speed: the speed of the ball's contact point "
-                            "on the cloth (m/s), zero while it rolls. Energy: translational, rotational and total (J)."));
+                            "on the cloth (m/s), zero while it rolls. Energy: translational, rotational and total (J). "
+                            "Momentum: m v in N s, its length and components; for all balls each ball's |p| and the "
+                            "length of the total. Energy parts: the whole table's translation and rotation, what the "
+                            "events (collisions, pockets) and the cloth have taken so far, and the energy put in (J), "
+                            "which the four add up to."));
     ballsBox_ = new QComboBox(this);
     ballsBox_->setObjectName(QStringLiteral("plotBalls"));
     ballsBox_->addItem(tr("Selected ball"));
@@ -201,10 +207,28 @@ void PlotsPanel::rebuild()
                 specs.push_back({b, plots::Quantity::KineticEnergy, id + tr(" total"), QColor(20, 20, 20), Qt::SolidLine});
             }
             break;
+        case Plot::Momentum:
+            if (allBalls_) {
+                specs.push_back({b, plots::Quantity::Momentum, id + tr(" |p|"), c, Qt::SolidLine});
+            } else {
+                specs.push_back({b, plots::Quantity::Momentum, id + tr(" |p|"), QColor(20, 20, 20), Qt::SolidLine});
+                specs.push_back({b, plots::Quantity::MomentumX, id + tr(" px"), parts[0], Qt::SolidLine});
+                specs.push_back({b, plots::Quantity::MomentumY, id + tr(" py"), parts[1], Qt::SolidLine});
+            }
+            break;
+        case Plot::EnergyParts: break;  // the whole table's, below
         }
     }
     if (plot_ == Plot::Energy && allBalls_)
         specs.push_back({-1, plots::Quantity::KineticEnergy, tr("table total"), QColor(20, 20, 20), Qt::DashLine});
+    if (plot_ == Plot::Momentum && allBalls_)
+        specs.push_back({-1, plots::Quantity::Momentum, tr("|total p|"), QColor(20, 20, 20), Qt::DashLine});
+    if (plot_ == Plot::EnergyParts) {
+        specs.push_back({-1, plots::Quantity::TranslationalEnergy, tr("translation"), parts[0], Qt::SolidLine});
+        specs.push_back({-1, plots::Quantity::RotationalEnergy, tr("rotation"), parts[1], Qt::SolidLine});
+        specs.push_back({-1, plots::Quantity::EnergyLostToEvents, tr("lost to collisions and pockets"), QColor(215, 60, 60), Qt::DashLine});
+        specs.push_back({-1, plots::Quantity::EnergyLostToCloth, tr("lost to the cloth"), QColor(120, 120, 120), Qt::DashLine});
+    }
 
     double vmin = 0.0;
     double vmax = 0.0;
@@ -269,7 +293,9 @@ void PlotsPanel::rebuild()
     view_->setHighlightedEvent(selectedEvent_);
     view_->setFullRange(0.0, std::max(r.endTime, 1e-3), vmin, vmax);
     view_->setCursorTime(time_);
-    chart->setTitle(allBalls_ ? tr("All balls") : tr("Ball %1").arg(QString::fromStdString(r.balls[shown].id)));
+    chart->setTitle(plot_ == Plot::EnergyParts ? tr("Whole table")
+                    : allBalls_              ? tr("All balls")
+                                             : tr("Ball %1").arg(QString::fromStdString(r.balls[shown].id)));
     hint_->setText(tr("%n event(s)", nullptr, static_cast<int>(view_->markers().size())));
 }
 

@@ -25,7 +25,7 @@ class PlotsChartView;
 class PlotsPanel : public QWidget {
     Q_OBJECT
 public:
-    enum class Plot { Speed, SlipSpeed, Spin, Energy };
+    enum class Plot { Speed, SlipSpeed, Spin, Energy, Momentum, EnergyParts };
     Q_ENUM(Plot)
 
     explicit PlotsPanel(QWidget* parent = nullptr);

@@ -7,7 +7,9 @@
 
 #include "editor/Document.h"
 #include "editor/Selection.h"
+#include "explain/ConservationWidget.h"
 #include "explain/EventArrows.h"
+#include "explain/FrameArrows.h"
 #include "explain/ExplainExport.h"
 #include "explain/ExplainPanel.h"
 #include "lesson/LessonPanel.h"
@@ -17,6 +19,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QKeySequence>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
@@ -61,8 +64,25 @@ const QString kArrowsKey = QStringLiteral("overlays/collisionArrows");
 // Stepping the transport from event to event selects the event it lands on, so they follow it too.
 // Cleared when the selected event is not a collision and when no event is selected (the dock keeps
 // showing its last event then; the arrows, drawn where the collision happened, do not stay).
+const QString kCentreOfMassKey = QStringLiteral("view/centreOfMassFrame");
+
 void installEventArrows(MainWindow& w, ExplainPanel* panel)
 {
+    // View > Centre-of-Mass Frame (issue 22): the selected collision's momenta, its paths near the
+    // event and the Explain dock's momenta diagram as seen from the pair's centre of mass.
+    auto* frameToggle = new QAction(QObject::tr("&Centre-of-Mass Frame"), &w);
+    frameToggle->setObjectName(QStringLiteral("centreOfMassFrameAction"));
+    frameToggle->setCheckable(true);
+    frameToggle->setChecked(QSettings().value(kCentreOfMassKey, false).toBool());
+    frameToggle->setShortcut(QKeySequence(QStringLiteral("Ctrl+Alt+C")));
+    const QString frameTip = QObject::tr("Draw the selected collision's momenta (N·s), its paths near the event and the "
+                                         "momenta diagram as seen from the pair's centre of mass, where the momenta are "
+                                         "equal and opposite");
+    frameToggle->setToolTip(frameTip);
+    frameToggle->setStatusTip(frameTip);
+    w.menu(WindowMenu::View)->addAction(frameToggle);
+    panel->conservation()->setCentreOfMassFrame(frameToggle->isChecked());
+
     auto* toggle = new QAction(QObject::tr("Collision &Arrows"), &w);
     toggle->setObjectName(QStringLiteral("collisionArrowsAction"));
     toggle->setCheckable(true);
@@ -79,23 +99,43 @@ void installEventArrows(MainWindow& w, ExplainPanel* panel)
         bool visible = true;
     };
     auto shown = std::make_shared<Shown>();
-    const auto update = [&w, panel, toggle, shown](bool rebuild) {
+    const auto update = [&w, panel, toggle, frameToggle, shown](bool rebuild) {
         const std::optional<explain::Explanation>& e = panel->explanation();
         const bool selected = e && w.selection()->event() == e->event;
         const int event = selected && isCollision(e->kind) ? e->event : -1;
         if (!rebuild && event == shown->event && toggle->isChecked() == shown->visible) return;
         shown->event = event;
         shown->visible = toggle->isChecked();
-        if (event < 0) return w.tableView()->clearLayer(kEventArrowsLayer);
-        ViewLayer layer = eventArrowsLayer(*e);
+        if (event < 0) {
+            for (const QString& name : {kEventArrowsLayer, kMomentumChangeLayer, kCentreOfMassLayer}) w.tableView()->clearLayer(name);
+            return;
+        }
+        const ArrowFrame frame = frameToggle->isChecked() ? ArrowFrame::CentreOfMass : ArrowFrame::Table;
+        ViewLayer layer = eventArrowsLayer(*e, frame);
         layer.visible = shown->visible;
         w.tableView()->setLayer(kEventArrowsLayer, std::move(layer));
+        ViewLayer changes = momentumChangeLayer(*e, frame);
+        changes.visible = shown->visible;
+        w.tableView()->setLayer(kMomentumChangeLayer, std::move(changes));
+        const auto result = w.document()->result();
+        if (frame == ArrowFrame::CentreOfMass && result && event < static_cast<int>(result->events.size())) {
+            ViewLayer com = centreOfMassLayer(*result, *e);
+            com.visible = shown->visible;
+            w.tableView()->setLayer(kCentreOfMassLayer, std::move(com));
+        } else {
+            w.tableView()->clearLayer(kCentreOfMassLayer);
+        }
     };
     QObject::connect(panel, &ExplainPanel::explanationChanged, &w, [update] { update(true); });
     QObject::connect(w.selection(), &Selection::eventChanged, &w, [update] { update(false); });
     QObject::connect(toggle, &QAction::toggled, &w, [update](bool on) {
         QSettings().setValue(kArrowsKey, on);
         update(false);
+    });
+    QObject::connect(frameToggle, &QAction::toggled, &w, [update, panel](bool on) {
+        QSettings().setValue(kCentreOfMassKey, on);
+        panel->conservation()->setCentreOfMassFrame(on);
+        update(true);
     });
     update(true);
 }
