@@ -270,6 +270,22 @@
         <source>Momentum and energy</source>
         <translation>Lendület és energia</translation>
     </message>
+    <message>
+        <source>Aim &amp;Line and Ghost Ball</source>
+        <translation>&amp;Célzóvonal és szellemgolyó</translation>
+    </message>
+    <message>
+        <source>In the table view: the struck ball&apos;s first contact, with the ghost ball (where its centre is at contact), the aim line through it, the line of centres, the cut angle in degrees and the ball fraction</source>
+        <translation>Az asztalnézetben: a megütött golyó első érintkezése a szellemgolyóval (ahol a középpontja az érintkezéskor van), a rajta átmenő célzóvonallal, a középpontokat összekötő egyenessel, a vágási szöggel fokban és a golyóhányaddal</translation>
+    </message>
+    <message>
+        <source>&amp;Centre-of-Mass Frame</source>
+        <translation>&amp;Tömegközépponti rendszer</translation>
+    </message>
+    <message>
+        <source>Draw the selected collision&apos;s momenta (N·s), its paths near the event and the momenta diagram as seen from the pair&apos;s centre of mass, where the momenta are equal and opposite</source>
+        <translation>A kijelölt ütközés lendületei (N·s), az esemény körüli pályák és a lendületábra a golyópár tömegközéppontjából nézve, ahol a lendületek egyenlő nagyságúak és ellentétesek</translation>
+    </message>
 </context>
 <context>
     <name>cuelab</name>
@@ -1021,6 +1037,109 @@
         <source>Cushion model&apos;s %1</source>
         <translation>A mantinelmodell %1 paramétere</translation>
     </message>
+    <message>
+        <source>ghost ball</source>
+        <translation>szellemgolyó</translation>
+    </message>
+    <message>
+        <source>aim line</source>
+        <translation>célzóvonal</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>balra</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>jobbra</translation>
+    </message>
+    <message>
+        <source>cut %1 %2, ball fraction %3</source>
+        <translation>vágás %1 %2, golyóhányad %3</translation>
+    </message>
+    <message>
+        <source>Arrows: 1 N·s = %1 m; momenta p* in the centre-of-mass frame</source>
+        <translation>Nyilak: 1 N·s = %1 m; a p* lendületek a tömegközépponti rendszerben</translation>
+    </message>
+    <message>
+        <source>p* %1 = %2 N·s</source>
+        <translation>p* %1 = %2 N·s</translation>
+    </message>
+    <message>
+        <source>p*′ %1 = %2 N·s</source>
+        <translation>p*′ %1 = %2 N·s</translation>
+    </message>
+    <message>
+        <source>Δp %1 = J = %2 N·s</source>
+        <translation>Δp %1 = J = %2 N·s</translation>
+    </message>
+    <message>
+        <source>Δp %1 = −J = %2 N·s</source>
+        <translation>Δp %1 = −J = %2 N·s</translation>
+    </message>
+    <message>
+        <source>centre of mass</source>
+        <translation>tömegközéppont</translation>
+    </message>
+    <message>
+        <source>V = %1 m/s</source>
+        <translation>V = %1 m/s</translation>
+    </message>
+    <message>
+        <source>%1, seen from the centre of mass</source>
+        <translation>%1, a tömegközéppontból nézve</translation>
+    </message>
+    <message>
+        <source>Centre-of-mass frame: paths within %1 s of the event</source>
+        <translation>Tömegközépponti rendszer: a pályák az esemény előtti és utáni %1 s-ban</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::AimControl</name>
+    <message>
+        <source>The object ball to aim at: the cut angle then sets the heading</source>
+        <translation>A célgolyó, amelyre célzunk: a vágási szög ebből adja meg az irányt</translation>
+    </message>
+    <message>
+        <source>Cut angle in degrees between the cue line and the line of centres at contact: 0° a full (straight) hit, 30° a half-ball hit; the straight cue line, before squirt and swerve</source>
+        <translation>Vágási szög fokban a dákó vonala és a középpontokat összekötő egyenes között az érintkezéskor: 0° telitalálat (egyenes lökés), 30° fél golyós találat; az egyenes dákóvonal szerint, a kilökődés és az ívelés előtt</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>balra</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>jobbra</translation>
+    </message>
+    <message>
+        <source>Which way the object ball is cut, seen along the cue line</source>
+        <translation>Merre vágjuk a célgolyót, a dákó vonala mentén nézve</translation>
+    </message>
+    <message>
+        <source>The struck ball&apos;s first contact in the simulated shot: the cut angle (degrees) between its path and the line of centres, and the ball fraction 1 − sin(cut), 1 full, 0.5 half ball</source>
+        <translation>A megütött golyó első érintkezése a szimulált lökésben: a pályája és a középpontokat összekötő egyenes közti vágási szög (fok) és a golyóhányad, 1 − sin(vágás): 1 teli, 0,5 fél golyó</translation>
+    </message>
+    <message>
+        <source>misses</source>
+        <translation>elmegy mellette</translation>
+    </message>
+    <message>
+        <source>First contact: none</source>
+        <translation>Első érintkezés: nincs</translation>
+    </message>
+    <message>
+        <source>straight</source>
+        <translation>egyenesen</translation>
+    </message>
+    <message>
+        <source>First contact: %1, cut %2 %3, ball fraction %4</source>
+        <translation>Első érintkezés: %1, vágás %2 %3, golyóhányad %4</translation>
+    </message>
+    <message>
+        <source>Aim at %1, cut %2 %3</source>
+        <translation>Célzás a(z) %1 golyóra, vágás %2 %3</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::AnalysisPanel</name>
@@ -1695,10 +1814,6 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
 <context>
     <name>cuelab::ConservationWidget</name>
     <message>
-        <source>Left: each ball&apos;s momentum m·v (N s) drawn tip to tail, before and after, with their total (dashed). Right: kinetic energy (J) before and after, translation (solid) and rotation (light).</source>
-        <translation>Balra: minden golyó m·v lendülete (N s) egymás után fűzve, előtte és utána, az összegükkel (szaggatott). Jobbra: a mozgási energia (J) előtte és utána, haladó (telt) és forgó (halvány).</translation>
-    </message>
-    <message>
         <source>Momenta and energy of the selected event</source>
         <translation>A kijelölt esemény lendületei és energiája</translation>
     </message>
@@ -1741,6 +1856,22 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>light: rotation</source>
         <translation>világos: forgás</translation>
+    </message>
+    <message>
+        <source>Left: each ball&apos;s momentum m·v (N s) drawn tip to tail, before and after, with their total (dashed); in the centre-of-mass frame the chain closes on itself. Right: kinetic energy (J) before and after, translation (solid) and rotation (light), and what was lost (hatched): to the collision, and to the cloth since each ball&apos;s previous event.</source>
+        <translation>Balra: minden golyó m·v lendülete (N s) egymás után fűzve, előtte és utána, az összegükkel (szaggatott); a tömegközépponti rendszerben a lánc önmagába zárul. Jobbra: a mozgási energia (J) előtte és utána, haladó (telt) és forgó (halvány), valamint ami elveszett (vonalkázott): az ütközésben, és a posztón minden golyó előző eseménye óta.</translation>
+    </message>
+    <message>
+        <source>Momentum, centre-of-mass frame (N s)</source>
+        <translation>Lendület, tömegközépponti rendszer (N s)</translation>
+    </message>
+    <message>
+        <source>lost to the collision</source>
+        <translation>az ütközésben elveszett</translation>
+    </message>
+    <message>
+        <source>lost to the cloth since the previous event</source>
+        <translation>a posztón elveszett az előző esemény óta</translation>
     </message>
 </context>
 <context>
@@ -2208,6 +2339,109 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>Energy change</source>
         <translation>Energiaváltozás</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>balra</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>jobbra</translation>
+    </message>
+    <message>
+        <source>straight</source>
+        <translation>egyenesen</translation>
+    </message>
+    <message>
+        <source>Aim</source>
+        <translation>Célzás</translation>
+    </message>
+    <message>
+        <source>Cut angle</source>
+        <translation>Vágási szög</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Angle in degrees between the first ball&apos;s path and the line of centres at contact: 0° full hit, 30° half ball; left or right: where the other ball goes, seen along the path</source>
+        <translation>Az első golyó pályája és a középpontokat összekötő egyenes közti szög fokban az érintkezéskor: 0° telitalálat, 30° fél golyó; balra vagy jobbra: merre megy a másik golyó, a pálya mentén nézve</translation>
+    </message>
+    <message>
+        <source>Ball fraction</source>
+        <translation>Golyóhányad</translation>
+    </message>
+    <message>
+        <source>1 − sin(cut angle): the share of the other ball the first covers along its path (1 full, 0.5 half ball, 0 a graze)</source>
+        <translation>1 − sin(vágási szög): a másik golyó mekkora részét takarja az első a pályája mentén (1 teli, 0,5 fél golyó, 0 súrolás)</translation>
+    </message>
+    <message>
+        <source>Ghost ball</source>
+        <translation>Szellemgolyó</translation>
+    </message>
+    <message>
+        <source>Where the first ball&apos;s centre is at contact (m): aim at it</source>
+        <translation>Ahol az első golyó középpontja az érintkezéskor van (m): erre kell célozni</translation>
+    </message>
+    <message>
+        <source>Contact on first ball</source>
+        <translation>Érintkezés az első golyón</translation>
+    </message>
+    <message>
+        <source>Where on the first ball the contact lies: degrees from its path, counter-clockwise positive</source>
+        <translation>Hol van az érintkezés az első golyón: fok a pályájától mérve, az óramutatóval ellentétesen pozitív</translation>
+    </message>
+    <message>
+        <source>Contact on second ball</source>
+        <translation>Érintkezés a második golyón</translation>
+    </message>
+    <message>
+        <source>Where on the second ball the contact lies: degrees from the first ball&apos;s path, counter-clockwise positive</source>
+        <translation>Hol van az érintkezés a második golyón: fok az első golyó pályájától mérve, az óramutatóval ellentétesen pozitív</translation>
+    </message>
+    <message>
+        <source>Lost to the cloth</source>
+        <translation>A posztón elveszett</translation>
+    </message>
+    <message>
+        <source>Kinetic energy (J) the cloth took from these balls since each one&apos;s previous event</source>
+        <translation>A mozgási energia (J), amelyet a posztó elvett ezektől a golyóktól, mindegyik előző eseménye óta</translation>
+    </message>
+    <message>
+        <source>Centre-of-mass frame</source>
+        <translation>Tömegközépponti rendszer</translation>
+    </message>
+    <message>
+        <source>The pair&apos;s centre of mass moves at V = (m_a v_a + m_b v_b) / (m_a + m_b) (m/s); seen from it the momenta p* = m (v − V) are equal and opposite</source>
+        <translation>A golyópár tömegközéppontja V = (m_a v_a + m_b v_b) / (m_a + m_b) sebességgel mozog (m/s); onnan nézve a p* = m (v − V) lendületek egyenlő nagyságúak és ellentétesek</translation>
+    </message>
+    <message>
+        <source>p* %1 before</source>
+        <translation>p* %1 előtte</translation>
+    </message>
+    <message>
+        <source>p* %1 after</source>
+        <translation>p* %1 utána</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::LaunchReadout</name>
+    <message>
+        <source>The struck ball just after the cue strike: its speed (m/s), its topspin (+) or backspin (−) about the axis across its path and its side spin (counter-clockwise + seen from above), in rad/s</source>
+        <translation>A megütött golyó közvetlenül a lökés után: a sebessége (m/s), a pályájára merőleges tengely körüli felső (+) vagy hátsó (−) pörgése és az oldalpörgése (felülről nézve az óramutatóval ellentétesen +), rad/s-ban</translation>
+    </message>
+    <message>
+        <source>ball %1, topspin %2, side spin %3</source>
+        <translation>golyó %1, felső pörgés %2, oldalpörgés %3</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>rad/s</source>
+        <translation>rad/s</translation>
     </message>
 </context>
 <context>
@@ -3249,10 +3483,6 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>Mozgási energia (J)</translation>
     </message>
     <message>
-        <source>What to plot against time (s). Slip speed: the speed of the ball&apos;s contact point on the cloth (m/s), zero while it rolls. Energy: translational, rotational and total (J).</source>
-        <translation>Mit ábrázoljon az idő (s) függvényében. Csúszási sebesség: a golyó posztóval érintkező pontjának sebessége (m/s), gördülés közben nulla. Energia: haladó, forgó és teljes (J).</translation>
-    </message>
-    <message>
         <source>Selected ball</source>
         <translation>Kijelölt golyó</translation>
     </message>
@@ -3333,6 +3563,54 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>
             <numerusform>%n esemény</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Momentum |p|, px, py (N s)</source>
+        <translation>Lendület |p|, px, py (N s)</translation>
+    </message>
+    <message>
+        <source>Energy parts and losses, whole table (J)</source>
+        <translation>Energiarészek és veszteségek, az egész asztal (J)</translation>
+    </message>
+    <message>
+        <source>What to plot against time (s). Slip speed: the speed of the ball&apos;s contact point on the cloth (m/s), zero while it rolls. Energy: translational, rotational and total (J). Momentum: m v in N s, its length and components; for all balls each ball&apos;s |p| and the length of the total. Energy parts: the whole table&apos;s translation and rotation, what the events (collisions, pockets) and the cloth have taken so far, and the energy put in (J), which the four add up to.</source>
+        <translation>Mit ábrázoljon az idő (s) függvényében. Csúszási sebesség: a golyó posztóval érintkező pontjának sebessége (m/s), gördülés közben nulla. Energia: haladó, forgó és teljes (J). Lendület: m v N s-ban, a nagysága és az összetevői; minden golyónál az egyes golyók |p| értéke és az összeg nagysága. Energiarészek: az egész asztal haladó és forgó energiája, amit eddig az események (ütközések, zsebek) és a posztó elvettek, valamint a bevitt energia (J), amelyet a négy együtt kiad.</translation>
+    </message>
+    <message>
+        <source> |p|</source>
+        <translation> |p|</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source> py</source>
+        <translation> py</translation>
+    </message>
+    <message>
+        <source>|total p|</source>
+        <translation>|teljes p|</translation>
+    </message>
+    <message>
+        <source>translation</source>
+        <translation>haladó</translation>
+    </message>
+    <message>
+        <source>rotation</source>
+        <translation>forgó</translation>
+    </message>
+    <message>
+        <source>lost to collisions and pockets</source>
+        <translation>ütközésekben és zsebekben elveszett</translation>
+    </message>
+    <message>
+        <source>lost to the cloth</source>
+        <translation>a posztón elveszett</translation>
+    </message>
+    <message>
+        <source>Whole table</source>
+        <translation>Az egész asztal</translation>
     </message>
 </context>
 <context>
@@ -3724,6 +4002,10 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>End mass</source>
         <translation>Végtömeg</translation>
+    </message>
+    <message>
+        <source>Aim at</source>
+        <translation>Célzás</translation>
     </message>
 </context>
 <context>
