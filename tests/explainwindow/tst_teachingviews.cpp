@@ -198,6 +198,19 @@ private slots:
     {
         auto* plots = window_->findChild<PlotsPanel*>(QStringLiteral("plotsPanel"));
         QVERIFY(plots);
+        // Every choice, for one ball and for all, from the selected collision's time.
+        window_->selection()->selectEvent(firstBallBall(*window_->document()->result()));
+        for (bool all : {false, true}) {
+            plots->setAllBalls(all);
+            for (PlotsPanel::Plot p : {PlotsPanel::Plot::Speed, PlotsPanel::Plot::Momentum, PlotsPanel::Plot::EnergyParts,
+                                       PlotsPanel::Plot::Energy})
+                plots->setPlot(p);
+        }
+        auto* box = plots->findChild<QComboBox*>(QStringLiteral("plotKind"));
+        QVERIFY(box);
+        plots->setAllBalls(false);
+        for (int k = 0; k < box->count(); ++k) box->setCurrentIndex(k);
+        QCOMPARE(plots->plot(), PlotsPanel::Plot::EnergyParts);
         plots->setAllBalls(true);
         plots->setPlot(PlotsPanel::Plot::Momentum);
         QStringList names;

@@ -191,7 +191,9 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area, const Fig
         p.setPen(palette.color(QPalette::Text));
         const QRectF under(panel.left() - 4, panel.bottom() + 2, panel.width() + 8, line);
         p.drawText(under, Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
-        p.drawText(under.translated(0, line), Qt::AlignCenter, QStringLiteral("|P| = %1").arg(tip.norm(), 0, 'g', 3));
+        // A total that is rounding only (the centre-of-mass frame's, about 1e-17 N s) reads 0.
+        const double total = tip.norm() <= 1e-12 * std::max(longest, 1e-9) ? 0.0 : tip.norm();
+        p.drawText(under.translated(0, line), Qt::AlignCenter, QStringLiteral("|P| = %1").arg(total, 0, 'g', 3));
     }
     // The key: each ball's colour, the total dashed.
     double x = area.left();
@@ -231,7 +233,7 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area, const Figu
     const double top = std::max({totals[0] + cloth, totals[1] + cloth + event, 1e-12});
     const double barW = std::min(60.0, body.width() / 2.0 - 8.0);
     const double left = body.center().x() - barW - 4.0;
-    const QColor clothColour(150, 150, 150), eventColour(215, 60, 60);
+    const QColor clothColour(150, 150, 150), eventColour(170, 60, 200);
     for (int phase = 0; phase < 2; ++phase) {
         const double x = left + phase * (barW + 8.0);
         double y = body.bottom();

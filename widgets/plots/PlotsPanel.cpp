@@ -70,7 +70,11 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent)
     view_->setObjectName(QStringLiteral("plotsChart"));
     view_->setMinimumSize(320, 200);
 
+    // Alt+T reaches the choice from the keyboard (then the arrow keys pick a plot).
+    auto* plotLabel = new QLabel(tr("Plo&t"), this);
+    plotLabel->setBuddy(plotBox_);
     auto* controls = new QHBoxLayout;
+    controls->addWidget(plotLabel);
     controls->addWidget(plotBox_);
     controls->addWidget(ballsBox_);
     controls->addWidget(reset);
@@ -226,7 +230,7 @@ void PlotsPanel::rebuild()
     if (plot_ == Plot::EnergyParts) {
         specs.push_back({-1, plots::Quantity::TranslationalEnergy, tr("translation"), parts[0], Qt::SolidLine});
         specs.push_back({-1, plots::Quantity::RotationalEnergy, tr("rotation"), parts[1], Qt::SolidLine});
-        specs.push_back({-1, plots::Quantity::EnergyLostToEvents, tr("lost to collisions and pockets"), QColor(215, 60, 60), Qt::DashLine});
+        specs.push_back({-1, plots::Quantity::EnergyLostToEvents, tr("lost to collisions and pockets"), QColor(170, 60, 200), Qt::DashLine});
         specs.push_back({-1, plots::Quantity::EnergyLostToCloth, tr("lost to the cloth"), QColor(120, 120, 120), Qt::DashLine});
     }
 
