@@ -3612,6 +3612,10 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <source>Whole table</source>
         <translation>Az egész asztal</translation>
     </message>
+    <message>
+        <source>Plo&amp;t</source>
+        <translation>Áb&amp;ra</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::RecentFiles</name>
