@@ -46,16 +46,24 @@ AimControl::AimControl(Document* document, QWidget* parent) : QWidget(parent), d
     contact_ = new QLabel(this);
     contact_->setObjectName(QStringLiteral("aimFirstContact"));
     contact_->setWordWrap(true);
+    contact_->setMinimumWidth(80);  // px: it wraps, and never widens a narrow dock
     contact_->setToolTip(tr("The struck ball's first contact in the simulated shot: the cut angle (degrees) between "
                             "its path and the line of centres, and the ball fraction 1 − sin(cut), 1 full, 0.5 half ball"));
 
+    // Narrow docks (an 800 × 600 window): the lists shrink to a few characters, never pushing the
+    // Shot dock into sideways scrolling.
+    for (QComboBox* box : {object_, side_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(3);
+    }
     auto* grid = new QGridLayout(this);
     grid->setContentsMargins(0, 0, 0, 0);
-    grid->addWidget(object_, 0, 0);
-    grid->addWidget(cut_, 0, 1);
-    grid->addWidget(side_, 0, 2);
-    grid->addWidget(contact_, 1, 0, 1, 3);
-    grid->setColumnStretch(1, 1);
+    // Two rows, so that the Shot dock stays narrow: the ball, then the cut angle and its side.
+    grid->addWidget(object_, 0, 0, 1, 2);
+    grid->addWidget(cut_, 1, 0);
+    grid->addWidget(side_, 1, 1);
+    grid->addWidget(contact_, 2, 0, 1, 2);
+    grid->setColumnStretch(0, 1);
 
     connect(object_, &QComboBox::activated, this, [this] { refresh(); });
     connect(cut_, &QDoubleSpinBox::valueChanged, this, [this] { commit(); });
