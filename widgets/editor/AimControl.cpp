@@ -46,7 +46,6 @@ AimControl::AimControl(Document* document, QWidget* parent) : QWidget(parent), d
     contact_ = new QLabel(this);
     contact_->setObjectName(QStringLiteral("aimFirstContact"));
     contact_->setWordWrap(true);
-    contact_->setMinimumWidth(80);  // px: it wraps, and never widens a narrow dock
     contact_->setToolTip(tr("The struck ball's first contact in the simulated shot: the cut angle (degrees) between "
                             "its path and the line of centres, and the ball fraction 1 − sin(cut), 1 full, 0.5 half ball"));
 

@@ -11,7 +11,6 @@ LaunchReadout::LaunchReadout(Document* document, QWidget* parent) : QLabel(paren
 {
     setObjectName(QStringLiteral("launchReadout"));
     setWordWrap(true);
-    setMinimumWidth(80);  // px: it wraps, and never widens a narrow dock
     setToolTip(tr("The struck ball just after the cue strike: its speed (m/s), its topspin (+) or backspin (−) about "
                   "the axis across its path and its side spin (counter-clockwise + seen from above), in rad/s"));
     connect(document_, &Document::resultChanged, this, &LaunchReadout::refresh);
