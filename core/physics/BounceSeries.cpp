@@ -111,6 +111,12 @@ std::int64_t slipEndingBounce(const BounceSeries& b)
     return k;
 }
 
+// T - T_j = (2 w / g) e^j / (1 - e): the time the series has left after bounce j (e < 1).
+double timeLeftAfter(const BounceSeries& b, std::int64_t j)
+{
+    return 2.0 * b.landingSpeed / b.gravity * power(b.restitution, j) / (1.0 - b.restitution);
+}
+
 }  // namespace
 
 BounceSeries bounceSeries(const AirState& landing, double radius, double mass, const PhysicsParams& p)
@@ -181,27 +187,35 @@ std::int64_t bounceAt(const BounceSeries& b, double t)
     if (t <= 0.0 || b.landingSpeed <= 0.0) return 1;
     const double e = b.restitution;
     const double unit = 2.0 * b.landingSpeed / b.gravity;  // s
-    double guess = 1.0;
+    std::int64_t j = 1;
     if (e >= 1.0) {
-        guess = 1.0 + std::floor(t / unit);
-    } else if (e > 0.0) {
-        // T_j <= t  <=>  e^(j-1) >= 1 - t (1 - e) / (unit e).
-        const double r = 1.0 - t * (1.0 - e) / (unit * e);
-        if (r > 0.0) guess = 1.0 + std::floor(std::log(r) / std::log(e));
+        j = static_cast<std::int64_t>(std::clamp(1.0 + std::floor(t / unit), 1.0, 4e18));
+        for (int step = 0; step < 64 && j > 1 && bounceTime(b, j) > t; ++step) --j;
+        for (int step = 0; step < 64 && bounceTime(b, j + 1) <= t; ++step) ++j;
+        return j;
     }
-    std::int64_t j = static_cast<std::int64_t>(std::clamp(guess, 1.0, 4e18));
-    // The logarithms are rounded: settle j on the times themselves. Far down the series T_j rounds to
-    // a constant just below T; the step cap keeps a t in that last ulp from walking forever.
-    for (int step = 0; step < 64 && j > 1 && bounceTime(b, j) > t; ++step) --j;
-    for (int step = 0; step < 64 && bounceTime(b, j + 1) <= t; ++step) ++j;
+    // Counted from the end, where the bounces crowd: T - T_j = unit e^j / (1 - e), and T_j <= t when
+    // that is at least rem = T - t (rem is exact: T and t are within a factor 2 near the end).
+    const double rem = b.duration - t;
+    const double guess = std::floor(std::log(rem * (1.0 - e) / unit) / std::log(e));
+    j = static_cast<std::int64_t>(std::clamp(std::isfinite(guess) ? guess : 1.0, 1.0, 4e18));
+    // The logarithms are rounded: settle j on the times themselves (a step or two at most).
+    for (int step = 0; step < 64 && j > 1 && timeLeftAfter(b, j) < rem; ++step) --j;
+    for (int step = 0; step < 64 && timeLeftAfter(b, j + 1) >= rem; ++step) ++j;
     return j;
 }
 
 AirState seriesStateAt(const BounceSeries& b, double t)
 {
     if (!(t < b.duration)) return b.end;
-    const std::int64_t j = bounceAt(b, std::max(0.0, t));
-    return fly(afterBounce(b, j), b.gravity, std::max(0.0, t) - bounceTime(b, j));
+    t = std::max(0.0, t);
+    const std::int64_t j = bounceAt(b, t);
+    const AirState after = afterBounce(b, j);
+    // The time since bounce j, measured from the end when the series ends (as bounceAt decided j),
+    // and never past that flight's own landing 2 vz / g: so z >= 0 however the times round.
+    double since = b.restitution < 1.0 ? timeLeftAfter(b, j) - (b.duration - t) : t - bounceTime(b, j);
+    since = std::clamp(since, 0.0, 2.0 * after.vz / b.gravity);
+    return fly(after, b.gravity, since);
 }
 
 SeriesTail seriesTail(const BounceSeries& b, std::int64_t j)
