@@ -66,6 +66,7 @@ private slots:
     void flyingAgainstClothBallsMissesNothing();
     void twoFlyingBallsMissNothing();
     void cushionByHand();
+    void cushionOnTheClothIsDetectionsFace();
     void cushionMissesNothing();
     void pocketsByHand();
     void jawSideByHand();
@@ -273,6 +274,29 @@ void TestAirborneDetection::cushionByHand()
     // Beyond the segment's ends nothing is found.
     const CushionSegment shortRail{"short", Vec2(2.0, 0.0), Vec2(3.0, 0.0), Vec2(0.0, 1.0)};
     QVERIFY(airCushionContact(flightPath(high, kR, kG), kR, shortRail, kNose, 10.0).kind == CushionContactKind::None);
+}
+
+void TestAirborneDetection::cushionOnTheClothIsDetectionsFace()
+{
+    // A ball on the cloth (centre at R, below the nose) meets the slab only at its face: the same time
+    // as Detection.h's cushionTime, to the bit, over random sliding and rolling balls and short rails.
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const PhysicsParams p;
+    int contacts = 0;
+    for (int i = 0; i < 5000; ++i) {
+        const CushionSegment rail{"rail", Vec2(0.5 * u(rng), 0.0), Vec2(1.0 + 0.5 * u(rng), 0.0), Vec2(0.0, 1.0)};
+        const BallState s = onCloth(Vec2(0.5 + 0.5 * u(rng), kR + 0.3 * (0.5 + 0.5 * u(rng))), Vec2(u(rng), 2.0 * u(rng)),
+                                    Vec3(60.0 * u(rng), 60.0 * u(rng), 10.0 * u(rng)));
+        const double horizon = nextTransition(s, kR, p).after;
+        const Path path = pathOf(s, kR, p);
+        const double flat = cushionTime(path, kR, rail, horizon);
+        const AirCushionContact c = airCushionContact(clothPath(path, kR), kR, rail, kNose, horizon);
+        QCOMPARE(c.time, flat);
+        QVERIFY(c.kind == (flat == kNever ? CushionContactKind::None : CushionContactKind::Face));
+        if (flat != kNever) ++contacts;
+    }
+    QVERIFY(contacts > 500);
 }
 
 void TestAirborneDetection::cushionMissesNothing()
