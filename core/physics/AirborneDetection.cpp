@@ -174,14 +174,17 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
         });
         offer(s, CushionContactKind::Nose);
     }
-    // Clearing the rail: the centre crosses the nose line outwards over the segment. Any contact with
-    // the face or the nose comes first (at n = 0 without one, the ball's bottom is above the rail).
+    // Clearing the rail: the centre crosses the nose line outwards over the segment with the ball's
+    // bottom above the rail's top (z_c - h >= R). Over the middle of a segment that follows from there
+    // being no contact before; near its ends a ball can pass the face's end and cross the line lower
+    // down, into the jaws' and pockets' domain, which is not this cushion's business.
     {
         double roots[2];
         const int count = quadraticRoots(f.n[2], f.n[1], f.n[0], roots);
         for (int i = 0; i < count; ++i) {
             const double s = roots[i];
-            if (s >= 0.0 && s <= horizon && f.n[1] + 2.0 * f.n[2] * s < 0.0 && onSegment(s)) {
+            if (s >= 0.0 && s <= horizon && f.n[1] + 2.0 * f.n[2] * s < 0.0 && onSegment(s) &&
+                f.wAt(s) >= radius - kContactTolerance) {
                 offer(s, CushionContactKind::OffTable);
                 break;
             }

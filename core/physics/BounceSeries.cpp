@@ -95,19 +95,20 @@ std::int64_t slipEndingBounce(const BounceSeries& b)
     if (!(b.slipCapacity > 0.0)) return kSlipsThroughout;
     const double e = b.restitution;
     auto covered = [&](std::int64_t j) { return slipCapacity(b, j) >= b.slip; };
-    std::int64_t k = 1;
+    double guess = 1.0;
     if (e >= 1.0) {
-        k = static_cast<std::int64_t>(std::ceil(b.slip / b.slipCapacity));
+        guess = std::ceil(b.slip / b.slipCapacity);
     } else {
         const double cap = b.slipCapacity / (1.0 - e);  // all the bounces together
         if (b.slip >= cap) return kSlipsThroughout;
         // e^K <= 1 - U / cap.
-        if (e > 0.0) k = static_cast<std::int64_t>(std::ceil(std::log1p(-b.slip / cap) / std::log(e)));
+        if (e > 0.0) guess = std::ceil(std::log1p(-b.slip / cap) / std::log(e));
     }
-    k = std::max<std::int64_t>(k, 1);
+    // (Clamped before the conversion, which would be undefined beyond the integer's range.)
+    std::int64_t k = static_cast<std::int64_t>(std::clamp(std::isfinite(guess) ? guess : 1.0, 1.0, 4e18));
     // The logarithms are rounded: settle K on the inequality itself.
-    while (k > 1 && covered(k - 1)) --k;
-    while (!covered(k)) ++k;
+    for (int step = 0; step < 64 && k > 1 && covered(k - 1); ++step) --k;
+    for (int step = 0; step < 64 && !covered(k); ++step) ++k;
     return k;
 }
 
