@@ -194,8 +194,8 @@ void TestAirborneDetection::flyingAgainstClothBallsMissesNothing()
         const double horizon = std::min(landingTime(a, kG), nextTransition(b, kR, p).after);
         const double t = spaceBallBallTime(flightPath(a, kR, kG), kR, clothPath(pathOf(b, kR, p), kR), kR, horizon);
         const double end = std::min(t, horizon);
-        for (int k = 0; k < 4000; ++k) {
-            const double s = end * k / 4000.0;
+        for (int k = 0; k < 2000; ++k) {
+            const double s = end * k / 2000.0;
             worstBefore = std::max(worstBefore, 2.0 * kR - (centreOf(a, s) - centreOf(b, s, p)).norm());
         }
         if (t != kNever) {
@@ -227,8 +227,8 @@ void TestAirborneDetection::twoFlyingBallsMissNothing()
         const double horizon = std::min(landingTime(a, kG), landingTime(b, kG));
         const double t = spaceBallBallTime(flightPath(a, kR, kG), kR, flightPath(b, kR, kG), kR, horizon);
         const double end = std::min(t, horizon);
-        for (int k = 0; k < 4000; ++k) {
-            const double s = end * k / 4000.0;
+        for (int k = 0; k < 2000; ++k) {
+            const double s = end * k / 2000.0;
             worstBefore = std::max(worstBefore, 2.0 * kR - (centreOf(a, s) - centreOf(b, s)).norm());
         }
         if (t != kNever) {
@@ -313,8 +313,8 @@ void TestAirborneDetection::cushionMissesNothing()
         const AirCushionContact c = airCushionContact(flightPath(a, kR, kG), kR, kRail, kNose, horizon);
         ++counts[static_cast<int>(c.kind)];
         const double end = std::min(c.time, horizon);
-        for (int k = 0; k < 4000; ++k)
-            worstBefore = std::max(worstBefore, kR - slabDistance(centreOf(a, end * k / 4000.0)));
+        for (int k = 0; k < 2000; ++k)
+            worstBefore = std::max(worstBefore, kR - slabDistance(centreOf(a, end * k / 2000.0)));
         if (c.kind == CushionContactKind::Face || c.kind == CushionContactKind::Nose)
             worstAt = std::max(worstAt, std::abs(slabDistance(centreOf(a, c.time)) - kR));
         if (c.kind == CushionContactKind::OffTable) {
