@@ -21,9 +21,15 @@ enum class BallCushionModel : std::uint8_t {
     Stronge,       // Stronge's compliant frictional impact (normal and tangential springs)
 };
 // Each model's resolver, name and parameters: resolve/CushionModel.h (the registry).
+enum class BallTableModel : std::uint8_t {
+    Frictional,    // restitution and Coulomb friction with the cloth (pooltool's frictional_inelastic)
+    Frictionless,  // restitution only: the horizontal velocity and the spin go through unchanged
+};
+// Each model's resolver, name and parameters: resolve/TableModel.h (the registry).
 
 std::string_view toString(BallBallModel m);     // "frictionless" | "frictional"
 std::string_view toString(BallCushionModel m);  // its name in files (resolve/CushionModel.h)
+std::string_view toString(BallTableModel m);    // its name in files (resolve/TableModel.h)
 
 struct PhysicsParams {
     double gravity = 9.81;        // m/s^2
@@ -45,6 +51,12 @@ struct PhysicsParams {
     // stronge only: omega_t / omega_n, the ratio of the tangential to the normal frequency of the
     // contact's springs, in (1, 2) (pooltool's omega_ratio; 1.8, PHYSICS.md).
     double strongeOmegaRatio = 1.8;
+
+    // A ball landing on (or driven into) the cloth: CONTRACT.md physics.ball_table, PHYSICS.md
+    // "Airborne balls". Not read by the simulator yet (docs/airborne.md, the plan to wire it in).
+    BallTableModel ballTableModel = BallTableModel::Frictional;
+    double tableRestitution = 0.5;  // e of a bounce on the cloth (Alciatore's table of properties, pooltool e_t)
+    double tableFriction = 0.2;     // mu between ball and cloth during a bounce (pooltool uses mu_s = 0.2)
 };
 
 }  // namespace cuelab

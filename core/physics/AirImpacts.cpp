@@ -1,0 +1,104 @@
+#include "AirImpacts.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cuelab {
+
+namespace {
+
+Vec3 velocity3(const AirState& s) { return Vec3(s.velocity.x(), s.velocity.y(), s.vz); }
+
+void setVelocity3(AirState& s, const Vec3& v)
+{
+    s.velocity = v.head<2>();
+    s.vz = v.z();
+}
+
+Vec3 centre3(const AirState& s, double radius) { return Vec3(s.position.x(), s.position.y(), radius + s.z); }
+
+// The cloth answers a ball on it that an impact drove downwards.
+void clothAnswers(AirState& s, double radius, double mass, const PhysicsParams& p, bool& bounced, TableImpactResult& bounce)
+{
+    if (s.z <= kHeightTolerance && s.vz < 0.0) {
+        bounced = true;
+        bounce = resolveTableImpact(s, radius, mass, p);
+        s = bounce.after;
+    }
+}
+
+}  // namespace
+
+FixedImpactResult resolveFixedImpact(const AirState& before, double radius, double mass, const Vec3& normal,
+                                     double restitution, double friction)
+{
+    FixedImpactResult r;
+    r.after = before;
+    const Vec3 v = velocity3(before);
+    const double vn = v.dot(normal);
+    r.approachSpeed = -vn;
+    if (vn < 0.0) {
+        const double pn = -(1.0 + restitution) * mass * vn;  // N s
+        const Vec3 q = -radius * normal;                      // m, the contact from the centre
+        const Vec3 contact = v + before.spin.cross(q);
+        const Vec3 slip = contact - contact.dot(normal) * normal;
+        const double slipSpeed = slip.norm();
+        Vec3 pt = Vec3::Zero();
+        r.slipEnded = true;
+        if (slipSpeed > 0.0) {
+            const double stopping = (2.0 / 7.0) * mass * slipSpeed;
+            const double limit = std::max(0.0, friction) * pn;
+            r.slipEnded = stopping <= limit;
+            pt = -(std::min(stopping, limit) / slipSpeed) * slip;
+        }
+        r.impulse = pn * normal + pt;
+        setVelocity3(r.after, v + r.impulse / mass);
+        r.after.spin = before.spin + q.cross(pt) / ballInertia(mass, radius);
+    }
+    r.after.motion = classify(r.after, radius);
+    return r;
+}
+
+AirBallBallResult resolveAirBallBall(const AirState& a, double ra, double ma, const AirState& b, double rb, double mb,
+                                     const PhysicsParams& p)
+{
+    AirBallBallResult r;
+    r.a = a;
+    r.b = b;
+    const Vec3 d = centre3(b, rb) - centre3(a, ra);
+    const Vec3 n = d / d.norm();
+    r.normal = n;
+    const Vec3 va = velocity3(a), vb = velocity3(b);
+    r.approachSpeed = (va - vb).dot(n);
+    const double invMass = 1.0 / ma + 1.0 / mb;  // 1/kg
+    const double pn = std::max(0.0, (1.0 + p.ballBallRestitution) * r.approachSpeed / invMass);  // N s
+    Vec3 onA = -pn * n;
+    Vec3 tangential = Vec3::Zero();
+    if (p.ballBallModel == BallBallModel::Frictional && pn > 0.0) {
+        // The contact points' velocities, v + w x (R n) on a and v + w x (-R n) on b; the normal impulse
+        // does not change their tangential difference (it acts through both centres along n).
+        const Vec3 slipFull = (va + a.spin.cross(ra * n)) - (vb - b.spin.cross(rb * n));
+        const Vec3 slip = slipFull - slipFull.dot(n) * n;
+        const double slipSpeed = slip.norm();
+        if (slipSpeed > 0.0) {
+            const double stopping = slipSpeed / (3.5 * invMass);
+            const double magnitude = std::min(ballBallFriction(p, slipSpeed) * pn, stopping);
+            tangential = -(magnitude / slipSpeed) * slip;
+        }
+    }
+    onA += tangential;
+    r.impulse = onA;
+    setVelocity3(r.a, va + onA / ma);
+    setVelocity3(r.b, vb - onA / mb);
+    r.a.spin += (ra * n).cross(tangential) / ballInertia(ma, ra);
+    r.b.spin += (rb * n).cross(tangential) / ballInertia(mb, rb);
+    r.a.motion = classify(r.a, ra);
+    r.b.motion = classify(r.b, rb);
+    clothAnswers(r.a, ra, ma, p, r.aBounced, r.aBounce);
+    clothAnswers(r.b, rb, mb, p, r.bBounced, r.bBounce);
+    return r;
+}
+
+}  // namespace cuelab

@@ -1,0 +1,259 @@
+#include "AirborneDetection.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cuelab {
+
+namespace {
+
+// m: how far past a condition's boundary (z_c = h, n = 0) a root may lie and still count: at the
+// boundary the face and the nose contacts coincide, and rounding must not let a contact fall between.
+constexpr double kBoundaryTolerance = 1e-12;
+
+double slopeAt(const Quartic& f, double s)
+{
+    return ((4.0 * f[0] * s + 3.0 * f[1]) * s + 2.0 * f[2]) * s + f[3];
+}
+
+// The first root s in (0, H] where f falls and `valid(s)` holds (Detection.cpp's firstFallingRoot
+// with a condition): a quartic has at most four roots.
+template <typename Valid>
+double firstFallingRootWhere(const Quartic& f, double horizon, Valid valid)
+{
+    double lo = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        const double s = smallestRootInInterval(f, lo, horizon);
+        if (s == kNever) return kNever;
+        if (slopeAt(f, s) < 0.0 && valid(s)) return s;
+        lo = s;
+    }
+    return kNever;
+}
+
+// |d0 + d1 s + d2 s^2|^2 - reach^2, in any dimension.
+template <typename V>
+Quartic distanceQuartic(const V& d0, const V& d1, const V& d2, double reach)
+{
+    return {d2.squaredNorm(), 2.0 * d1.dot(d2), d1.squaredNorm() + 2.0 * d0.dot(d2), 2.0 * d0.dot(d1),
+            d0.squaredNorm() - reach * reach};
+}
+
+// Detection.cpp's rule for bodies touching now (gap within kContactTolerance): a contact now if the
+// gap closes, or if it neither opens nor closes while the accelerations press the bodies together,
+// or if it opens so slowly that the accelerations close it again within kContactTolerance.
+template <typename V>
+bool touchingContactNow(const V& d0, const V& d1, const V& d2, double reach)
+{
+    const double dist = d0.norm();
+    if (!(dist - reach <= kContactTolerance) || dist == 0.0) return false;
+    const double normalSpeed = d0.dot(d1) / dist;
+    if (normalSpeed < -kRestingSpeed) return true;
+    const double press = d1.squaredNorm() + 2.0 * d0.dot(d2);
+    if (normalSpeed <= kRestingSpeed && press < 0.0) return true;
+    const double curvature = (press - normalSpeed * normalSpeed) / dist;
+    return curvature < 0.0 && (dist - reach) + normalSpeed * normalSpeed / (-2.0 * curvature) <= kContactTolerance;
+}
+
+// Real roots of g2 s^2 + g1 s + g0, ascending, without cancellation; returns their count.
+int quadraticRoots(double g2, double g1, double g0, double roots[2])
+{
+    if (g2 == 0.0) {
+        if (g1 == 0.0) return 0;
+        roots[0] = -g0 / g1;
+        return 1;
+    }
+    const double disc = g1 * g1 - 4.0 * g2 * g0;
+    if (disc < 0.0) return 0;
+    const double q = -0.5 * (g1 + std::copysign(std::sqrt(disc), g1));
+    if (q == 0.0) {
+        roots[0] = 0.0;
+        return 1;
+    }
+    const double r1 = q / g2, r2 = g0 / q;
+    roots[0] = std::min(r1, r2);
+    roots[1] = std::max(r1, r2);
+    return 2;
+}
+
+// The horizontal normal distance n(s) = (c(s) - a) . N and the height above the nose w(s) = z_c(s) - h
+// of a path relative to one cushion, as quadratics (constant, linear, square coefficients).
+struct CushionFrame {
+    double n[3];
+    double w[3];
+    double nAt(double s) const { return n[0] + s * (n[1] + s * n[2]); }
+    double wAt(double s) const { return w[0] + s * (w[1] + s * w[2]); }
+};
+
+CushionFrame cushionFrame(const SpacePath& p, const CushionSegment& seg, double noseHeight)
+{
+    const Vec2 N = seg.normal;
+    return CushionFrame{{(p.c0.head<2>() - seg.a).dot(N), p.c1.head<2>().dot(N), p.c2.head<2>().dot(N)},
+                        {p.c0.z() - noseHeight, p.c1.z(), p.c2.z()}};
+}
+
+bool footOnSegment(const SpacePath& p, const CushionSegment& seg, double s)
+{
+    const Vec2 along = seg.b - seg.a;
+    const double lambda = (p.at(s).head<2>() - seg.a).dot(along);
+    return lambda >= 0.0 && lambda <= along.squaredNorm();
+}
+
+}  // namespace
+
+Quartic spaceBallBallGap(const SpacePath& a, double ra, const SpacePath& b, double rb)
+{
+    return distanceQuartic<Vec3>(b.c0 - a.c0, b.c1 - a.c1, b.c2 - a.c2, ra + rb);
+}
+
+double spaceBallBallTime(const SpacePath& a, double ra, const SpacePath& b, double rb, double horizon)
+{
+    const Vec3 d0 = b.c0 - a.c0, d1 = b.c1 - a.c1, d2 = b.c2 - a.c2;
+    if (touchingContactNow<Vec3>(d0, d1, d2, ra + rb)) return 0.0;
+    return firstFallingRootWhere(spaceBallBallGap(a, ra, b, rb), horizon, [](double) { return true; });
+}
+
+Quartic cushionNoseGap(const SpacePath& p, double radius, const CushionSegment& seg, double noseHeight)
+{
+    const CushionFrame f = cushionFrame(p, seg, noseHeight);
+    // (n0 + n1 s + n2 s^2)^2 + (w0 + w1 s + w2 s^2)^2 - R^2.
+    auto square = [](const double c[3], Quartic& q) {
+        q[0] += c[2] * c[2];
+        q[1] += 2.0 * c[1] * c[2];
+        q[2] += c[1] * c[1] + 2.0 * c[0] * c[2];
+        q[3] += 2.0 * c[0] * c[1];
+        q[4] += c[0] * c[0];
+    };
+    Quartic q{0.0, 0.0, 0.0, 0.0, 0.0};
+    square(f.n, q);
+    square(f.w, q);
+    q[4] -= radius * radius;
+    return q;
+}
+
+AirCushionContact airCushionContact(const SpacePath& p, double radius, const CushionSegment& seg, double noseHeight,
+                                    double horizon)
+{
+    const CushionFrame f = cushionFrame(p, seg, noseHeight);
+    const Vec3 faceNormal(seg.normal.x(), seg.normal.y(), 0.0);
+    auto onSegment = [&](double s) { return footOnSegment(p, seg, s); };
+    AirCushionContact best;
+    auto offer = [&](double s, CushionContactKind kind) {
+        if (!(s >= 0.0 && s <= horizon) || s >= best.time) return;
+        best.time = s;
+        best.kind = kind;
+    };
+
+    // The face: n(s) = R at or below the nose, as Detection.h's cushionTime (touching now included).
+    {
+        const double g0 = f.n[0] - radius, g1 = f.n[1], g2 = f.n[2];
+        const bool below = f.w[0] <= kBoundaryTolerance;
+        if (std::abs(g0) <= kContactTolerance && below && onSegment(0.0) &&
+            (g1 < -kRestingSpeed || (g1 <= kRestingSpeed && g2 < 0.0) ||
+             (g1 > 0.0 && g2 < 0.0 && g0 + g1 * g1 / (-4.0 * g2) <= kContactTolerance)))
+            offer(0.0, CushionContactKind::Face);
+        double roots[2];
+        const int count = quadraticRoots(g2, g1, g0, roots);
+        for (int i = 0; i < count; ++i) {
+            const double s = roots[i];
+            if (s > 0.0 && s <= horizon && g1 + 2.0 * g2 * s < 0.0 && f.wAt(s) <= kBoundaryTolerance && onSegment(s)) {
+                offer(s, CushionContactKind::Face);
+                break;
+            }
+        }
+    }
+    // The nose edge: n^2 + w^2 = R^2 with n >= 0 and w >= 0.
+    {
+        const double n0 = f.n[0], w0 = f.w[0];
+        const double dist = std::hypot(n0, w0);
+        if (std::abs(dist - radius) <= kContactTolerance && n0 >= -kBoundaryTolerance && w0 >= -kBoundaryTolerance &&
+            n0 * f.n[1] + w0 * f.w[1] < -kRestingSpeed * dist && onSegment(0.0))
+            offer(0.0, CushionContactKind::Nose);
+        const double s = firstFallingRootWhere(cushionNoseGap(p, radius, seg, noseHeight), horizon, [&](double t) {
+            return f.nAt(t) >= -kBoundaryTolerance && f.wAt(t) >= -kBoundaryTolerance && onSegment(t);
+        });
+        offer(s, CushionContactKind::Nose);
+    }
+    // Clearing the rail: the centre crosses the nose line outwards over the segment with the ball's
+    // bottom above the rail's top (z_c - h >= R). Over the middle of a segment that follows from there
+    // being no contact before; near its ends a ball can pass the face's end and cross the line lower
+    // down, into the jaws' and pockets' domain, which is not this cushion's business.
+    {
+        double roots[2];
+        const int count = quadraticRoots(f.n[2], f.n[1], f.n[0], roots);
+        for (int i = 0; i < count; ++i) {
+            const double s = roots[i];
+            if (s >= 0.0 && s <= horizon && f.n[1] + 2.0 * f.n[2] * s < 0.0 && onSegment(s) &&
+                f.wAt(s) >= radius - kContactTolerance) {
+                offer(s, CushionContactKind::OffTable);
+                break;
+            }
+        }
+    }
+
+    if (best.kind == CushionContactKind::Face) {
+        best.normal = faceNormal;
+    } else if (best.kind == CushionContactKind::Nose) {
+        const double n = std::max(0.0, f.nAt(best.time)), w = std::max(0.0, f.wAt(best.time));
+        const Vec3 v(n * seg.normal.x(), n * seg.normal.y(), w);
+        const double length = v.norm();
+        best.normal = length > 0.0 ? Vec3(v / length) : faceNormal;
+    }
+    return best;
+}
+
+double airJawSideTime(const SpacePath& p, double radius, const JawTip& jaw, double noseHeight, double horizon)
+{
+    const Vec2 d0 = p.c0.head<2>() - jaw.centre, d1 = p.c1.head<2>(), d2 = p.c2.head<2>();
+    const double reach = radius + jaw.radius;
+    auto below = [&](double s) { return p.at(s).z() - noseHeight <= kBoundaryTolerance; };
+    if (below(0.0) && touchingContactNow<Vec2>(d0, d1, d2, reach)) return 0.0;
+    return firstFallingRootWhere(distanceQuartic<Vec2>(d0, d1, d2, reach), horizon, below);
+}
+
+double spaceLandingTime(const SpacePath& p, double radius, double horizon)
+{
+    // z_c(s) - R = g0 + g1 s + g2 s^2, descending through 0.
+    const double g0 = p.c0.z() - radius, g1 = p.c1.z(), g2 = p.c2.z();
+    if (g1 == 0.0 && g2 == 0.0) return kNever;  // on the cloth (or floating): no landing
+    double roots[2];
+    const int count = quadraticRoots(g2, g1, g0, roots);
+    for (int i = 0; i < count; ++i) {
+        const double s = roots[i];
+        if (s >= 0.0 && s <= horizon && g1 + 2.0 * g2 * s < 0.0) return s;
+    }
+    return kNever;
+}
+
+double airPocketTime(const SpacePath& p, double radius, const Pocket& pocket, double horizon)
+{
+    const double s = spaceLandingTime(p, radius, horizon);
+    if (s == kNever) return kNever;
+    return (p.at(s).head<2>() - pocket.centre).squaredNorm() <= pocket.radius * pocket.radius ? s : kNever;
+}
+
+OverPocket overPocket(const SpacePath& p, const Pocket& pocket, double horizon)
+{
+    const Vec2 d0 = p.c0.head<2>() - pocket.centre, d1 = p.c1.head<2>(), d2 = p.c2.head<2>();
+    const Quartic q = distanceQuartic<Vec2>(d0, d1, d2, pocket.radius);
+    OverPocket over;
+    if (q[4] <= 0.0) {
+        over.enter = 0.0;
+    } else {
+        over.enter = firstFallingRootWhere(q, horizon, [](double) { return true; });
+        if (over.enter == kNever) return over;
+    }
+    double lo = over.enter;
+    for (int k = 0; k < 4; ++k) {
+        const double s = smallestRootInInterval(q, lo, horizon);
+        if (s == kNever) break;
+        if (slopeAt(q, s) > 0.0) {
+            over.leave = s;
+            break;
+        }
+        lo = s;
+    }
+    return over;
+}
+
+}  // namespace cuelab

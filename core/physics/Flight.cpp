@@ -1,0 +1,80 @@
+#include "Flight.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cuelab {
+
+AirState lifted(const BallState& s, double z, double vz)
+{
+    AirState out;
+    static_cast<BallState&>(out) = s;
+    out.z = z;
+    out.vz = vz;
+    return out;
+}
+
+bool isAirborne(const AirState& s)
+{
+    return s.z > kHeightTolerance || s.vz > 0.0;
+}
+
+SpacePath clothPath(const Path& p, double radius)
+{
+    return SpacePath{Vec3(p.c0.x(), p.c0.y(), radius), Vec3(p.c1.x(), p.c1.y(), 0.0), Vec3(p.c2.x(), p.c2.y(), 0.0)};
+}
+
+SpacePath flightPath(const AirState& s, double radius, double gravity)
+{
+    return SpacePath{Vec3(s.position.x(), s.position.y(), radius + s.z), Vec3(s.velocity.x(), s.velocity.y(), s.vz),
+                     Vec3(0.0, 0.0, -0.5 * gravity)};
+}
+
+AirState fly(const AirState& s, double gravity, double dt)
+{
+    AirState out = s;
+    if (dt <= 0.0) return out;
+    out.position = s.position + dt * s.velocity;
+    out.z = s.z + dt * (s.vz - 0.5 * gravity * dt);
+    out.vz = s.vz - gravity * dt;
+    return out;
+}
+
+double landingSpeed(const AirState& s, double gravity)
+{
+    return std::sqrt(std::max(0.0, s.vz * s.vz + 2.0 * gravity * std::max(0.0, s.z)));
+}
+
+double landingTime(const AirState& s, double gravity)
+{
+    if (!isAirborne(s)) return 0.0;
+    if (!(gravity > 0.0)) return kNever;
+    const double z = std::max(0.0, s.z);
+    // From the cloth the root is 2 vz / g; written so, it is that number to the last bit.
+    if (z == 0.0) return 2.0 * s.vz / gravity;
+    // Roots of z + vz t - g t^2 / 2: t = (vz +- w) / g, w = sqrt(vz^2 + 2 g z) >= |vz|. The positive
+    // one is (vz + w) / g; when vz < 0 that sum cancels, and the same root is 2 z / (w - vz).
+    const double w = landingSpeed(s, gravity);
+    return s.vz >= 0.0 ? (s.vz + w) / gravity : 2.0 * z / (w - s.vz);
+}
+
+double apexTime(const AirState& s, double gravity)
+{
+    if (!(gravity > 0.0)) return s.vz > 0.0 ? kNever : 0.0;
+    return s.vz > 0.0 ? s.vz / gravity : 0.0;
+}
+
+double apexHeight(const AirState& s, double gravity)
+{
+    const double z = std::max(0.0, s.z);
+    if (s.vz <= 0.0) return z;
+    if (!(gravity > 0.0)) return kNever;
+    return z + s.vz * s.vz / (2.0 * gravity);
+}
+
+double mechanicalEnergy(const AirState& s, double radius, double mass, double gravity)
+{
+    return kineticEnergy(s, radius, mass) + 0.5 * mass * s.vz * s.vz + mass * gravity * s.z;
+}
+
+}  // namespace cuelab

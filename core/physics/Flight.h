@@ -1,0 +1,76 @@
+#pragma once
+// A ball off the cloth (PHYSICS.md, "Airborne balls, jumps and massé"; CONTRACT.md, "Airborne balls").
+//
+// In flight a ball feels gravity only (no air drag; the Magnus force is negligible on a pool ball):
+//     x(t) = x0 + vx t,   y(t) = y0 + vy t,   z(t) = z0 + vz t - g t^2 / 2,
+// and its spin is constant (no cloth, so no sliding, rolling or spin friction). Every coordinate is a
+// polynomial of degree two or less, so every time of impact stays a polynomial root.
+//
+// The simulator does not use this module yet: docs/airborne.md gives the plan to wire it into the
+// event loop. AirState carries exactly the two members BallState will gain (`z`, `vz`), so that
+// wiring it in turns AirState into BallState.
+
+#include "Ball.h"
+#include "Motion.h"
+#include "Types.h"
+
+namespace cuelab {
+
+// m: a height within this of the cloth counts as on it, and a ball is never evaluated below -this
+// (the flight's own closed forms keep z >= 0 to rounding; tst_airborne checks 1e-12).
+inline constexpr double kHeightTolerance = 1e-12;
+
+// A ball's state with its height. `z` is the height of the centre above its resting height R
+// (CONTRACT.md: 0 on the cloth), `vz` its vertical velocity (+ up). The inherited horizontal position,
+// velocity and spin mean what they mean on the cloth; `motion` labels the horizontal numbers only
+// (what the ball would do on the cloth), isAirborne() says whether it flies.
+struct AirState : BallState {
+    double z = 0.0;   // m, >= 0
+    double vz = 0.0;  // m/s
+};
+
+// The state `s` at height z with vertical velocity vz.
+AirState lifted(const BallState& s, double z = 0.0, double vz = 0.0);
+
+// Flying: above the cloth, or on it and leaving it (vz > 0). A ball on the cloth with vz < 0 is an
+// impact now (resolve/TableModel.h); with vz = 0 it is on the cloth.
+bool isAirborne(const AirState& s);
+
+// The path of the centre in space: c(s) = c0 + c1 s + c2 s^2, with z the height of the centre above
+// the cloth (R on the cloth, not the contract's z), so that balls of unequal radius and cushion noses
+// at their height compare directly. A flying ball has c2 = (0, 0, -g/2); a ball on the cloth has
+// its Path's c2 and a constant height R.
+struct SpacePath {
+    Vec3 c0 = Vec3::Zero();  // m
+    Vec3 c1 = Vec3::Zero();  // m/s
+    Vec3 c2 = Vec3::Zero();  // m/s^2
+    Vec3 at(double s) const { return c0 + s * (c1 + s * c2); }
+    Vec3 velocityAt(double s) const { return c1 + (2.0 * s) * c2; }
+    SpacePath shifted(double s0) const { return SpacePath{at(s0), velocityAt(s0), c2}; }
+};
+// A ball on the cloth moving along `p` (Motion.h's pathOf), its centre at height R.
+SpacePath clothPath(const Path& p, double radius);
+// A flying ball (the flight's closed form above), from its state now.
+SpacePath flightPath(const AirState& s, double radius, double gravity);
+
+// The state dt seconds later in flight (no clamping: past the landing z would be negative, so a
+// caller stops at landingTime). Horizontal motion uniform, spin constant.
+AirState fly(const AirState& s, double gravity, double dt);
+
+// Seconds from now until the ball comes down to the cloth (z = 0 with vz < 0): the positive root of
+// z + vz t - g t^2 / 2 = 0, t = (vz + sqrt(vz^2 + 2 g z)) / g, which is exactly 2 vz / g from the
+// cloth (z = 0). 0 for a ball on the cloth that is not leaving it (vz <= 0); kNever if g <= 0.
+double landingTime(const AirState& s, double gravity);
+// The vertical speed at that landing, sqrt(vz^2 + 2 g z) (m/s, >= 0).
+double landingSpeed(const AirState& s, double gravity);
+
+// Seconds until the top of the flight, vz / g (0 once the ball comes down), and the height z of
+// the top above the resting height, z + vz^2 / (2 g) (vz^2 / (2 g) from the cloth).
+double apexTime(const AirState& s, double gravity);
+double apexHeight(const AirState& s, double gravity);
+
+// Kinetic energy (translation in 3-D and rotation) plus the potential energy m g z above the resting
+// height (J): constant in flight.
+double mechanicalEnergy(const AirState& s, double radius, double mass, double gravity);
+
+}  // namespace cuelab
