@@ -94,6 +94,28 @@ std::string unicodeScript(const std::string& inner, bool super)
     return plain ? mark + inner : mark + "(" + inner + ")";
 }
 
+// The renderers' own words. (Text::tr calls stand in functions that return a Text: lupdate loses
+// their context in a function that returns a std::string.)
+enum class Word { Inputs, Results, Heading, CollisionModel, Roots, Chosen, OutsideWindow, BodiesPart, OffSegment, Later, None };
+
+Text word(Word w)
+{
+    switch (w) {
+    case Word::Inputs: return Text::tr("Inputs:");
+    case Word::Results: return Text::tr("Results:");
+    case Word::Heading: return Text::tr("%1 (event %2, t = %3 s)");
+    case Word::CollisionModel: return Text::tr("Collision model: %1");
+    case Word::Roots: return Text::tr("Roots of f(τ):");
+    case Word::Chosen: return Text::tr("chosen");
+    case Word::OutsideWindow: return Text::tr("outside the window");
+    case Word::BodiesPart: return Text::tr("the bodies part");
+    case Word::OffSegment: return Text::tr("off the segment");
+    case Word::Later: return Text::tr("later");
+    case Word::None: return Text::tr("none");
+    }
+    return {};
+}
+
 std::string unitText(const std::string& unit) { return unit.empty() ? std::string() : " " + unit; }
 
 std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language)
@@ -103,14 +125,14 @@ std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language
     if (!law.empty()) out += markupToText(law) + "\n\n";
     out += "    " + markupToText(s.formula.in(language)) + "\n\n";
     if (!s.inputs.empty()) {
-        out += Text::tr("Inputs:").in(language);
+        out += word(Word::Inputs).in(language);
         for (const Quantity& q : s.inputs)
             out += " " + markupToText(q.symbol.in(language)) + " = " + readable(q.value) + unitText(q.unit) + ";";
         out.back() = '\n';
         out += "\n";
     }
     if (!s.results.empty()) {
-        out += "**" + Text::tr("Results:").in(language) + "**";
+        out += "**" + word(Word::Results).in(language) + "**";
         for (const Quantity& q : s.results)
             out += " **" + markupToText(q.symbol.in(language)) + " = " + readable(q.value) + unitText(q.unit) + "**;";
         out.back() = '\n';
@@ -121,7 +143,7 @@ std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language
 
 std::string heading(const Explanation& e, const Text::Lookup& language)
 {
-    return Text::tr("%1 (event %2, t = %3 s)").arg(e.title).arg(eventNumber(e.event)).arg(readable(e.time)).in(language);
+    return word(Word::Heading).arg(e.title).arg(eventNumber(e.event)).arg(readable(e.time)).in(language);
 }
 
 std::string quantitiesHtml(const std::vector<Quantity>& qs, bool result, const Text::Lookup& language)
@@ -191,20 +213,20 @@ std::string markupToText(const std::string& m)
 std::string toMarkdown(const Explanation& e, const Text::Lookup& language)
 {
     std::string out = "## " + markupToText(heading(e, language)) + "\n\n";
-    if (!e.model.empty()) out += Text::tr("Collision model: %1").arg(e.model).in(language) + "\n\n";
+    if (!e.model.empty()) out += word(Word::CollisionModel).arg(e.model).in(language) + "\n\n";
     int n = 0;
     for (const Step& s : e.steps) out += stepMarkdown(s, ++n, language) + "\n";
     if (e.toi) {
-        out += Text::tr("Roots of f(τ):").in(language);
+        out += word(Word::Roots).in(language);
         for (const ToiRoot& r : e.toi->roots) {
-            const Text status = r.chosen      ? Text::tr("chosen")
-                                : !r.inWindow ? Text::tr("outside the window")
-                                : !r.closing  ? Text::tr("the bodies part")
-                                : !r.onSegment ? Text::tr("off the segment")
-                                               : Text::tr("later");
+            const Text status = r.chosen      ? word(Word::Chosen)
+                                : !r.inWindow ? word(Word::OutsideWindow)
+                                : !r.closing  ? word(Word::BodiesPart)
+                                : !r.onSegment ? word(Word::OffSegment)
+                                               : word(Word::Later);
             out += " τ = " + readable(r.tau) + " s (" + status.in(language) + ");";
         }
-        if (e.toi->roots.empty()) out += " " + Text::tr("none").in(language) + ";";
+        if (e.toi->roots.empty()) out += " " + word(Word::None).in(language) + ";";
         out.back() = '\n';
         out += "\n";
     }
@@ -224,7 +246,7 @@ std::string toHtml(const Explanation& e, const Text::Lookup& language)
     if (!e.model.empty()) {
         // The model's name in bold: its place in the sentence comes from the template.
         const std::string mark = "\x01";
-        const std::string label = escape(Text::tr("Collision model: %1").arg(mark).in(language));
+        const std::string label = escape(word(Word::CollisionModel).arg(mark).in(language));
         const std::size_t at = label.find(mark);
         const std::string model = "<b>" + escape(e.model.in(language)) + "</b>";
         out += "<p>" + (at == std::string::npos ? label + " " + model : label.substr(0, at) + model + label.substr(at + 1)) + "</p>";

@@ -1,5 +1,7 @@
 #include "AnalysisPanel.h"
 
+#include "GoalWords.h"
+
 #include "AnalysisJob.h"
 #include "OddsSection.h"
 #include "OutcomeMap.h"
@@ -157,6 +159,12 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     xKey_->setToolTip(tr("The key along the map's horizontal axis"));
     yKey_ = new QComboBox(mapBox);
     yKey_->setToolTip(tr("The key along the map's vertical axis"));
+    // The list boxes show the start of a long choice rather than widening the dock (Coach at
+    // 1280x800 keeps the table view wide).
+    for (QComboBox* box : {mode_, xKey_, yKey_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(12);
+    }
     xFrom_ = rangeBox(mapBox, tr("First value of the horizontal axis, in the key's unit"));
     xTo_ = rangeBox(mapBox, tr("Last value of the horizontal axis, in the key's unit"));
     yFrom_ = rangeBox(mapBox, tr("First value of the vertical axis, in the key's unit"));
@@ -359,12 +367,12 @@ void AnalysisPanel::runTolerance()
     const auto goal = currentGoal();
     if (!goal) return;
     const SweepSpec spec = baseSpec(*goal);
-    const QString goalWords = QString::fromStdString(describeGoal(std::get<Goal>(parseGoal(goal_->text().trimmed().toStdString()))));
+    const QString words = cuelab::goalWords(std::get<Goal>(parseGoal(goal_->text().trimmed().toStdString())));
     for (ToleranceBar* bar : bars_) bar->setPending(tr("scanning…"));
-    toleranceGoal_->setText(tr("Goal: %1").arg(goalWords));
+    toleranceGoal_->setText(tr("Goal: %1").arg(words));
     toleranceTable_->setRowCount(0);
     toleranceTable_->setVisible(false);
-    setStatus(tr("Scanning the tolerance of %1 parameters for: %2").arg(bars_.size()).arg(goalWords));
+    setStatus(tr("Scanning the tolerance of %1 parameters for: %2").arg(bars_.size()).arg(words));
     const std::vector<ToleranceBar*> bars = bars_;
     job_->start([spec, bars, this](AnalysisJob::Context& context) {
         const long long perScan = kBarPoints + 2 * 20 + 1;
@@ -457,7 +465,7 @@ void AnalysisPanel::runMap()
     map_->reset(*mapX_, *mapY_, disk);
     map_->setCurrent(mapX_->parameter.number(base.base), mapY_->parameter.number(base.base));
     setStatus(tr("Mapping %1 shots for: %2").arg(static_cast<long long>(n) * n)
-                  .arg(QString::fromStdString(describeGoal(std::get<Goal>(parseGoal(mapGoalText_.trimmed().toStdString()))))));
+                  .arg(goalWords(std::get<Goal>(parseGoal(mapGoalText_.trimmed().toStdString())))));
     const SweepSpec work = *spec;
     OutcomeMap* map = map_;
     job_->start([work, map, this](AnalysisJob::Context& context) {

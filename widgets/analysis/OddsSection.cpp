@@ -1,5 +1,7 @@
 #include "OddsSection.h"
 
+#include "i18n/DisplayNames.h"
+
 #include "AnalysisJob.h"
 #include "OddsMap.h"
 
@@ -116,6 +118,10 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     xKey_->setToolTip(tr("The key along the map's horizontal axis"));
     yKey_ = new QComboBox(this);
     yKey_->setToolTip(tr("The key along the map's vertical axis"));
+    for (QComboBox* box : {preset_, xKey_, yKey_}) {  // as AnalysisPanel's: never wider than the dock
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(12);
+    }
     const QString ends[] = {tr("First value of the horizontal axis, in the key's unit"),
                             tr("Last value of the horizontal axis, in the key's unit"),
                             tr("First value of the vertical axis, in the key's unit"),
@@ -191,7 +197,7 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     connect(map_, &OddsMap::cellClicked, this, [this](int index) { loadCell(index); });
     const auto centreRange = [this](QComboBox* key, QDoubleSpinBox* from, QDoubleSpinBox* to) {
         const Setup& s = document_->setup();
-        const auto p = Parameter::resolve(s, key->currentText().toStdString());
+        const auto p = Parameter::resolve(s, key->currentData().toString().toStdString());
         if (!std::holds_alternative<Parameter>(p)) return;
         const double v = std::get<Parameter>(p).number(s);
         from->setValue(v - std::max(0.1, std::abs(v) * 0.1));
@@ -262,15 +268,16 @@ NoiseModel OddsSection::noise() const
 void OddsSection::updateKeys()
 {
     const Setup& s = document_->setup();
-    const QString x = xKey_->currentText(), y = yKey_->currentText();
+    // Each box names its keys in words with their units (the key itself is the item's data).
+    const QString x = xKey_->currentData().toString(), y = yKey_->currentData().toString();
     xKey_->clear();
     yKey_->clear();
     for (const std::string& key : overridableKeys(s, true)) {
-        xKey_->addItem(QString::fromStdString(key));
-        yKey_->addItem(QString::fromStdString(key));
+        xKey_->addItem(displayKeyName(key), QString::fromStdString(key));
+        yKey_->addItem(displayKeyName(key), QString::fromStdString(key));
     }
     const auto choose = [](QComboBox* box, const QString& wanted, const QString& fallback) {
-        const int i = box->findText(wanted.isEmpty() ? fallback : wanted);
+        const int i = box->findData(wanted.isEmpty() ? fallback : wanted);
         box->setCurrentIndex(i >= 0 ? i : 0);
     };
     choose(xKey_, x, QStringLiteral("shot.heading"));
@@ -348,11 +355,11 @@ void OddsSection::runMap()
 {
     const auto base = baseSpec(document_->setup());
     if (!base) return;
-    const auto x = Parameter::resolve(base->base, xKey_->currentText().toStdString());
-    const auto y = Parameter::resolve(base->base, yKey_->currentText().toStdString());
+    const auto x = Parameter::resolve(base->base, xKey_->currentData().toString().toStdString());
+    const auto y = Parameter::resolve(base->base, yKey_->currentData().toString().toStdString());
     if (!std::holds_alternative<Parameter>(x) || !std::holds_alternative<Parameter>(y))
         return setStatus(tr("Choose two keys of this setup."));
-    if (xKey_->currentText() == yKey_->currentText()) return setStatus(tr("Choose two different keys."));
+    if (xKey_->currentData() == yKey_->currentData()) return setStatus(tr("Choose two different keys."));
     const int n = cells_->value();
     SweepSpec spec = mapSpec(*base, Variation{std::get<Parameter>(x), Range{range_[0]->value(), range_[1]->value(), n}},
                              Variation{std::get<Parameter>(y), Range{range_[2]->value(), range_[3]->value(), n}});
