@@ -169,16 +169,17 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     xTo_ = rangeBox(mapBox, tr("Last value of the horizontal axis, in the key's unit"));
     yFrom_ = rangeBox(mapBox, tr("First value of the vertical axis, in the key's unit"));
     yTo_ = rangeBox(mapBox, tr("Last value of the vertical axis, in the key's unit"));
-    auto* xRow = new QHBoxLayout;
-    xRow->addWidget(xKey_, 1);
-    xRow->addWidget(xFrom_);
-    xRow->addWidget(xTo_);
-    auto* yRow = new QHBoxLayout;
-    yRow->addWidget(yKey_, 1);
-    yRow->addWidget(yFrom_);
-    yRow->addWidget(yTo_);
-    mapForm->addRow(tr("x"), xRow);
-    mapForm->addRow(tr("y"), yRow);
+    // Each key above its range (as OddsSection): the dock fits a side column.
+    const auto range = [](QDoubleSpinBox* from, QDoubleSpinBox* to) {
+        auto* row = new QHBoxLayout;
+        row->addWidget(from, 1);
+        row->addWidget(to, 1);
+        return row;
+    };
+    mapForm->addRow(tr("x"), xKey_);
+    mapForm->addRow(QString(), range(xFrom_, xTo_));
+    mapForm->addRow(tr("y"), yKey_);
+    mapForm->addRow(QString(), range(yFrom_, yTo_));
     cells_ = new QSpinBox(mapBox);
     cells_->setRange(3, 301);
     cells_->setValue(41);
@@ -307,8 +308,7 @@ void AnalysisPanel::updateAxisChoices()
     for (QWidget* w : std::initializer_list<QWidget*>{xKey_, yKey_, xFrom_, xTo_, yFrom_, yTo_}) w->setEnabled(two);
     // The tip-offset disk has fixed axes: the key rows only confuse there.
     if (mapForm_) {
-        mapForm_->setRowVisible(1, two);
-        mapForm_->setRowVisible(2, two);
+        for (int row = 1; row <= 4; ++row) mapForm_->setRowVisible(row, two);  // x, its range, y, its range
     }
     const QString x = xKey_->currentData().toString(), y = yKey_->currentData().toString();
     xKey_->clear();

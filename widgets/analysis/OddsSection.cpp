@@ -165,23 +165,25 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     layout->addLayout(oddsRow);
     layout->addWidget(odds_);
     auto* form = new QFormLayout;
-    auto* xRow = new QHBoxLayout;
-    xRow->addWidget(xKey_, 1);
-    xRow->addWidget(range_[0]);
-    xRow->addWidget(range_[1]);
-    auto* yRow = new QHBoxLayout;
-    yRow->addWidget(yKey_, 1);
-    yRow->addWidget(range_[2]);
-    yRow->addWidget(range_[3]);
-    form->addRow(tr("x"), xRow);
-    form->addRow(tr("y"), yRow);
+    // Each key above its range, and the map's button under its cells: the section fits a side
+    // column (Coach at 1280x800 keeps the table view wide).
+    const auto range = [](QDoubleSpinBox* from, QDoubleSpinBox* to) {
+        auto* row = new QHBoxLayout;
+        row->addWidget(from, 1);
+        row->addWidget(to, 1);
+        return row;
+    };
+    form->addRow(tr("x"), xKey_);
+    form->addRow(QString(), range(range_[0], range_[1]));
+    form->addRow(tr("y"), yKey_);
+    form->addRow(QString(), range(range_[2], range_[3]));
     auto* cellsRow = new QHBoxLayout;
     cellsRow->addWidget(cells_);
     cellsRow->addWidget(new QLabel(tr("strikes per cell"), this));
     cellsRow->addWidget(cellSamples_);
-    cellsRow->addWidget(mapButton_);
     cellsRow->addStretch(1);
     form->addRow(tr("Cells"), cellsRow);
+    form->addRow(QString(), mapButton_);
     layout->addLayout(form);
     layout->addWidget(map_, 1);
     auto* progressRow = new QHBoxLayout;

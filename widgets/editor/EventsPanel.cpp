@@ -60,6 +60,11 @@ EventsPanel::EventsPanel(QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
+    // The filters show the start of a long choice rather than widening the side column.
+    for (QComboBox* box : {kinds_, ball_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(6);
+    }
     auto* options = new QHBoxLayout;
     options->setContentsMargins(6, 2, 6, 0);
     options->addWidget(kinds_, 2);
