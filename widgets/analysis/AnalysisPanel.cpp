@@ -98,6 +98,9 @@ QDoubleSpinBox* rangeBox(QWidget* parent, const QString& tip)
     box->setRange(-1e6, 1e6);
     box->setDecimals(4);
     box->setToolTip(tip);
+    // As wide as a value of four integer digits needs, not as the range's ends (±1000000.0000): the
+    // map's ranges then fit a side column beside each other.
+    box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-0000.0000")) + 28);
     return box;
 }
 
@@ -212,8 +215,8 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     auto* goalRow = new QHBoxLayout;
     goalRow->addWidget(new QLabel(tr("Goal"), this));
     goalRow->addWidget(goal_, 1);
-    goalRow->addWidget(goalFromShot_);
     layout->addLayout(goalRow);
+    layout->addWidget(goalFromShot_, 0, Qt::AlignRight);  // under the goal: the dock fits a narrow column
     layout->addWidget(tolerance);
     layout->addWidget(mapBox, 1);
     auto* progressRow = new QHBoxLayout;

@@ -71,6 +71,9 @@ QDoubleSpinBox* numberBox(QWidget* parent, const QString& tip, double low, doubl
     box->setRange(low, high);
     box->setDecimals(decimals);
     box->setToolTip(tip);
+    // As wide as a value of four integer digits needs, not as the range's ends (±1000000.0000): the
+    // map's ranges then fit a side column beside each other.
+    box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-0000.0000")) + 28);
     return box;
 }
 
@@ -92,7 +95,7 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
         sigma_[i] = numberBox(this, tr(s.tip), 0.0, s.maximum, s.decimals);
         sigma_[i]->setSuffix(QStringLiteral(" ") + QString::fromUtf8(sigmaUnitOf(k).data()));
         sigma_[i]->setSingleStep(std::pow(10.0, 1 - s.decimals));
-        const int row = static_cast<int>(i) / 2, column = static_cast<int>(i) % 2 * 2;
+        const int row = static_cast<int>(i), column = 0;  // one a row: the section fits a 240-pixel column
         sigmas->addWidget(new QLabel(tr(s.label), this), row, column);
         sigmas->addWidget(sigma_[i], row, column + 1);
         connect(sigma_[i], &QDoubleSpinBox::valueChanged, this, [this] {
@@ -165,6 +168,7 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     layout->addLayout(oddsRow);
     layout->addWidget(odds_);
     auto* form = new QFormLayout;
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     // Each key above its range, and the map's button under its cells: the section fits a side
     // column (Coach at 1280x800 keeps the table view wide).
     const auto range = [](QDoubleSpinBox* from, QDoubleSpinBox* to) {
@@ -177,12 +181,8 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     form->addRow(QString(), range(range_[0], range_[1]));
     form->addRow(tr("y"), yKey_);
     form->addRow(QString(), range(range_[2], range_[3]));
-    auto* cellsRow = new QHBoxLayout;
-    cellsRow->addWidget(cells_);
-    cellsRow->addWidget(new QLabel(tr("strikes per cell"), this));
-    cellsRow->addWidget(cellSamples_);
-    cellsRow->addStretch(1);
-    form->addRow(tr("Cells"), cellsRow);
+    form->addRow(tr("Cells"), cells_);
+    form->addRow(tr("strikes per cell"), cellSamples_);
     form->addRow(QString(), mapButton_);
     layout->addLayout(form);
     layout->addWidget(map_, 1);

@@ -72,9 +72,13 @@ EventsPanel::EventsPanel(QWidget* parent)
     auto* speedLabel = new QLabel(tr("v_rel"), this);
     speedLabel->setToolTip(minSpeed_->toolTip());
     speedLabel->setBuddy(minSpeed_);
-    options->addWidget(speedLabel);
-    options->addWidget(minSpeed_, 1);
+    // The speed filter on a row of its own: the panel fits a 240-pixel side column.
+    auto* speedRow = new QHBoxLayout;
+    speedRow->setContentsMargins(6, 0, 6, 0);
+    speedRow->addWidget(speedLabel);
+    speedRow->addWidget(minSpeed_, 1);
     layout->addLayout(options);
+    layout->addLayout(speedRow);
     layout->addWidget(table_);
 
     connect(kinds_, &QComboBox::currentIndexChanged, this, &EventsPanel::applyFilter);

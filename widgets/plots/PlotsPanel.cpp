@@ -62,8 +62,14 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent)
 
     view_ = new PlotsChartView(this);
     view_->setObjectName(QStringLiteral("plotsChart"));
-    view_->setMinimumSize(320, 200);
+    view_->setMinimumSize(260, 150);  // fits under the table view at 800x600
 
+    // Long choices are elided rather than widening the dock (Plots under the view at 800x600).
+    for (QComboBox* box : {plotBox_, ballsBox_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(10);
+    }
+    hint_->setWordWrap(true);  // its words wrap rather than widening the dock
     auto* controls = new QHBoxLayout;
     controls->addWidget(plotBox_);
     controls->addWidget(ballsBox_);
