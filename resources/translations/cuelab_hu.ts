@@ -1031,19 +1031,19 @@
     </message>
     <message>
         <source>do not pot %1 in the %2</source>
-        <translation>%1 ne essen ide: %2</translation>
+        <translation>%1 ne essen ebbe a lyukba: %2</translation>
     </message>
     <message>
         <source>pot %1 in the %2</source>
-        <translation>%1 ide: %2</translation>
+        <translation>%1 lyukba: %2</translation>
     </message>
     <message>
         <source>do not hit %1 first</source>
-        <translation>először ne %1 legyen eltalálva</translation>
+        <translation>az első érintés ne %1 legyen</translation>
     </message>
     <message>
         <source>hit %1 first</source>
-        <translation>először %1 legyen eltalálva</translation>
+        <translation>az első érintés: %1</translation>
     </message>
     <message>
         <source>scratch</source>

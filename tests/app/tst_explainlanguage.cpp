@@ -8,6 +8,7 @@
 
 #include "MainWindow.h"
 #include "Translations.h"
+#include "analysis/GoalWords.h"
 #include "editor/Document.h"
 #include "editor/Selection.h"
 #include "explain/ExplainExport.h"
@@ -122,6 +123,7 @@ private slots:
     void hungarianDerivationInExplainDock();
     void hungarianExport();
     void englishAsTheCommandLine();
+    void hungarianGoal();
 };
 
 // Read from the sources: a template that lupdate has not seen, or that has no Hungarian yet, fails
@@ -276,6 +278,20 @@ void TestExplainLanguage::englishAsTheCommandLine()
     const explain::Text pocket = explain::Text::tr("Ball %1 drops into %2").arg("1").arg(explain::Text::element("pocket-tr"));
     QCOMPARE(QString::fromStdString(pocket.english()), QStringLiteral("Ball 1 drops into pocket-tr"));
     QCOMPARE(translated(pocket), QStringLiteral("Ball 1 drops into top-right pocket"));
+}
+
+// The Analysis dock's goal in words: Hungarian, the pocket named in words (the command line keeps
+// describeGoal's English).
+void TestExplainLanguage::hungarianGoal()
+{
+    const auto parsed = analysis::parseGoal("pot:1@pocket-tr,no-scratch");
+    QVERIFY(std::holds_alternative<analysis::Goal>(parsed));
+    const analysis::Goal& goal = std::get<analysis::Goal>(parsed);
+    QCOMPARE(goalWords(goal), QStringLiteral("pot 1 in the top-right pocket, no scratch"));
+    QCOMPARE(installTranslations(QLocale(QStringLiteral("hu_HU"))), QStringLiteral("hu"));
+    const QString words = goalWords(goal);
+    QCOMPARE(words, QStringLiteral("1 lyukba: jobb felső lyuk, a fehér nem esik lyukba"));
+    QCOMPARE(QString::fromStdString(analysis::describeGoal(goal)), QStringLiteral("pot 1 in pocket-tr, no scratch"));
 }
 
 QTEST_MAIN(TestExplainLanguage)
