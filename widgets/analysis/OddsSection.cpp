@@ -163,9 +163,9 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     auto* oddsRow = new QHBoxLayout;
     oddsRow->addWidget(new QLabel(tr("Strikes"), this));
     oddsRow->addWidget(samples_);
-    oddsRow->addWidget(oddsButton_);
     oddsRow->addStretch(1);
     layout->addLayout(oddsRow);
+    layout->addWidget(oddsButton_, 0, Qt::AlignRight);  // under its strikes: the section fits 240 px
     layout->addWidget(odds_);
     auto* form = new QFormLayout;
     form->setRowWrapPolicy(QFormLayout::WrapLongRows);

@@ -62,22 +62,23 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent)
 
     view_ = new PlotsChartView(this);
     view_->setObjectName(QStringLiteral("plotsChart"));
-    view_->setMinimumSize(260, 150);  // fits under the table view at 800x600
+    view_->setMinimumSize(240, 150);  // fits under the table view at 800x600
 
     // Long choices are elided rather than widening the dock (Plots under the view at 800x600).
     for (QComboBox* box : {plotBox_, ballsBox_}) {
         box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-        box->setMinimumContentsLength(10);
+        box->setMinimumContentsLength(6);
     }
     hint_->setWordWrap(true);  // its words wrap rather than widening the dock
     auto* controls = new QHBoxLayout;
     controls->addWidget(plotBox_);
     controls->addWidget(ballsBox_);
     controls->addWidget(reset);
-    controls->addWidget(hint_, 1);
+    controls->addStretch(1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(controls);
+    layout->addWidget(hint_);  // under the controls: the panel fits under the view at 800x600
     layout->addWidget(view_, 1);
 
     connect(plotBox_, &QComboBox::currentIndexChanged, this,
