@@ -71,10 +71,11 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent)
     }
     hint_->setWordWrap(true);  // its words wrap rather than widening the dock
     auto* controls = new QHBoxLayout;
-    controls->addWidget(plotBox_);
-    controls->addWidget(ballsBox_);
+    // The boxes take a share of any room beyond their minimum: whole names in a wide dock.
+    controls->addWidget(plotBox_, 1);
+    controls->addWidget(ballsBox_, 1);
     controls->addWidget(reset);
-    controls->addStretch(1);
+    controls->addStretch(2);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(controls);
