@@ -22,6 +22,9 @@ namespace {
 constexpr double kMinShare = 0.08;
 constexpr double kMaxShare = 0.45;
 constexpr double kMaxBothShare = 0.70;
+// The share of the window's width the table view keeps before a side widens past its share for a
+// panel's preferred layout.
+constexpr double kViewWidthShare = 0.5;
 
 bool sharesUsable(double left, double right)
 {
@@ -215,7 +218,7 @@ QDockWidget* DockLayout::sideDock(Qt::DockWidgetArea area) const
     return widest;
 }
 
-int DockLayout::contentWidth(const QDockWidget* dock)
+int DockLayout::contentWidth(const QDockWidget* dock, bool preferred)
 {
     // Every dock's content sits in a scroll area (MainWindow::addPanel): the width its panel needs
     // is the panel's minimum, plus the vertical scroll bar and the frames around it.
@@ -224,7 +227,8 @@ int DockLayout::contentWidth(const QDockWidget* dock)
     if (!content) return 0;
     // A panel that can reflow narrower (the Shot panel stacks its tip picker) says the width it
     // prefers in the property "preferredDockWidth"; the side gets it when it has room.
-    int width = std::max(content->minimumSizeHint().width(), content->property("preferredDockWidth").toInt());
+    int width = content->minimumSizeHint().width();
+    if (preferred) width = std::max(width, content->property("preferredDockWidth").toInt());
     if (scroll) width += scroll->verticalScrollBar()->sizeHint().width() + 2 * scroll->frameWidth();
     const QMargins margins = dock->contentsMargins();
     return width + margins.left() + margins.right() + 2;
@@ -256,14 +260,25 @@ void DockLayout::applyShares(int attempts)
     if (w <= 0) return;
     QList<QDockWidget*> docks;
     QList<int> widths;
+    QList<int> preferred;
     for (const auto& [area, share] : {std::pair{Qt::LeftDockWidgetArea, left_}, std::pair{Qt::RightDockWidgetArea, right_}}) {
         if (QDockWidget* d = sideDock(area)) {
             docks << d;
-            // The share, but never narrower than the front panel's content (the Shot panel at
-            // 1280x800), as long as the side stays within kMaxShare of the window.
-            const int content = std::min(contentWidth(d), static_cast<int>(kMaxShare * w));
-            widths << std::max({kMinimumDockWidth, static_cast<int>(share * w), content});
+            // The share, but never narrower than the least the front panel can reflow to (nothing
+            // cut off), as long as the side stays within kMaxShare of the window.
+            const int least = std::min(contentWidth(d, false), static_cast<int>(kMaxShare * w));
+            widths << std::max({kMinimumDockWidth, static_cast<int>(share * w), least});
+            preferred << std::min(contentWidth(d), static_cast<int>(kMaxShare * w));
         }
+    }
+    // A panel's preferred width (the Shot panel's tip picker beside its fields) only while the table
+    // view keeps kViewWidthShare of the window's width: the table first.
+    int room = static_cast<int>((1.0 - kViewWidthShare) * w);
+    for (int width : std::as_const(widths)) room -= width;
+    for (qsizetype i = 0; i < widths.size(); ++i) {
+        const int extra = std::clamp(preferred[i] - widths[i], 0, std::max(0, room));
+        widths[i] += extra;
+        room -= extra;
     }
     if (docks.isEmpty()) return;
     applying_ = true;

@@ -65,7 +65,9 @@ private:
     void wholeTabNames();
     void recordShares();
     int sideWidth(Qt::DockWidgetArea area) const;
-    static int contentWidth(const QDockWidget* dock);  // px the dock's panel needs beside its scroll bar
+    // px the dock's panel needs beside its scroll bar: its preferred width (the Shot panel's tip
+    // picker beside its fields), or with preferred = false the least it can reflow to.
+    static int contentWidth(const QDockWidget* dock, bool preferred = true);
     QDockWidget* sideDock(Qt::DockWidgetArea area) const;
 
     static constexpr int kSettleMs = 40;  // after the last resize event, the docks take their shares

@@ -36,7 +36,7 @@ const Quantity* Step::input(const std::string& key) const
 const Step* Explanation::step(const std::string& name) const
 {
     for (const Step& s : steps)
-        if (s.title == name) return &s;
+        if (s.title.english() == name) return &s;
     return nullptr;
 }
 
@@ -173,22 +173,31 @@ void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball
     // Symbols: r_0 or r_{0,a}; r or r_a.
     auto at0 = [&](const std::string& s) { return letter.empty() ? s + "_0" : s + "_{0," + letter + "}"; };
     auto now = [&](const std::string& s) { return letter.empty() ? s : s + "_" + letter; };
-    std::string law = "Since t_{start} " + ballName(r, ball) + " has been " + std::string(toString(seg.state.motion)) +
-                      ": in closed form its centre moves on a parabola with constant acceleration ";
+    const Text who = Text(ballName(r, ball));
+    const Text state = Text::name(std::string(toString(seg.state.motion)));
+    Text law;
     switch (seg.state.motion) {
     case MotionState::Sliding:
-        law += pushed ? "q − μ_s g û: it is held in a push, and the contact force N/m = q adds to the friction "
-                        "−μ_s g û against the slip û of its cloth contact."
-                      : "−μ_s g û against the slip û of its cloth contact.";
+        law = pushed ? Text::tr("Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with "
+                                "constant acceleration q − μ_s g û: it is held in a push, and the contact force "
+                                "N/m = q adds to the friction −μ_s g û against the slip û of its cloth contact.")
+                     : Text::tr("Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with "
+                                "constant acceleration −μ_s g û against the slip û of its cloth contact.");
         break;
     case MotionState::Rolling:
-        law += pushed ? "(5/7) q − μ_r g v̂: it is held in a push, and static friction keeps it rolling under the "
-                        "contact force N/m = q (its effective mass is 7/5 m)."
-                      : "−μ_r g v̂ (rolling resistance).";
+        law = pushed ? Text::tr("Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with "
+                                "constant acceleration (5/7) q − μ_r g v̂: it is held in a push, and static friction "
+                                "keeps it rolling under the contact force N/m = q (its effective mass is 7/5 m).")
+                     : Text::tr("Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with "
+                                "constant acceleration −μ_r g v̂ (rolling resistance).");
         break;
-    default: law += "zero (it does not move)."; break;
+    default:
+        law = Text::tr("Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with constant "
+                       "acceleration zero (it does not move).");
+        break;
     }
-    StepBuilder b(steps, "Motion of " + ballName(r, ball) + " up to the event", law,
+    law.arg(who).arg(state);
+    StepBuilder b(steps, Text::tr("Motion of %1 up to the event").arg(who), law,
                   "r(τ) = r_0 + v_0 τ + ½ a τ^2,   v(τ) = v_0 + a τ,   τ = t − t_{start}");
     if (pushed) b.in("q" + key, now("q"), seg.push, "m/s²");
     b
@@ -202,11 +211,11 @@ void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball
         .out("w" + key, now("ω"), at.spin, "rad/s");
 }
 
-void addEnergyStep(Explanation& e, const std::string& where)
+void addEnergyStep(Explanation& e, const Text& where)
 {
     double before = 0.0, after = 0.0;
-    StepBuilder b(e.steps, "Kinetic energy before and after",
-                  "Translation ½ m |v|² plus rotation ½ I |ω|² (I = 2/5 m R²) of each ball. " + where,
+    StepBuilder b(e.steps, Text::tr("Kinetic energy before and after"),
+                  Text::join({Text::tr("Translation ½ m |v|² plus rotation ½ I |ω|² (I = 2/5 m R²) of each ball."), where}, " "),
                   "E = Σ (½ m |v|^2 + ½ I |ω|^2),   ΔE = E′ − E");
     for (std::size_t k = 0; k < e.bodies.size(); ++k) {
         const Body& body = e.bodies[k];
@@ -231,10 +240,10 @@ void addEnergyStep(Explanation& e, const std::string& where)
         .out("dE_percent", "ΔE/E", before > 0.0 ? 100.0 * change / before : 0.0, "%");
 }
 
-void addMomentumStep(Explanation& e, const std::string& law)
+void addMomentumStep(Explanation& e, const Text& law)
 {
     Vec2 before = Vec2::Zero(), after = Vec2::Zero();
-    StepBuilder b(e.steps, "Momentum before and after", law, "P = Σ m v,   ΔP = P′ − P");
+    StepBuilder b(e.steps, Text::tr("Momentum before and after"), law, "P = Σ m v,   ΔP = P′ − P");
     for (std::size_t k = 0; k < e.bodies.size(); ++k) {
         const Body& body = e.bodies[k];
         const std::string l = e.bodies.size() == 1 ? std::string() : std::string(1, static_cast<char>('a' + k));

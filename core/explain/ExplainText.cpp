@@ -94,41 +94,64 @@ std::string unicodeScript(const std::string& inner, bool super)
     return plain ? mark + inner : mark + "(" + inner + ")";
 }
 
+// The renderers' own words. (Text::tr calls stand in functions that return a Text: lupdate loses
+// their context in a function that returns a std::string.)
+enum class Word { Inputs, Results, Heading, CollisionModel, Roots, Chosen, OutsideWindow, BodiesPart, OffSegment, Later, None };
+
+Text word(Word w)
+{
+    switch (w) {
+    case Word::Inputs: return Text::tr("Inputs:");
+    case Word::Results: return Text::tr("Results:");
+    case Word::Heading: return Text::tr("%1 (event %2, t = %3 s)");
+    case Word::CollisionModel: return Text::tr("Collision model: %1");
+    case Word::Roots: return Text::tr("Roots of f(τ):");
+    case Word::Chosen: return Text::tr("chosen");
+    case Word::OutsideWindow: return Text::tr("outside the window");
+    case Word::BodiesPart: return Text::tr("the bodies part");
+    case Word::OffSegment: return Text::tr("off the segment");
+    case Word::Later: return Text::tr("later");
+    case Word::None: return Text::tr("none");
+    }
+    return {};
+}
+
 std::string unitText(const std::string& unit) { return unit.empty() ? std::string() : " " + unit; }
 
-std::string stepMarkdown(const Step& s, int number)
+std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language)
 {
-    std::string out = "### " + std::to_string(number) + ". " + markupToText(s.title) + "\n\n";
-    if (!s.law.empty()) out += markupToText(s.law) + "\n\n";
-    out += "    " + markupToText(s.formula) + "\n\n";
+    std::string out = "### " + std::to_string(number) + ". " + markupToText(s.title.in(language)) + "\n\n";
+    const std::string law = s.law.in(language);
+    if (!law.empty()) out += markupToText(law) + "\n\n";
+    out += "    " + markupToText(s.formula.in(language)) + "\n\n";
     if (!s.inputs.empty()) {
-        out += "Inputs:";
+        out += word(Word::Inputs).in(language);
         for (const Quantity& q : s.inputs)
-            out += " " + markupToText(q.symbol) + " = " + readable(q.value) + unitText(q.unit) + ";";
+            out += " " + markupToText(q.symbol.in(language)) + " = " + readable(q.value) + unitText(q.unit) + ";";
         out.back() = '\n';
         out += "\n";
     }
     if (!s.results.empty()) {
-        out += "**Results:**";
+        out += "**" + word(Word::Results).in(language) + "**";
         for (const Quantity& q : s.results)
-            out += " **" + markupToText(q.symbol) + " = " + readable(q.value) + unitText(q.unit) + "**;";
+            out += " **" + markupToText(q.symbol.in(language)) + " = " + readable(q.value) + unitText(q.unit) + "**;";
         out.back() = '\n';
         out += "\n";
     }
     return out;
 }
 
-std::string heading(const Explanation& e)
+std::string heading(const Explanation& e, const Text::Lookup& language)
 {
-    return e.title + " (event " + eventNumber(e.event) + ", t = " + readable(e.time) + " s)";
+    return word(Word::Heading).arg(e.title).arg(eventNumber(e.event)).arg(readable(e.time)).in(language);
 }
 
-std::string quantitiesHtml(const std::vector<Quantity>& qs, bool result)
+std::string quantitiesHtml(const std::vector<Quantity>& qs, bool result, const Text::Lookup& language)
 {
     std::string out;
     for (const Quantity& q : qs) {
         out += result ? "<tr><td style=\"background-color:#fff3c4\"><b>" : "<tr><td>";
-        out += markupToHtml(q.symbol) + " = " + escape(readable(q.value)) + (q.unit.empty() ? "" : " " + escape(q.unit));
+        out += markupToHtml(q.symbol.in(language)) + " = " + escape(readable(q.value)) + (q.unit.empty() ? "" : " " + escape(q.unit));
         out += result ? "</b></td></tr>" : "</td></tr>";
     }
     return out;
@@ -187,53 +210,64 @@ std::string markupToText(const std::string& m)
     return out;
 }
 
-std::string toMarkdown(const Explanation& e)
+std::string toMarkdown(const Explanation& e, const Text::Lookup& language)
 {
-    std::string out = "## " + markupToText(heading(e)) + "\n\n";
-    if (!e.model.empty()) out += "Collision model: " + e.model + "\n\n";
+    std::string out = "## " + markupToText(heading(e, language)) + "\n\n";
+    if (!e.model.empty()) out += word(Word::CollisionModel).arg(e.model).in(language) + "\n\n";
     int n = 0;
-    for (const Step& s : e.steps) out += stepMarkdown(s, ++n) + "\n";
+    for (const Step& s : e.steps) out += stepMarkdown(s, ++n, language) + "\n";
     if (e.toi) {
-        out += "Roots of f(τ):";
+        out += word(Word::Roots).in(language);
         for (const ToiRoot& r : e.toi->roots) {
-            out += " τ = " + readable(r.tau) + " s (";
-            out += r.chosen ? "chosen" : !r.inWindow ? "outside the window" : !r.closing ? "the bodies part" : !r.onSegment ? "off the segment" : "later";
-            out += ");";
+            const Text status = r.chosen      ? word(Word::Chosen)
+                                : !r.inWindow ? word(Word::OutsideWindow)
+                                : !r.closing  ? word(Word::BodiesPart)
+                                : !r.onSegment ? word(Word::OffSegment)
+                                               : word(Word::Later);
+            out += " τ = " + readable(r.tau) + " s (" + status.in(language) + ");";
         }
-        if (e.toi->roots.empty()) out += " none;";
+        if (e.toi->roots.empty()) out += " " + word(Word::None).in(language) + ";";
         out.back() = '\n';
         out += "\n";
     }
     return out;
 }
 
-std::string toMarkdown(const std::vector<Explanation>& all, const std::string& title)
+std::string toMarkdown(const std::vector<Explanation>& all, const std::string& title, const Text::Lookup& language)
 {
     std::string out = "# " + title + "\n\n";
-    for (const Explanation& e : all) out += toMarkdown(e) + "\n";
+    for (const Explanation& e : all) out += toMarkdown(e, language) + "\n";
     return out;
 }
 
-std::string toHtml(const Explanation& e)
+std::string toHtml(const Explanation& e, const Text::Lookup& language)
 {
-    std::string out = "<h2>" + markupToHtml(heading(e)) + "</h2>";
-    if (!e.model.empty()) out += "<p>Collision model: <b>" + escape(e.model) + "</b></p>";
+    std::string out = "<h2>" + markupToHtml(heading(e, language)) + "</h2>";
+    if (!e.model.empty()) {
+        // The model's name in bold: its place in the sentence comes from the template.
+        const std::string mark = "\x01";
+        const std::string label = escape(word(Word::CollisionModel).arg(mark).in(language));
+        const std::size_t at = label.find(mark);
+        const std::string model = "<b>" + escape(e.model.in(language)) + "</b>";
+        out += "<p>" + (at == std::string::npos ? label + " " + model : label.substr(0, at) + model + label.substr(at + 1)) + "</p>";
+    }
     int n = 0;
     for (const Step& s : e.steps) {
-        out += "<h3>" + std::to_string(++n) + ". " + markupToHtml(s.title) + "</h3>";
-        if (!s.law.empty()) out += "<p>" + markupToHtml(s.law) + "</p>";
-        out += "<p style=\"margin-left:12px\"><i>" + markupToHtml(s.formula) + "</i></p>";
+        out += "<h3>" + std::to_string(++n) + ". " + markupToHtml(s.title.in(language)) + "</h3>";
+        const std::string law = s.law.in(language);
+        if (!law.empty()) out += "<p>" + markupToHtml(law) + "</p>";
+        out += "<p style=\"margin-left:12px\"><i>" + markupToHtml(s.formula.in(language)) + "</i></p>";
         out += "<table cellspacing=\"0\" cellpadding=\"2\" style=\"margin-left:12px\">";
-        out += quantitiesHtml(s.inputs, false) + quantitiesHtml(s.results, true) + "</table>";
+        out += quantitiesHtml(s.inputs, false, language) + quantitiesHtml(s.results, true, language) + "</table>";
     }
     return out;
 }
 
-std::string toHtmlDocument(const std::vector<Explanation>& all, const std::string& title)
+std::string toHtmlDocument(const std::vector<Explanation>& all, const std::string& title, const Text::Lookup& language)
 {
     std::string out = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + escape(title) +
                       "</title></head><body style=\"font-family:sans-serif\">\n<h1>" + escape(title) + "</h1>\n";
-    for (const Explanation& e : all) out += toHtml(e) + "\n<hr>\n";
+    for (const Explanation& e : all) out += toHtml(e, language) + "\n<hr>\n";
     out += "</body></html>\n";
     return out;
 }

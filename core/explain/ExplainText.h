@@ -21,11 +21,14 @@ std::string readable(double value);
 std::string markupToHtml(const std::string& markup);
 std::string markupToText(const std::string& markup);
 
-std::string toMarkdown(const Explanation& e);
-std::string toMarkdown(const std::vector<Explanation>& all, const std::string& heading);
+// `language` gives the words of another language (Text.h); without it the text is English, as the
+// command-line tool prints it.
+std::string toMarkdown(const Explanation& e, const Text::Lookup& language = {});
+std::string toMarkdown(const std::vector<Explanation>& all, const std::string& heading, const Text::Lookup& language = {});
 
 // An HTML fragment (for a QTextBrowser), or a whole standalone document for several explanations.
-std::string toHtml(const Explanation& e);
-std::string toHtmlDocument(const std::vector<Explanation>& all, const std::string& heading);
+std::string toHtml(const Explanation& e, const Text::Lookup& language = {});
+std::string toHtmlDocument(const std::vector<Explanation>& all, const std::string& heading,
+                           const Text::Lookup& language = {});
 
 }  // namespace cuelab::explain

@@ -8,8 +8,12 @@
 // Formulas and symbols use a small markup that every renderer understands: `_{...}` a subscript,
 // `^{...}` a superscript (a single character needs no braces: `v_a`, `τ^2`); everything else is
 // plain Unicode text (Greek letters, ·, ×, √, ′).
+//
+// Every word a person reads is a Text (Text.h): an English template and its arguments, which the
+// command-line tool prints in English and the window in its own language.
 
 #include "Event.h"
+#include "Text.h"
 #include "Types.h"
 
 #include <optional>
@@ -20,15 +24,15 @@ namespace cuelab::explain {
 
 struct Quantity {
     std::string key;     // unique within its list, ASCII (a JSON key): "v_a_x", "P_n", "mu_b"
-    std::string symbol;  // markup for people: "v_{a,x}", "P_n", "μ_b"
+    Text symbol;         // markup for people: "v_{a,x}", "P_n", "μ_b" (a word, such as "steps", translated)
     double value = 0.0;
     std::string unit;    // "m/s", "N s", "" for a pure number
 };
 
 struct Step {
-    std::string title;    // "Normal impulse"
-    std::string law;      // the law in words
-    std::string formula;  // markup
+    Text title;    // "Normal impulse"
+    Text law;      // the law in words
+    Text formula;  // markup (a literal, unless it holds words)
     std::vector<Quantity> inputs;
     std::vector<Quantity> results;
 
@@ -47,14 +51,14 @@ struct ToiRoot {
 
 // f(tau) = c0 + c1 tau + ... + c4 tau^4, tau = t - t0: the gap function whose root is the contact.
 struct TimeOfImpact {
-    std::string gap;                   // markup: what f measures
+    Text gap;                          // markup: what f measures
     double t0 = 0.0;                   // s, the common start of the bodies' present closed-form paths
     std::vector<double> coefficients;  // c0, c1, ... lowest degree first, trailing zeros dropped
     double horizon = 0.0;              // s from t0: where the paths end (the next transition); may be inf
     double root = 0.0;                 // s, the chosen tau: t0 + root is the event time
     bool touching = false;             // the bodies touched at t0 and approached: contact at tau = 0
     std::vector<ToiRoot> roots;        // every real root, ascending
-    std::string why;                   // why this root, in words
+    Text why;                          // why this root, in words
 
     double at(double tau) const;       // f(tau)
     double slopeAt(double tau) const;  // f'(tau)
@@ -79,8 +83,8 @@ struct Explanation {
     int event = -1;
     EventKind kind = EventKind::CueStrike;
     double time = 0.0;              // s
-    std::string title;              // "Ball-ball collision of cue and 1 at t = 0.2926 s"
-    std::string model;              // the collision model used ("frictionless", "han2005", ...), or ""
+    Text title;                     // "Ball-ball collision of cue and 1"
+    Text model;                     // the collision model used ("frictionless", "han2005", ...), or empty
     std::vector<Step> steps;
     std::optional<TimeOfImpact> toi;
     std::vector<Body> bodies;       // the event's balls, in the event's order
@@ -91,7 +95,7 @@ struct Explanation {
     Vec2 normal = Vec2::Zero();
     Vec3 impulse = Vec3::Zero();       // N s
 
-    const Step* step(const std::string& name) const;  // by title
+    const Step* step(const std::string& name) const;  // by its English title
 };
 
 }  // namespace cuelab::explain

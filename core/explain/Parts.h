@@ -15,13 +15,13 @@ Body makeBody(const SimulationResult& r, int ball, const BallState& before, cons
 void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball, const std::string& letter,
                    const SegmentBefore& seg, double t);
 // Energy (translation, rotation) and momentum of the bodies before and after.
-void addEnergyStep(Explanation& e, const std::string& where);
-void addMomentumStep(Explanation& e, const std::string& law);
+void addEnergyStep(Explanation& e, const Text& where);
+void addMomentumStep(Explanation& e, const Text& law);
 
 // Time of impact of the event (collisions and pockets), from the simulator's gap polynomials and
 // detection functions over the bodies' present closed-form paths.
 TimeOfImpact timeOfImpact(const SimulationResult& r, int index);
-void addToiStep(Explanation& e, const std::string& law);
+void addToiStep(Explanation& e, const Text& law);
 
 void explainCueStrike(const SimulationResult& r, int index, const std::optional<CueStrike>& shot, Explanation& e);
 void explainBallBall(const SimulationResult& r, int index, Explanation& e);

@@ -10,7 +10,7 @@ namespace cuelab::explain {
 
 class StepBuilder {
 public:
-    StepBuilder(std::vector<Step>& steps, std::string title, std::string law, std::string formula)
+    StepBuilder(std::vector<Step>& steps, Text title, Text law, Text formula)
         : steps_(steps)
     {
         step_.title = std::move(title);
@@ -21,12 +21,12 @@ public:
     StepBuilder(const StepBuilder&) = delete;
     StepBuilder& operator=(const StepBuilder&) = delete;
 
-    StepBuilder& in(std::string key, std::string symbol, double value, std::string unit = {})
+    StepBuilder& in(std::string key, Text symbol, double value, std::string unit = {})
     {
         step_.inputs.push_back({std::move(key), std::move(symbol), value, std::move(unit)});
         return *this;
     }
-    StepBuilder& out(std::string key, std::string symbol, double value, std::string unit = {})
+    StepBuilder& out(std::string key, Text symbol, double value, std::string unit = {})
     {
         step_.results.push_back({std::move(key), std::move(symbol), value, std::move(unit)});
         return *this;

@@ -71,7 +71,7 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
         segment = &r.table.cushions.at(static_cast<std::size_t>(ev.cushion));
         q = cushionGap(p.a, Ra, *segment);
         chosen = cushionTime(p.a, Ra, *segment, horizon);
-        toi.gap = "f(τ) = (r(t_0+τ) − p_a)·N − R   (signed distance of the centre from the cushion line, minus R)";
+        toi.gap = Text::tr("f(τ) = (r(t_0+τ) − p_a)·N − R   (signed distance of the centre from the cushion line, minus R)");
         break;
     }
     case EventKind::BallJaw: {
@@ -141,28 +141,32 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
     toi.touching = touchingNow;
     if (touchingNow)
         toi.why = ev.kind == EventKind::BallPocket
-                      ? "The centre was already over the pocket at t_0: the ball drops at once (τ = 0)."
-                      : "The bodies were touching at t_0 (within 10^{−10} m) and approaching, or pressed "
-                        "together at rest: the contact begins at once (τ = 0).";
+                      ? Text::tr("The centre was already over the pocket at t_0: the ball drops at once (τ = 0).")
+                      : Text::tr("The bodies were touching at t_0 (within 10^{−10} m) and approaching, or pressed "
+                                 "together at rest: the contact begins at once (τ = 0).");
     else
-        toi.why = std::string("τ* is the smallest root in the prediction window 0 < τ ≤ H at which f falls "
-                              "(f′(τ) < 0: the bodies approach); a root where f rises (they part) or only "
-                              "touches zero (a graze) is passed over") +
-                  (segment ? ", and the contact point must lie between the segment's ends." : ".");
+        toi.why = segment ? Text::tr("τ* is the smallest root in the prediction window 0 < τ ≤ H at which f falls "
+                                     "(f′(τ) < 0: the bodies approach); a root where f rises (they part) or only "
+                                     "touches zero (a graze) is passed over, and the contact point must lie between "
+                                     "the segment's ends.")
+                          : Text::tr("τ* is the smallest root in the prediction window 0 < τ ≤ H at which f falls "
+                                     "(f′(τ) < 0: the bodies approach); a root where f rises (they part) or only "
+                                     "touches zero (a graze) is passed over.");
     return toi;
 }
 
-void addToiStep(Explanation& e, const std::string& law)
+void addToiStep(Explanation& e, const Text& law)
 {
     const TimeOfImpact& toi = *e.toi;
-    std::string formula = toi.gap + ",   f(τ) = ";
+    std::string formula = ",   f(τ) = ";
     for (std::size_t k = toi.coefficients.size(); k-- > 0;) {
         formula += "c_" + std::to_string(k);
         if (k >= 1) formula += " τ";
         if (k >= 2) formula += "^" + std::to_string(k);
         if (k > 0) formula += " + ";
     }
-    StepBuilder b(e.steps, "Why now: the time of impact", law + " " + toi.why, formula);
+    StepBuilder b(e.steps, Text::tr("Why now: the time of impact"), Text::join({law, toi.why}, " "),
+                  Text::join({toi.gap, formula}, ""));
     b.in("t0", "t_0", toi.t0, "s");
     const char* units[] = {"m²", "m²/s", "m²/s²", "m²/s³", "m²/s⁴"};
     const bool linear = e.kind == EventKind::BallCushion;

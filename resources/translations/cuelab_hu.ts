@@ -1038,6 +1038,78 @@
         <translation>A mantinelmodell %1 paramétere</translation>
     </message>
     <message>
+        <source>do not pot %1</source>
+        <translation>%1 ne essen lyukba</translation>
+    </message>
+    <message>
+        <source>pot %1</source>
+        <translation>%1 lyukba</translation>
+    </message>
+    <message>
+        <source>do not pot %1 in the %2</source>
+        <translation>%1 ne essen ebbe a lyukba: %2</translation>
+    </message>
+    <message>
+        <source>pot %1 in the %2</source>
+        <translation>%1 lyukba: %2</translation>
+    </message>
+    <message>
+        <source>do not hit %1 first</source>
+        <translation>az első érintés ne %1 legyen</translation>
+    </message>
+    <message>
+        <source>hit %1 first</source>
+        <translation>az első érintés: %1</translation>
+    </message>
+    <message>
+        <source>scratch</source>
+        <translation>a fehér lyukba esik</translation>
+    </message>
+    <message>
+        <source>no scratch</source>
+        <translation>a fehér nem esik lyukba</translation>
+    </message>
+    <message>
+        <source>%1 ends outside the region</source>
+        <translation>%1 a területen kívül áll meg</translation>
+    </message>
+    <message>
+        <source>%1 ends inside the region</source>
+        <translation>%1 a területen belül áll meg</translation>
+    </message>
+    <message>
+        <source>%1 does not touch at most %n cushion(s)</source>
+        <translation>%1 nem legfeljebb %n mantinelt érint</translation>
+    </message>
+    <message>
+        <source>%1 touches at most %n cushion(s)</source>
+        <translation>%1 legfeljebb %n mantinelt érint</translation>
+    </message>
+    <message>
+        <source>%1 does not touch at least %n cushion(s)</source>
+        <translation>%1 nem legalább %n mantinelt érint</translation>
+    </message>
+    <message>
+        <source>%1 touches at least %n cushion(s)</source>
+        <translation>%1 legalább %n mantinelt érint</translation>
+    </message>
+    <message>
+        <source>%1 does not touch %n cushion(s)</source>
+        <translation>%1 nem pontosan %n mantinelt érint</translation>
+    </message>
+    <message>
+        <source>%1 touches %n cushion(s)</source>
+        <translation>%1 pontosan %n mantinelt érint</translation>
+    </message>
+    <message>
+        <source>any shot</source>
+        <translation>bármilyen ütés</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
         <source>ghost ball</source>
         <translation>szellemgolyó</translation>
     </message>
@@ -1946,6 +2018,18 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>spin-to-stop</source>
         <translation>pörgésből megállás</translation>
+    </message>
+    <message>
+        <source>frictionless</source>
+        <translation>súrlódásmentes</translation>
+    </message>
+    <message>
+        <source>frictional</source>
+        <translation>súrlódásos</translation>
+    </message>
+    <message>
+        <source>mirror</source>
+        <translation>tükrözés</translation>
     </message>
 </context>
 <context>
@@ -4275,6 +4359,717 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>&amp;Contents</source>
         <translation>&amp;Tartalom</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::explain</name>
+    <message>
+        <source>Motion after</source>
+        <translation>Mozgás utána</translation>
+    </message>
+    <message>
+        <source>u′ = v′ + R (z × ω′)   (the slip at the cloth decides the state)</source>
+        <translation>u′ = v′ + R (z × ω′)   (a posztón mért csúszás dönti el az állapotot)</translation>
+    </message>
+    <message>
+        <source>%1 leaves %2</source>
+        <translation>%1 ezután: %2</translation>
+    </message>
+    <message>
+        <source>A ball whose cloth contact slips slides; one whose contact does not slip rolls. %1.</source>
+        <translation>Az a golyó, amelynek posztón fekvő érintkezési pontja csúszik, csúszik; amelyiké nem csúszik, az gördül. %1.</translation>
+    </message>
+    <message>
+        <source>The held group</source>
+        <translation>A tartósan érintkező csoport</translation>
+    </message>
+    <message>
+        <source>The pair joins the balls it is already held with: their contacts are solved together, and what relative normal speed the others have left is taken away at the same time (each ball answers with 1/m sliding, 5/7 1/m rolling). These are the states the simulation goes on from.</source>
+        <translation>A pár csatlakozik azokhoz a golyókhoz, amelyekkel már tartósan érintkezik: érintkezéseiket együtt oldjuk meg, és a többiek megmaradt relatív normális sebességét ugyanabban a lépésben elvesszük (minden golyó csúszva 1/m, gördülve 5/7 · 1/m arányban válaszol). Ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>v″ (after the group&apos;s contacts are seated)</source>
+        <translation>v″ (a csoport érintkezéseinek rendezése után)</translation>
+    </message>
+    <message>
+        <source>Ball-ball collision of %1 and %2</source>
+        <translation>Golyó–golyó ütközés: %1 és %2</translation>
+    </message>
+    <message>
+        <source>%1 (μ: Alciatore&apos;s fit)</source>
+        <translation>%1 (μ: Alciatore illesztése)</translation>
+    </message>
+    <message>
+        <source>%1 (μ fixed)</source>
+        <translation>%1 (rögzített μ)</translation>
+    </message>
+    <message>
+        <source>The balls touch when their centres are R_a + R_b apart (a = %1, b = %2). Both move on quadratic paths since t_0, so the squared distance is a quartic in τ.</source>
+        <translation>A golyók akkor érnek össze, amikor középpontjuk távolsága R_a + R_b (a = %1, b = %2). t_0 óta mindkettő másodfokú pályán mozog, ezért a távolság négyzete τ negyedfokú polinomja.</translation>
+    </message>
+    <message>
+        <source>The balls rest on the cloth with their centres at the heights R_a and R_b, so they touch when their centres are d = √((R_a + R_b)^2 − (R_a − R_b)^2) = 2 √(R_a R_b) apart horizontally (a = %1, b = %2). Both move on quadratic paths since t_0, so the squared distance is a quartic in τ.</source>
+        <translation>A golyók a posztón fekszenek, középpontjuk R_a, illetve R_b magasságban van, ezért akkor érnek össze, amikor középpontjaik vízszintes távolsága d = √((R_a + R_b)^2 − (R_a − R_b)^2) = 2 √(R_a R_b) (a = %1, b = %2). t_0 óta mindkettő másodfokú pályán mozog, ezért a távolság négyzete τ negyedfokú polinomja.</translation>
+    </message>
+    <message>
+        <source>Contact geometry</source>
+        <translation>Az érintkezés geometriája</translation>
+    </message>
+    <message>
+        <source>The normal n points from the centre of a to the centre of b; the contact point lies R_a along it. The balls approach when their relative velocity along n is positive.</source>
+        <translation>Az n normális a középpontjától b középpontja felé mutat; az érintkezési pont ezen R_a távolságra van. A golyók akkor közelednek, ha relatív sebességük n irányú összetevője pozitív.</translation>
+    </message>
+    <message>
+        <source>Contact geometry (unequal radii)</source>
+        <translation>Az érintkezés geometriája (különböző sugarak)</translation>
+    </message>
+    <message>
+        <source>The centres sit at the heights R_a and R_b, so the contact normal n₃ from the centre of a to the centre of b leaves the cloth plane: its level part is c û, with û the horizontal direction from a to b. The contact point lies R_a along n₃ (r_c is its place on the cloth plane). The balls approach when their relative velocity along n₃ is positive; it has no vertical part, since both balls stay on the cloth.</source>
+        <translation>A középpontok R_a, illetve R_b magasságban vannak, ezért az a középpontjától b középpontja felé mutató n₃ érintkezési normális kilép a posztó síkjából: vízszintes része c û, ahol û az a-tól b felé mutató vízszintes irány. Az érintkezési pont n₃ mentén R_a távolságra van (r_c ennek helye a posztó síkjában). A golyók akkor közelednek, ha relatív sebességük n₃ irányú összetevője pozitív; ennek nincs függőleges része, mert mindkét golyó a posztón marad.</translation>
+    </message>
+    <message>
+        <source>Collision law (%1)</source>
+        <translation>Ütközési törvény (%1)</translation>
+    </message>
+    <message>
+        <source>No step-by-step explanation of this model yet.</source>
+        <translation>Ehhez a modellhez még nincs lépésenkénti magyarázat.</translation>
+    </message>
+    <message>
+        <source>Held in contact (a push)</source>
+        <translation>Tartós érintkezés (tolás)</translation>
+    </message>
+    <message>
+        <source>The law above leaves the balls parting slower than %1 m/s while the cloth&apos;s friction presses them together: they would only chatter, ever more weakly, into a lasting contact. The simulator drops that micro-bounce (a normal impulse takes the separation speed away, which only removes energy) and holds the pair: from here a contact force N ≥ 0 pushes along n, solved with the cloth&apos;s friction (Contact.h).</source>
+        <translation>A fenti törvény után a golyók %1 m/s-nál lassabban távolodnak, miközben a posztó súrlódása egymáshoz nyomja őket: csak egyre gyengülő pattogással jutnának tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a párt együtt tartja: innentől egy N ≥ 0 érintkezési erő nyom n mentén, a posztó súrlódásával együtt megoldva (Contact.h).</translation>
+    </message>
+    <message>
+        <source>The collision turns some energy into sound and heat (restitution e &lt; 1, friction).</source>
+        <translation>Az ütközés az energia egy részét hanggá és hővé alakítja (ütközési szám e &lt; 1, súrlódás).</translation>
+    </message>
+    <message>
+        <source>The impulses on the two balls are equal and opposite, so their horizontal momentum is kept (up to the vertical part of a frictional impulse, taken up by the cloth).</source>
+        <translation>A két golyóra ható erőlökés egyenlő nagyságú és ellentétes irányú, ezért vízszintes lendületük összege megmarad (egy súrlódásos erőlökés függőleges részéig, amelyet a posztó vesz fel).</translation>
+    </message>
+    <message>
+        <source>Ball-jaw collision of %1 with %2</source>
+        <translation>Golyó–pofa ütközés: %1 golyó – %2</translation>
+    </message>
+    <message>
+        <source>Ball-cushion collision of %1 with %2</source>
+        <translation>Golyó–mantinel ütközés: %1 golyó – %2</translation>
+    </message>
+    <message>
+        <source>The ball touches the jaw&apos;s rounded tip (a circle of radius r_{jaw} around c) when its centre is R + r_{jaw} from c: a quartic in τ.</source>
+        <translation>A golyó akkor éri el a pofa lekerekített végét (egy r_{jaw} sugarú kört c körül), amikor középpontja R + r_{jaw} távolságra van c-től: ez τ negyedfokú polinomja.</translation>
+    </message>
+    <message>
+        <source>The ball touches the straight cushion nose when its centre is R from the nose line (normal N into the table): a quadratic in τ, whose contact point must also lie on the segment.</source>
+        <translation>A golyó akkor éri el az egyenes mantinel élét, amikor középpontja R távolságra van az él egyenesétől (N normális az asztal belseje felé): ez τ másodfokú polinomja, és az érintkezési pontnak a szakaszon is rajta kell lennie.</translation>
+    </message>
+    <message>
+        <source>Segment check</source>
+        <translation>Szakaszpróba</translation>
+    </message>
+    <message>
+        <source>The foot of the perpendicular from the centre to the nose line must lie between the segment&apos;s ends p_a and p_b (0 ≤ λ ≤ 1); otherwise the ball passes the end of this cushion (into a pocket mouth, or onto a jaw).</source>
+        <translation>A középpontból az él egyenesére bocsátott merőleges talppontjának a szakasz p_a és p_b végpontja között kell lennie (0 ≤ λ ≤ 1); különben a golyó elhalad ennek a mantinelnek a vége mellett (egy lyuk szájába vagy egy pofára).</translation>
+    </message>
+    <message>
+        <source>on segment</source>
+        <translation>a szakaszon</translation>
+    </message>
+    <message>
+        <source>The normal N points from the jaw tip&apos;s centre c to the ball&apos;s centre; the contact lies R behind the centre along −N.</source>
+        <translation>Az N normális a pofavég c középpontjától a golyó középpontja felé mutat; az érintkezés a középpont mögött R távolságra van, −N irányban.</translation>
+    </message>
+    <message>
+        <source>The normal N of the cushion points into the table; the contact lies R behind the centre along −N. The ball approaches when v·N &lt; 0.</source>
+        <translation>A mantinel N normálisa az asztal belseje felé mutat; az érintkezés a középpont mögött R távolságra van, −N irányban. A golyó akkor közeledik, ha v·N &lt; 0.</translation>
+    </message>
+    <message>
+        <source>N = (r − c)/|r − c|  (jaw),   r_c = r − R N,   v_n = −v·N</source>
+        <translation>N = (r − c)/|r − c|  (pofa),   r_c = r − R N,   v_n = −v·N</translation>
+    </message>
+    <message>
+        <source>The law above leaves the ball leaving the cushion slower than %1 m/s while the cloth&apos;s friction drives it back in: it would only chatter into a lasting contact. The simulator drops that micro-bounce (a normal impulse takes the separation speed away, which only removes energy) and holds the ball against the cushion: from here the cushion&apos;s force N ≥ 0 pushes along N (Contact.h).</source>
+        <translation>A fenti törvény után a golyó %1 m/s-nál lassabban távolodik a mantineltől, miközben a posztó súrlódása visszahajtja: csak pattogva jutna tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a golyót a mantinelhez szorítva tartja: innentől a mantinel N ≥ 0 ereje nyom N mentén (Contact.h).</translation>
+    </message>
+    <message>
+        <source>The cushion absorbs part of the energy (restitution e &lt; 1, friction at the contact).</source>
+        <translation>A mantinel az energia egy részét elnyeli (ütközési szám e &lt; 1, súrlódás az érintkezésnél).</translation>
+    </message>
+    <message>
+        <source>The cushion pushes the ball: the change of its momentum is the cushion&apos;s horizontal impulse J.</source>
+        <translation>A mantinel meglöki a golyót: lendületének megváltozása a mantinel vízszintes J erőlökése.</translation>
+    </message>
+    <message>
+        <source>Cue strike on %1</source>
+        <translation>Dákóütés: %1 golyó</translation>
+    </message>
+    <message>
+        <source>Cue strike</source>
+        <translation>Dákóütés</translation>
+    </message>
+    <message>
+        <source>The setup&apos;s shot is not known here; the event holds its result.</source>
+        <translation>A beállítás ütése itt nem ismert; az esemény az eredményét tartalmazza.</translation>
+    </message>
+    <message>
+        <source>Where the tip meets the ball</source>
+        <translation>Ahol a dákóvég a golyót éri</translation>
+    </message>
+    <message>
+        <source>The tip offsets are fractions of R: a to the player&apos;s right, b above the centre; the contact lies c behind the centre along the cue&apos;s heading d. The offsets lay beyond the ball&apos;s silhouette and were scaled onto it.</source>
+        <translation>A dákóvég eltolásai R törtrészei: a a játékos jobb keze felé, b a középpont fölé; az érintkezés a középpont mögött c távolságra van, a dákó d iránya mentén. Az eltolások a golyó körvonalán kívül estek, ezért a körvonalra lettek lekicsinyítve.</translation>
+    </message>
+    <message>
+        <source>The tip offsets are fractions of R: a to the player&apos;s right, b above the centre; the contact lies c behind the centre along the cue&apos;s heading d.</source>
+        <translation>A dákóvég eltolásai R törtrészei: a a játékos jobb keze felé, b a középpont fölé; az érintkezés a középpont mögött c távolságra van, a dákó d iránya mentén.</translation>
+    </message>
+    <message>
+        <source>Impulse of the tip (Alciatore TP A-30)</source>
+        <translation>A dákóvég erőlökése (Alciatore, TP A-30)</translation>
+    </message>
+    <message>
+        <source>The cue (mass M at speed V_0) hits the ball elastically at Q along e. Momentum and energy of cue and ball, with the ball&apos;s rotation about its centre (I = 2/5 m R²), give the impulse F. For a level cue this is v = 2 V_0 / (1 + m/M + 5 (a² + b²)/(2 R²)).</source>
+        <translation>A dákó (tömege M, sebessége V_0) rugalmasan üti meg a golyót Q-ban, e mentén. A dákó és a golyó lendülete és energiája – a golyó középpontja körüli forgásával együtt (I = 2/5 m R²) – adja az F erőlökést. Vízszintes dákóval ez v = 2 V_0 / (1 + m/M + 5 (a² + b²)/(2 R²)).</translation>
+    </message>
+    <message>
+        <source>Velocity and spin after the strike</source>
+        <translation>Sebesség és pörgés az ütés után</translation>
+    </message>
+    <message>
+        <source>The impulse F e moves the centre (its vertical part is taken up by the cloth) and its torque Q × F e about the centre spins the ball: top spin for b &gt; 0, right english (ω_z &gt; 0) for a &gt; 0. The ball leaves %1.</source>
+        <translation>Az F e erőlökés elmozdítja a középpontot (függőleges részét a posztó veszi fel), a középpontra vett Q × F e forgatónyomatéka pedig megpörgeti a golyót: b &gt; 0 esetén felső pörgés, a &gt; 0 esetén jobb oldalpörgés (ω_z &gt; 0). A golyó ezután %1.</translation>
+    </message>
+    <message>
+        <source>The cue brings ½ M V_0² = %1 J; an elastic tip keeps the total, so the cue keeps the rest.</source>
+        <translation>A dákó ½ M V_0² = %1 J energiát hoz; a rugalmas dákóvég megtartja az összeget, így a maradék a dákónál marad.</translation>
+    </message>
+    <message>
+        <source>The ball&apos;s momentum is the horizontal part of the impulse F e.</source>
+        <translation>A golyó lendülete az F e erőlökés vízszintes része.</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with constant acceleration q − μ_s g û: it is held in a push, and the contact force N/m = q adds to the friction −μ_s g û against the slip û of its cloth contact.</source>
+        <translation>t_{start} óta a(z) %1 golyó %2: zárt alakban a középpontja parabolán mozog, állandó q − μ_s g û gyorsulással: tartós érintkezésben (tolásban) van, és az N/m = q érintkezési erő hozzáadódik a posztón fekvő érintkezési pont û csúszása ellen ható −μ_s g û súrlódáshoz.</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with constant acceleration −μ_s g û against the slip û of its cloth contact.</source>
+        <translation>t_{start} óta a(z) %1 golyó %2: zárt alakban a középpontja parabolán mozog, állandó −μ_s g û gyorsulással, a posztón fekvő érintkezési pont û csúszása ellen.</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with constant acceleration (5/7) q − μ_r g v̂: it is held in a push, and static friction keeps it rolling under the contact force N/m = q (its effective mass is 7/5 m).</source>
+        <translation>t_{start} óta a(z) %1 golyó %2: zárt alakban a középpontja parabolán mozog, állandó (5/7) q − μ_r g v̂ gyorsulással: tartós érintkezésben (tolásban) van, és a tapadási súrlódás gördülésben tartja az N/m = q érintkezési erő alatt (effektív tömege 7/5 m).</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with constant acceleration −μ_r g v̂ (rolling resistance).</source>
+        <translation>t_{start} óta a(z) %1 golyó %2: zárt alakban a középpontja parabolán mozog, állandó −μ_r g v̂ gyorsulással (gördülési ellenállás).</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with constant acceleration zero (it does not move).</source>
+        <translation>t_{start} óta a(z) %1 golyó %2: zárt alakban a középpontja parabolán mozog, nulla gyorsulással (nem mozdul).</translation>
+    </message>
+    <message>
+        <source>Motion of %1 up to the event</source>
+        <translation>A(z) %1 golyó mozgása az eseményig</translation>
+    </message>
+    <message>
+        <source>Kinetic energy before and after</source>
+        <translation>Mozgási energia előtte és utána</translation>
+    </message>
+    <message>
+        <source>Translation ½ m |v|² plus rotation ½ I |ω|² (I = 2/5 m R²) of each ball.</source>
+        <translation>Minden golyóra a haladás ½ m |v|² energiája és a forgás ½ I |ω|² energiája (I = 2/5 m R²).</translation>
+    </message>
+    <message>
+        <source>Momentum before and after</source>
+        <translation>Lendület előtte és utána</translation>
+    </message>
+    <message>
+        <source>Inputs:</source>
+        <translation>Bemenetek:</translation>
+    </message>
+    <message>
+        <source>Results:</source>
+        <translation>Eredmények:</translation>
+    </message>
+    <message>
+        <source>%1 (event %2, t = %3 s)</source>
+        <translation>%1 (esemény: %2, t = %3 s)</translation>
+    </message>
+    <message>
+        <source>Collision model: %1</source>
+        <translation>Ütközési modell: %1</translation>
+    </message>
+    <message>
+        <source>Roots of f(τ):</source>
+        <translation>f(τ) gyökei:</translation>
+    </message>
+    <message>
+        <source>chosen</source>
+        <translation>ez a választott</translation>
+    </message>
+    <message>
+        <source>outside the window</source>
+        <translation>az ablakon kívül</translation>
+    </message>
+    <message>
+        <source>the bodies part</source>
+        <translation>a testek távolodnak</translation>
+    </message>
+    <message>
+        <source>off the segment</source>
+        <translation>a szakaszon kívül</translation>
+    </message>
+    <message>
+        <source>later</source>
+        <translation>későbbi</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nincs</translation>
+    </message>
+    <message>
+        <source>Ball %1 drops into %2</source>
+        <translation>Lyukba esés: %1 golyó – %2</translation>
+    </message>
+    <message>
+        <source>The ball drops when its centre enters the pocket circle (centre c, radius r_{pocket}): a quartic in τ.</source>
+        <translation>A golyó akkor esik be, amikor középpontja belép a lyuk körébe (középpontja c, sugara r_{pocket}): ez τ negyedfokú polinomja.</translation>
+    </message>
+    <message>
+        <source>Off the table</source>
+        <translation>Le az asztalról</translation>
+    </message>
+    <message>
+        <source>The ball leaves the table; it is kept at the pocket&apos;s centre with no motion and no energy.</source>
+        <translation>A golyó elhagyja az asztalt; a lyuk középpontjában marad, mozgás és energia nélkül.</translation>
+    </message>
+    <message>
+        <source>The pocket takes all of the ball&apos;s kinetic energy.</source>
+        <translation>A lyuk elnyeli a golyó teljes mozgási energiáját.</translation>
+    </message>
+    <message>
+        <source>f(τ) = (r(t_0+τ) − p_a)·N − R   (signed distance of the centre from the cushion line, minus R)</source>
+        <translation>f(τ) = (r(t_0+τ) − p_a)·N − R   (a középpont előjeles távolsága a mantinel egyenesétől, mínusz R)</translation>
+    </message>
+    <message>
+        <source>The centre was already over the pocket at t_0: the ball drops at once (τ = 0).</source>
+        <translation>A középpont t_0-kor már a lyuk fölött volt: a golyó azonnal beesik (τ = 0).</translation>
+    </message>
+    <message>
+        <source>The bodies were touching at t_0 (within 10^{−10} m) and approaching, or pressed together at rest: the contact begins at once (τ = 0).</source>
+        <translation>A testek t_0-kor már érintkeztek (10^{−10} m-en belül) és közeledtek, vagy nyugalomban egymásnak nyomódtak: az érintkezés azonnal kezdődik (τ = 0).</translation>
+    </message>
+    <message>
+        <source>τ* is the smallest root in the prediction window 0 &lt; τ ≤ H at which f falls (f′(τ) &lt; 0: the bodies approach); a root where f rises (they part) or only touches zero (a graze) is passed over, and the contact point must lie between the segment&apos;s ends.</source>
+        <translation>τ* a 0 &lt; τ ≤ H előrejelzési ablak legkisebb olyan gyöke, ahol f csökken (f′(τ) &lt; 0: a testek közelednek); azt a gyököt, ahol f nő (a testek távolodnak), vagy ahol csak érinti a nullát (súrolás), átugorjuk, és az érintkezési pontnak a szakasz végpontjai között kell lennie.</translation>
+    </message>
+    <message>
+        <source>τ* is the smallest root in the prediction window 0 &lt; τ ≤ H at which f falls (f′(τ) &lt; 0: the bodies approach); a root where f rises (they part) or only touches zero (a graze) is passed over.</source>
+        <translation>τ* a 0 &lt; τ ≤ H előrejelzési ablak legkisebb olyan gyöke, ahol f csökken (f′(τ) &lt; 0: a testek közelednek); azt a gyököt, ahol f nő (a testek távolodnak), vagy ahol csak érinti a nullát (súrolás), átugorjuk.</translation>
+    </message>
+    <message>
+        <source>Why now: the time of impact</source>
+        <translation>Miért éppen most: az ütközés időpontja</translation>
+    </message>
+    <message>
+        <source>Transition %1 of %2</source>
+        <translation>Mozgásváltás (%1): %2 golyó</translation>
+    </message>
+    <message>
+        <source>Why now: the pushed slide ends</source>
+        <translation>Miért éppen most: véget ér a tolt csúszás</translation>
+    </message>
+    <message>
+        <source>The ball is held in a push (Contact.h): besides the cloth&apos;s friction −μ_s g û a contact force q = N/m acts through its centre, so its slip changes at q − (7/2) μ_s g û and its component along û reaches zero after t_s.</source>
+        <translation>A golyó tartós érintkezésben (tolásban) van (Contact.h): a posztó −μ_s g û súrlódása mellett egy q = N/m érintkezési erő is hat a középpontján át, így csúszása q − (7/2) μ_s g û ütemben változik, û irányú összetevője pedig t_s idő alatt nullára csökken.</translation>
+    </message>
+    <message>
+        <source>Why now: the pushed ball stops rolling</source>
+        <translation>Miért éppen most: a tolt golyó gördülése megáll</translation>
+    </message>
+    <message>
+        <source>The ball is held in a push (Contact.h) and rolls under the contact force q = N/m with the effective mass 7/5 m: its speed changes at (5/7) q·v̂ − μ_r g and reaches zero after t_r.</source>
+        <translation>A golyó tartós érintkezésben (tolásban) van (Contact.h), és a q = N/m érintkezési erő alatt 7/5 m effektív tömeggel gördül: sebessége (5/7) q·v̂ − μ_r g ütemben változik, és t_r idő alatt nullára csökken.</translation>
+    </message>
+    <message>
+        <source>Why now: the end of the slide</source>
+        <translation>Miért éppen most: véget ér a csúszás</translation>
+    </message>
+    <message>
+        <source>Cloth friction −μ_s m g û slows the slip u = v + R (z × ω) of the contact point: it changes v by −μ_s g û and R (z × ω) by −(5/2) μ_s g û, so u falls at (7/2) μ_s g along a fixed direction and reaches zero after t_s.</source>
+        <translation>A posztó −μ_s m g û súrlódása lassítja az érintkezési pont u = v + R (z × ω) csúszását: v-t −μ_s g û, R (z × ω)-t −(5/2) μ_s g û ütemben változtatja, így u állandó irányban (7/2) μ_s g ütemben csökken, és t_s idő alatt nullára ér.</translation>
+    </message>
+    <message>
+        <source>Natural roll</source>
+        <translation>Természetes gördülés</translation>
+    </message>
+    <message>
+        <source>The slide ends at rest</source>
+        <translation>A csúszás nyugalomban ér véget</translation>
+    </message>
+    <message>
+        <source>When the slip stops the ball rolls at v = (5/7) v_0 + (2/7) R (ω_0 × z), whatever μ_s is.</source>
+        <translation>Amikor a csúszás megszűnik, a golyó v = (5/7) v_0 + (2/7) R (ω_0 × z) sebességgel gördül, bármekkora is μ_s.</translation>
+    </message>
+    <message>
+        <source>The slide ends with the velocity at zero (draw or stun used the speed up exactly); what spin about z is left keeps decaying.</source>
+        <translation>A csúszás nulla sebességgel ér véget (a húzás vagy a stop pontosan felemésztette a sebességet); a megmaradt z körüli pörgés tovább csillapodik.</translation>
+    </message>
+    <message>
+        <source>Why now: the ball stops rolling</source>
+        <translation>Miért éppen most: a golyó gördülése megáll</translation>
+    </message>
+    <message>
+        <source>Rolling resistance slows a rolling ball at μ_r g; it stops after t_r (having covered |v_0|²/(2 μ_r g)).</source>
+        <translation>A gördülési ellenállás μ_r g ütemben lassítja a gördülő golyót; t_r idő alatt áll meg (addig |v_0|²/(2 μ_r g) utat tesz meg).</translation>
+    </message>
+    <message>
+        <source>Why now: the spin about z dies</source>
+        <translation>Miért éppen most: elhal a z körüli pörgés</translation>
+    </message>
+    <message>
+        <source>Spin friction decelerates the spin about the vertical at α = 5 μ_{sp} g / (2R) in every state; a spinning ball stops when ω_z reaches zero.</source>
+        <translation>A pörgési súrlódás minden állapotban α = 5 μ_{sp} g / (2R) szöggyorsulással lassítja a függőleges tengely körüli pörgést; a helyben pörgő golyó megáll, amikor ω_z nullára ér.</translation>
+    </message>
+    <message>
+        <source>State at the transition</source>
+        <translation>Állapot a mozgásváltáskor</translation>
+    </message>
+    <message>
+        <source>The closed-form motion evolved to the transition, its numbers made exact (a rolling ball&apos;s spin follows its velocity; a stopped ball has v = 0). The ball is now %1.</source>
+        <translation>A zárt alakú mozgás a mozgásváltásig léptetve, számai pontosra igazítva (a gördülő golyó pörgése követi a sebességét; a megállt golyóra v = 0). A golyó most %1.</translation>
+    </message>
+    <message>
+        <source>r(t), v(t), ω(t) from the segment&apos;s closed form</source>
+        <translation>r(t), v(t), ω(t) a szakasz zárt alakjából</translation>
+    </message>
+    <message>
+        <source>The held group is solved again</source>
+        <translation>A tartósan érintkező csoportot újra megoldjuk</translation>
+    </message>
+    <message>
+        <source>A ball of a held push changed its motion, so the contact forces of its group are solved again (and what relative normal speed the contacts have left is taken away).</source>
+        <translation>Egy tartósan érintkező golyó mozgása megváltozott, ezért csoportja érintkezési erőit újra megoldjuk (és az érintkezések megmaradt relatív normális sebességét elvesszük).</translation>
+    </message>
+    <message>
+        <source>v″, ω″ after the group&apos;s contacts are seated</source>
+        <translation>v″, ω″ a csoport érintkezéseinek rendezése után</translation>
+    </message>
+    <message>
+        <source>Energy is continuous at a transition; since t_{start} friction has taken %1 J.</source>
+        <translation>Mozgásváltáskor az energia folytonos; t_{start} óta a súrlódás %1 J energiát vont el.</translation>
+    </message>
+    <message>
+        <source>Normal impulse (with restitution)</source>
+        <translation>Normális irányú erőlökés (ütközési számmal)</translation>
+    </message>
+    <message>
+        <source>Along the line of centres the balls part at e times their approach speed.</source>
+        <translation>A centrálegyenes mentén a golyók a közeledési sebességük e-szeresével távolodnak.</translation>
+    </message>
+    <message>
+        <source>Normal impulse (with restitution, balls held on the cloth)</source>
+        <translation>Normális irányú erőlökés (ütközési számmal, a posztón tartott golyókkal)</translation>
+    </message>
+    <message>
+        <source>Along the tilted normal n₃ the balls part at e times their approach speed. Both stay on the cloth, which takes the vertical part of the impulse, so P_n lowers the approach speed by c^2 (1/m_a + 1/m_b) P_n.</source>
+        <translation>A ferde n₃ normális mentén a golyók a közeledési sebességük e-szeresével távolodnak. Mindkettő a posztón marad, amely felveszi az erőlökés függőleges részét, így P_n a közeledési sebességet c^2 (1/m_a + 1/m_b) P_n-nel csökkenti.</translation>
+    </message>
+    <message>
+        <source>Slip of the contact points</source>
+        <translation>Az érintkezési pontok csúszása</translation>
+    </message>
+    <message>
+        <source>The surfaces at the contact move at v + ω × (±R n); their relative velocity across n is the slip that friction between the balls opposes (it throws the object ball off the line of centres).</source>
+        <translation>Az érintkezésnél a felületek v + ω × (±R n) sebességgel mozognak; n-re merőleges relatív sebességük az a csúszás, amely ellen a golyók közti súrlódás hat (ez téríti el a célgolyót a centrálegyenestől).</translation>
+    </message>
+    <message>
+        <source>The surfaces at the contact move at v + ω × (±R n₃); their relative velocity across n₃ is the slip that friction between the balls opposes. With the tilted normal the normal impulse itself changes that slip, so it is taken with the velocities v after the normal impulse (v = v_a − (P_n/m_a) c û, v_b + (P_n/m_b) c û).</source>
+        <translation>Az érintkezésnél a felületek v + ω × (±R n₃) sebességgel mozognak; n₃-ra merőleges relatív sebességük az a csúszás, amely ellen a golyók közti súrlódás hat. Ferde normálisnál maga a normális irányú erőlökés is megváltoztatja ezt a csúszást, ezért a normális erőlökés utáni v sebességekkel számolunk (v = v_a − (P_n/m_a) c û, v_b + (P_n/m_b) c û).</translation>
+    </message>
+    <message>
+        <source>s = (v_a + ω_a × R_a n) − (v_b − ω_b × R_b n),   tangential part</source>
+        <translation>s = (v_a + ω_a × R_a n) − (v_b − ω_b × R_b n),   érintőleges rész</translation>
+    </message>
+    <message>
+        <source>s = (v + ω_a × R_a n₃)_a − (v − ω_b × R_b n₃)_b,   tangential part (across n₃)</source>
+        <translation>s = (v + ω_a × R_a n₃)_a − (v − ω_b × R_b n₃)_b,   érintőleges rész (n₃-ra merőlegesen)</translation>
+    </message>
+    <message>
+        <source>Friction coefficient (Alciatore&apos;s fit, TP A-14)</source>
+        <translation>Súrlódási együttható (Alciatore illesztése, TP A-14)</translation>
+    </message>
+    <message>
+        <source>Ball-ball friction falls with the sliding speed at the contact.</source>
+        <translation>A golyók közti súrlódás az érintkezésnél mért csúszási sebességgel csökken.</translation>
+    </message>
+    <message>
+        <source>Friction coefficient (fixed)</source>
+        <translation>Súrlódási együttható (rögzített)</translation>
+    </message>
+    <message>
+        <source>The setup gives a fixed ball-ball friction.</source>
+        <translation>A beállítás rögzített golyó–golyó súrlódást ad meg.</translation>
+    </message>
+    <message>
+        <source>Coulomb limit reached: the balls keep slipping</source>
+        <translation>Elérte a Coulomb-határt: a golyók tovább csúsznak</translation>
+    </message>
+    <message>
+        <source>Slip stopped: below the Coulomb limit</source>
+        <translation>A csúszás megállt: a Coulomb-határ alatt</translation>
+    </message>
+    <message>
+        <source>Friction gives at most μ_b P_n (Coulomb), and never more than the impulse that stops the slip, |s| / (7/2 (1/m_a + 1/m_b)) for solid spheres (effective mass m/7 for equal balls). The smaller of the two acts, against the slip.</source>
+        <translation>A súrlódás legfeljebb μ_b P_n erőlökést ad (Coulomb), és sosem többet annál, amely megállítja a csúszást: tömör gömbökre |s| / (7/2 (1/m_a + 1/m_b)) (egyenlő golyókra m/7 effektív tömeg). A kettő közül a kisebbik hat, a csúszással szemben.</translation>
+    </message>
+    <message>
+        <source>limited</source>
+        <translation>korlátozott</translation>
+    </message>
+    <message>
+        <source>Velocities and spins after</source>
+        <translation>Sebességek és pörgések utána</translation>
+    </message>
+    <message>
+        <source>Both impulses change the velocities; the tangential one also turns the spins by its torque (R n) × J_t over I = 2/5 m R² (its vertical part is taken up by the cloth).</source>
+        <translation>Mindkét erőlökés megváltoztatja a sebességeket; az érintőleges a forgatónyomatékával, (R n) × J_t osztva I = 2/5 m R²-tel, a pörgéseket is elfordítja (függőleges részét a posztó veszi fel).</translation>
+    </message>
+    <message>
+        <source>Normal impulse (frictionless, with restitution)</source>
+        <translation>Normális irányú erőlökés (súrlódásmentes, ütközési számmal)</translation>
+    </message>
+    <message>
+        <source>The balls push on each other only along the line of centres n. Newton&apos;s restitution law makes them part at e times the speed at which they approached; with momentum kept this fixes the impulse. For equal masses it is Δ = (1+e)/2 (v_{rel}·n) n on each velocity.</source>
+        <translation>A golyók csak az n centrálegyenes mentén nyomják egymást. Newton ütközési törvénye szerint a közeledési sebességük e-szeresével válnak szét; a lendület megmaradásával ez meghatározza az erőlökést. Egyenlő tömegekre ez minden sebességen Δ = (1+e)/2 (v_{rel}·n) n.</translation>
+    </message>
+    <message>
+        <source>Velocities after</source>
+        <translation>Sebességek utána</translation>
+    </message>
+    <message>
+        <source>The impulse −P_n n acts on %1 (a) and +P_n n on %2 (b); without friction there is no torque about the centres, so the spins stay as they were.</source>
+        <translation>A −P_n n erőlökés a(z) %1 golyóra (a), a +P_n n a(z) %2 golyóra (b) hat; súrlódás nélkül nincs forgatónyomaték a középpontokra, így a pörgések nem változnak.</translation>
+    </message>
+    <message>
+        <source>Normal impulse (frictionless, with restitution, balls held on the cloth)</source>
+        <translation>Normális irányú erőlökés (súrlódásmentes, ütközési számmal, a posztón tartott golyókkal)</translation>
+    </message>
+    <message>
+        <source>The balls push on each other only along the tilted normal n₃. They stay on the cloth, which takes the vertical part of the impulse, so an impulse P_n moves only the horizontal velocities, by P_n c û / m, and lowers the approach speed along n₃ by c^2 (1/m_a + 1/m_b) P_n. Newton&apos;s restitution law (they part along n₃ at e times the approach speed) fixes P_n; its horizontal part P_n c is the impulse of a level collision along û.</source>
+        <translation>A golyók csak a ferde n₃ normális mentén nyomják egymást. A posztón maradnak, amely felveszi az erőlökés függőleges részét, így egy P_n erőlökés csak a vízszintes sebességeket változtatja, P_n c û / m-mel, és az n₃ menti közeledési sebességet c^2 (1/m_a + 1/m_b) P_n-nel csökkenti. Newton ütközési törvénye (n₃ mentén a közeledési sebesség e-szeresével válnak szét) meghatározza P_n-t; vízszintes része, P_n c, egy û menti vízszintes ütközés erőlökése.</translation>
+    </message>
+    <message>
+        <source>The impulse −P_n n₃ acts on %1 (a) and +P_n n₃ on %2 (b); the cloth takes their vertical parts. Without friction there is no torque about the centres (n₃ passes through both), so the spins stay as they were.</source>
+        <translation>A −P_n n₃ erőlökés a(z) %1 golyóra (a), a +P_n n₃ a(z) %2 golyóra (b) hat; függőleges részüket a posztó veszi fel. Súrlódás nélkül nincs forgatónyomaték a középpontokra (n₃ mindkettőn átmegy), így a pörgések nem változnak.</translation>
+    </message>
+    <message>
+        <source>Contact above the equator</source>
+        <translation>Érintkezés az egyenlítő fölött</translation>
+    </message>
+    <message>
+        <source>The cushion&apos;s nose is higher than the ball&apos;s centre, so it touches the ball at θ_a above the equator and pushes it down into the cloth as well as back.</source>
+        <translation>A mantinel éle magasabban van a golyó középpontjánál, ezért θ_a szöggel az egyenlítő fölött éri a golyót, és nemcsak visszalöki, hanem a posztóba is nyomja.</translation>
+    </message>
+    <message>
+        <source>Rail frame</source>
+        <translation>A mantinel koordináta-rendszere</translation>
+    </message>
+    <message>
+        <source>x points into the rail (−N), y = z × x along it, z up: the velocity and spin in that frame.</source>
+        <translation>x a mantinelbe mutat (−N), y = z × x mentén fut, z felfelé mutat: a sebesség és a pörgés ebben a rendszerben.</translation>
+    </message>
+    <message>
+        <source>Slip at the contact and approach</source>
+        <translation>Csúszás az érintkezésnél és közeledés</translation>
+    </message>
+    <message>
+        <source>How fast the ball&apos;s surface slides over the cushion at the contact point, and how fast it approaches along the contact normal.</source>
+        <translation>Milyen gyorsan csúszik a golyó felülete a mantinelen az érintkezési pontban, és milyen gyorsan közeledik az érintkezési normális mentén.</translation>
+    </message>
+    <message>
+        <source>Normal impulse PzE and stopping impulse PzS</source>
+        <translation>A PzE normális és a PzS megállító erőlökés</translation>
+    </message>
+    <message>
+        <source>Compression and restitution give the normal impulse PzE; PzS is the tangential impulse that would stop the slip (A = 7/(2m), B = 1/m).</source>
+        <translation>Az összenyomódás és a visszarugózás adja a PzE normális erőlökést; PzS az az érintőleges erőlökés, amely megállítaná a csúszást (A = 7/(2m), B = 1/m).</translation>
+    </message>
+    <message>
+        <source>Sticking: friction stops the slip</source>
+        <translation>Tapadás: a súrlódás megállítja a csúszást</translation>
+    </message>
+    <message>
+        <source>Sliding: friction at its Coulomb limit</source>
+        <translation>Csúszás: a súrlódás a Coulomb-határán</translation>
+    </message>
+    <message>
+        <source>P_{zS} ≤ μ P_{zE}: friction is strong enough to stop the slip, so the tangential impulse is exactly what stops it.</source>
+        <translation>P_{zS} ≤ μ P_{zE}: a súrlódás elég erős a csúszás megállításához, így az érintőleges erőlökés pontosan annyi, amennyi megállítja.</translation>
+    </message>
+    <message>
+        <source>P_{zS} &gt; μ P_{zE}: friction cannot stop the slip; it acts at its limit μ P_{zE} against the slip direction.</source>
+        <translation>P_{zS} &gt; μ P_{zE}: a súrlódás nem tudja megállítani a csúszást; μ P_{zE} határértékén hat, a csúszás irányával szemben.</translation>
+    </message>
+    <message>
+        <source>sticking</source>
+        <translation>tapad</translation>
+    </message>
+    <message>
+        <source>Impulse in the rail frame</source>
+        <translation>Erőlökés a mantinel koordináta-rendszerében</translation>
+    </message>
+    <message>
+        <source>The contact-frame impulse turned back by θ_a into the rail frame.</source>
+        <translation>Az érintkezési rendszerbeli erőlökés θ_a szöggel visszaforgatva a mantinel rendszerébe.</translation>
+    </message>
+    <message>
+        <source>Velocity and spin after</source>
+        <translation>Sebesség és pörgés utána</translation>
+    </message>
+    <message>
+        <source>Impulse over mass changes the velocity, its torque about the centre over I = 2/5 m R² the spin; back in the table frame. The ball leaves sliding.</source>
+        <translation>Az erőlökés osztva a tömeggel megváltoztatja a sebességet, középpontra vett forgatónyomatéka osztva I = 2/5 m R²-tel a pörgést; vissza az asztal rendszerébe. A golyó csúszva távozik.</translation>
+    </message>
+    <message>
+        <source>Two contacts: the cushion nose and the cloth</source>
+        <translation>Két érintkezés: a mantinel éle és a posztó</translation>
+    </message>
+    <message>
+        <source>The nose touches the ball at θ above the equator (I, its force along n_I towards the centre); the cloth holds the ball from below (C). Both rub during the impact: μ_w at the cushion, the cloth&apos;s μ_s under the ball.</source>
+        <translation>Az él θ szöggel az egyenlítő fölött éri a golyót (I, ereje n_I mentén a középpont felé mutat); a posztó alulról tartja a golyót (C). Az ütközés alatt mindkettő súrlódik: a mantinelnél μ_w, a golyó alatt a posztó μ_s együtthatójával.</translation>
+    </message>
+    <message>
+        <source>The impulse steps</source>
+        <translation>Az erőlökés lépései</translation>
+    </message>
+    <message>
+        <source>The normal impulse P at I is the clock of the impact. The paper integrates in equal steps dP: the expected total (1 + e) m v_n / cos θ split into N steps (the setup&apos;s `steps`).</source>
+        <translation>Az ütközés óramutatója az I-ben ható P normális erőlökés. A cikk egyenlő dP lépésekben integrál: a várható (1 + e) m v_n / cos θ összeget N lépésre osztja (a beállítás `steps` értéke).</translation>
+    </message>
+    <message>
+        <source>No approach</source>
+        <translation>Nincs közeledés</translation>
+    </message>
+    <message>
+        <source>The contact point does not move into the cushion: no impulse.</source>
+        <translation>Az érintkezési pont nem mozdul a mantinel felé: nincs erőlökés.</translation>
+    </message>
+    <message>
+        <source>Slip at both contacts before</source>
+        <translation>Csúszás mindkét érintkezésnél előtte</translation>
+    </message>
+    <message>
+        <source>How fast the ball&apos;s surface slides over the cushion at I and over the cloth at C. In every step friction acts against each slip, at its Coulomb limit (μ_w dP at I; μ_s times the cloth&apos;s normal impulse at C), or less if that would more than stop the slip (a friction impulse f changes its contact&apos;s slip by 7f/(2m)).</source>
+        <translation>Milyen gyorsan csúszik a golyó felülete a mantinelen I-ben és a posztón C-ben. Minden lépésben a súrlódás mindkét csúszással szemben hat, a Coulomb-határán (I-ben μ_w dP; C-ben μ_s szorozva a posztó normális erőlökésével), vagy kevesebbel, ha az többet tenne, mint megállítani a csúszást (egy f súrlódási erőlökés 7f/(2m)-mel változtatja érintkezése csúszását).</translation>
+    </message>
+    <message>
+        <source>Compression: until I stops approaching</source>
+        <translation>Összenyomódás: amíg I már nem közeledik</translation>
+    </message>
+    <message>
+        <source>Step by step, each step&apos;s friction directions those at its start, until ż_I reaches 0; the last step is cut where it does (ż_I is linear in dP within a step). W_c is the work of the normal force so far (trapezoidal, exact on a linear ż_I).</source>
+        <translation>Lépésről lépésre, minden lépés súrlódási irányai a lépés elejéről valók, amíg ż_I el nem éri a 0-t; az utolsó lépést ott vágjuk el, ahol ez bekövetkezik (ż_I egy lépésen belül dP lineáris függvénye). W_c a normális erő eddigi munkája (trapézszabállyal, lineáris ż_I-re pontos).</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>lépés</translation>
+    </message>
+    <message>
+        <source>I at μ_w</source>
+        <translation>I a μ_w határon</translation>
+    </message>
+    <message>
+        <source>I stopped</source>
+        <translation>I megállt</translation>
+    </message>
+    <message>
+        <source>C at μ_s</source>
+        <translation>C a μ_s határon</translation>
+    </message>
+    <message>
+        <source>C stopped</source>
+        <translation>C megállt</translation>
+    </message>
+    <message>
+        <source>Restitution: until e² of the work comes back</source>
+        <translation>Visszarugózás: amíg a munka e²-szerese vissza nem tér</translation>
+    </message>
+    <message>
+        <source>The same steps go on while the ball leaves the cushion, until the work the normal force returns is e² W_c (the energetic coefficient); the last step is cut where it is (the returned work is quadratic in dP within a step).</source>
+        <translation>Ugyanezek a lépések folytatódnak, amíg a golyó elhagyja a mantinelt, egészen addig, amíg a normális erő által visszaadott munka e² W_c nem lesz (energetikai ütközési szám); az utolsó lépést ott vágjuk el, ahol ez bekövetkezik (a visszaadott munka egy lépésen belül dP másodfokú függvénye).</translation>
+    </message>
+    <message>
+        <source>The integration&apos;s step cap was reached with the ball still pressing in: its normal velocity into the cushion is taken away (which only removes energy).</source>
+        <translation>Az integrálás elérte a lépésszám felső korlátját, miközben a golyó még nyomta a mantinelt: a mantinel felé mutató normális sebességét elvesszük (ami csak energiát von el).</translation>
+    </message>
+    <message>
+        <source>The sum of the steps&apos; impulses at I, with the cloth&apos;s, changed the velocity and the spin; the vertical part went into the cloth. The ball leaves as its slip says.</source>
+        <translation>Az I-beli lépések erőlökéseinek összege, a posztóéval együtt, megváltoztatta a sebességet és a pörgést; a függőleges rész a posztóba ment. A golyó a csúszása szerinti állapotban távozik.</translation>
+    </message>
+    <message>
+        <source>Mirror reflection with restitution</source>
+        <translation>Tükrözés ütközési számmal</translation>
+    </message>
+    <message>
+        <source>The normal component of the velocity is reversed and scaled by e; the component along the cushion and the spins are kept (angles from the normal obey tan(out) = tan(in)/e).</source>
+        <translation>A sebesség normális összetevője megfordul, és e-szeresére csökken; a mantinel menti összetevő és a pörgések megmaradnak (a normálistól mért szögekre tan(ki) = tan(be)/e).</translation>
+    </message>
+    <message>
+        <source>Contact at the equator</source>
+        <translation>Érintkezés az egyenlítőn</translation>
+    </message>
+    <message>
+        <source>As in pooltool, the ball meets the cushion at its equator, along the cushion&apos;s normal N. The velocity of the contact point splits into its approach v_n (&lt; 0 approaching) and its slip v_t.</source>
+        <translation>A pooltoolhoz hasonlóan a golyó az egyenlítőjén, a mantinel N normálisa mentén éri a mantinelt. Az érintkezési pont sebessége v_n közeledésre (&lt; 0, ha közeledik) és v_t csúszásra bomlik.</translation>
+    </message>
+    <message>
+        <source>Normal and tangential springs</source>
+        <translation>Normális és érintőleges rugó</translation>
+    </message>
+    <message>
+        <source>Time runs in units of 1/ω_n. The normal spring&apos;s force per unit effective mass is A sin t while it compresses (to t = π/2) and A cos((t − π/2)/e) while it unloads, stiffer by 1/e², so the contact leaves at −e v_n (ends at (1 + e) π/2). The tangential spring has frequency ω_t = r ω_n, its stiffness per unit effective mass κ = r²/β_t with β_t = 1 + m R²/I = 7/2.</source>
+        <translation>Az idő 1/ω_n egységekben telik. A normális rugó egységnyi effektív tömegre jutó ereje összenyomódás közben A sin t (t = π/2-ig), tehermentesülés közben A cos((t − π/2)/e), 1/e²-szer merevebben, így az érintkezés −e v_n sebességgel válik el ((1 + e) π/2-kor ér véget). Az érintőleges rugó frekvenciája ω_t = r ω_n, egységnyi effektív tömegre jutó merevsége κ = r²/β_t, ahol β_t = 1 + m R²/I = 7/2.</translation>
+    </message>
+    <message>
+        <source>Stick and slip</source>
+        <translation>Tapadás és csúszás</translation>
+    </message>
+    <message>
+        <source>At t = 0 the contact slips if its slip outruns what the growing friction limit can hold (v_t &gt; μ A/κ), else it sticks. A stick ends when the spring force reaches μ F_n (the contact then slips the way the spring pulls); a slip ends when the contact&apos;s velocity reaches what the spring alone would give (it then sticks, holding its deflection). Each switch time is a root of the phases&apos; closed forms (sampled, then bisected).</source>
+        <translation>t = 0-kor az érintkezés csúszik, ha csúszása gyorsabb, mint amit a növekvő súrlódási határ megtarthat (v_t &gt; μ A/κ), különben tapad. A tapadás akkor ér véget, amikor a rugóerő eléri μ F_n-t (az érintkezés ekkor arra csúszik, amerre a rugó húzza); a csúszás akkor ér véget, amikor az érintkezés sebessége eléri azt, amit a rugó egymagában adna (ekkor tapad, és megtartja kitérését). Minden váltás időpontja a szakaszok zárt alakjainak egy gyöke (mintavételezve, majd felezéssel).</translation>
+    </message>
+    <message>
+        <source>stick: v(t) = v₀ cos(r τ) − u₀ r sin(r τ);   slip: v(t) = v₀ ∓ μ β_t (P_n(t) − P_n(t₀))</source>
+        <translation>tapadás: v(t) = v₀ cos(r τ) − u₀ r sin(r τ);   csúszás: v(t) = v₀ ∓ μ β_t (P_n(t) − P_n(t₀))</translation>
+    </message>
+    <message>
+        <source>phases</source>
+        <translation>szakaszok</translation>
+    </message>
+    <message>
+        <source>stick_{%1}</source>
+        <translation>tapadás_{%1}</translation>
+    </message>
+    <message>
+        <source>chattering</source>
+        <translation>pattogás</translation>
+    </message>
+    <message>
+        <source>Impulses</source>
+        <translation>Erőlökések</translation>
+    </message>
+    <message>
+        <source>The normal impulse returns the approach e times; the tangential one changes the slip from v_t to v_t′ (at most |v_t|: a rounding guard keeps the tangential energy from growing).</source>
+        <translation>A normális erőlökés a közeledést e-szeresen adja vissza; az érintőleges a csúszást v_t-ről v_t′-re változtatja (legfeljebb |v_t|-re: egy kerekítési őr megakadályozza, hogy az érintőleges energia nőjön).</translation>
+    </message>
+    <message>
+        <source>The impulse over mass changes the velocity (its vertical part goes into the cloth), its torque about the centre over I = 2/5 m R² the spin.</source>
+        <translation>Az erőlökés osztva a tömeggel megváltoztatja a sebességet (függőleges része a posztóba megy), középpontra vett forgatónyomatéka osztva I = 2/5 m R²-tel a pörgést.</translation>
     </message>
 </context>
 </TS>

@@ -126,8 +126,11 @@ void TestOddsSection::mapMarksTheBestCellAndLoadsOneUndoStep()
     OddsSection& s = *f.odds;
     f.panel.goalEdit()->setText(QStringLiteral("pot:1@pocket-tr"));
     s.setPreset(0);
-    s.xKeyBox()->setCurrentText(QStringLiteral("shot.heading"));
-    s.yKeyBox()->setCurrentText(QStringLiteral("shot.side"));
+    s.xKeyBox()->setCurrentIndex(s.xKeyBox()->findData(QStringLiteral("shot.heading")));
+    s.yKeyBox()->setCurrentIndex(s.yKeyBox()->findData(QStringLiteral("shot.side")));
+    // The boxes name the keys in words with their units (issue 21, item 5), not as raw keys.
+    QCOMPARE(s.xKeyBox()->currentText(), QStringLiteral("Heading (°)"));
+    QCOMPARE(s.yKeyBox()->currentText(), QStringLiteral("Tip offset, side (R)"));
     s.rangeBox(0, 0)->setValue(39.0);
     s.rangeBox(0, 1)->setValue(41.0);
     s.rangeBox(1, 0)->setValue(-0.3);

@@ -5,6 +5,7 @@
 #include "MainWindow.h"
 #include "ShortcutsDialog.h"
 
+#include "editor/BallEditor.h"
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
 #include "editor/Selection.h"
@@ -12,6 +13,7 @@
 #include "view/TableView.h"
 
 #include <QAbstractButton>
+#include <QDoubleSpinBox>
 #include <QAction>
 #include <QDockWidget>
 #include <QLabel>
@@ -290,6 +292,72 @@ private slots:
         QVERIFY(layouts);
         for (const char* name : {"teachLayoutAction", "coachLayoutAction", "editLayoutAction", "resetLayoutAction"})
             QVERIFY2(layouts->actions().contains(window.findChild<QAction*>(QLatin1String(name))), name);
+    }
+
+    // Issue 21, screenshots at four sizes: each layout leaves the table view its room and cuts no
+    // panel off. The gaps seen: Edit's Physics fields past the dock's edge at 800x600; the Ball
+    // editor's values cut at 1280x800; Coach's Analysis panel pushing the table view to 355 px at
+    // 1280x800; the Explain dock's empty figures squeezing the view to 350x190 at 1024x700.
+    void layoutsLeaveTheTableRoom_data()
+    {
+        QTest::addColumn<int>("arrangement");
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<double>("least");  // of the window's area
+        const std::pair<const char*, Arrangement> layouts[] = {
+            {"Default", Arrangement::Default}, {"Teach", Arrangement::Teach}, {"Coach", Arrangement::Coach}, {"Edit", Arrangement::Edit}};
+        for (const auto& [name, a] : layouts)
+            for (const QSize size : {QSize(800, 600), QSize(1024, 700), QSize(1280, 800), QSize(1920, 1200)}) {
+                // Teach has Plots under the view as well; the others only the side columns.
+                const bool large = size.width() >= 1280;
+                const double least = a == Arrangement::Teach ? (large ? 0.33 : 0.22)
+                                     : a == Arrangement::Default ? (large ? 0.5 : 1.0 / 3.0)
+                                                                 : (large ? 0.4 : 1.0 / 3.0);
+                QTest::addRow("%s %dx%d", name, size.width(), size.height()) << int(a) << size << least;
+            }
+    }
+
+    void layoutsLeaveTheTableRoom()
+    {
+        QFETCH(int, arrangement);
+        QFETCH(QSize, size);
+        QFETCH(double, least);
+        QSettings().clear();
+        MainWindow window;
+        window.resize(size);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.openExample(QStringLiteral(":/examples/half-ball-cut.json")));
+        QTRY_COMPARE_WITH_TIMEOUT(window.size(), size, 3000);
+        window.arrange(static_cast<Arrangement>(arrangement));
+        QTRY_VERIFY2_WITH_TIMEOUT(tableShare(window) >= least, qPrintable(describe(window)), 3000);
+        // With no event selected (the first start) nothing below the view: it has the window's height
+        // but the menu, the transport and the status bar (Teach: and Plots).
+        if (arrangement != int(Arrangement::Teach))
+            QTRY_VERIFY2_WITH_TIMEOUT(window.tableView()->height() >= 0.75 * size.height(), qPrintable(describe(window)), 3000);
+        // No panel in front is cut off: its content fits the dock's width (no sideways scrolling).
+        QTest::qWait(200);  // the docks settle (DockLayout: debounced, then twice)
+        for (const QDockWidget* d : window.panels()) {
+            if (!d->isVisible() || d->visibleRegion().isEmpty()) continue;
+            const auto* scroll = qobject_cast<const QScrollArea*>(d->widget());
+            if (!scroll) continue;
+            // A known gap at 800x600, left for later: Coach's Analysis needs about 250 px of 234.
+            if (size == QSize(800, 600) && arrangement == int(Arrangement::Coach) && d->objectName() == QLatin1String("AnalysisDock")) {
+                qInfo("%s: content %d px in %d", qPrintable(d->objectName()), scroll->widget()->minimumSizeHint().width(), scroll->viewport()->width());
+                QEXPECT_FAIL("", "issue 21: this panel does not reflow to a 234-px column yet", Continue);
+            }
+            QTRY_VERIFY2_WITH_TIMEOUT(scroll->horizontalScrollBar()->maximum() == 0,
+                                      qPrintable(QStringLiteral("%1 cut off: content %2 in %3; ").arg(d->objectName())
+                                                     .arg(scroll->widget()->minimumSizeHint().width()).arg(scroll->viewport()->width()) +
+                                                 describe(window)),
+                                      3000);
+        }
+        // The Ball editor's boxes are as wide as their values and units need.
+        if (arrangement == int(Arrangement::Edit))
+            for (BallProperty p : {BallProperty::X, BallProperty::Vx, BallProperty::Wz, BallProperty::Radius, BallProperty::Mass}) {
+                const QDoubleSpinBox* box = window.ballsPanel()->editor()->spinBox(p);
+                QVERIFY2(box->width() >= box->minimumSizeHint().width(),
+                         qPrintable(QStringLiteral("ball field %1: %2 px of %3").arg(int(p)).arg(box->width()).arg(box->minimumSizeHint().width())));
+            }
     }
 
     // Readable at the default size: Coach's Shot dock shows the whole tip picker without scrolling,

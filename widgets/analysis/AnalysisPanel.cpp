@@ -1,5 +1,7 @@
 #include "AnalysisPanel.h"
 
+#include "GoalWords.h"
+
 #include "AnalysisJob.h"
 #include "OddsSection.h"
 #include "OutcomeMap.h"
@@ -96,6 +98,9 @@ QDoubleSpinBox* rangeBox(QWidget* parent, const QString& tip)
     box->setRange(-1e6, 1e6);
     box->setDecimals(4);
     box->setToolTip(tip);
+    // As wide as a value of four integer digits needs, not as the range's ends (±1000000.0000): the
+    // map's ranges then fit a side column beside each other.
+    box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-0000.0000")) + 28);
     return box;
 }
 
@@ -157,20 +162,27 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     xKey_->setToolTip(tr("The key along the map's horizontal axis"));
     yKey_ = new QComboBox(mapBox);
     yKey_->setToolTip(tr("The key along the map's vertical axis"));
+    // The list boxes show the start of a long choice rather than widening the dock (Coach at
+    // 1280x800 keeps the table view wide).
+    for (QComboBox* box : {mode_, xKey_, yKey_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(12);
+    }
     xFrom_ = rangeBox(mapBox, tr("First value of the horizontal axis, in the key's unit"));
     xTo_ = rangeBox(mapBox, tr("Last value of the horizontal axis, in the key's unit"));
     yFrom_ = rangeBox(mapBox, tr("First value of the vertical axis, in the key's unit"));
     yTo_ = rangeBox(mapBox, tr("Last value of the vertical axis, in the key's unit"));
-    auto* xRow = new QHBoxLayout;
-    xRow->addWidget(xKey_, 1);
-    xRow->addWidget(xFrom_);
-    xRow->addWidget(xTo_);
-    auto* yRow = new QHBoxLayout;
-    yRow->addWidget(yKey_, 1);
-    yRow->addWidget(yFrom_);
-    yRow->addWidget(yTo_);
-    mapForm->addRow(tr("x"), xRow);
-    mapForm->addRow(tr("y"), yRow);
+    // Each key above its range (as OddsSection): the dock fits a side column.
+    const auto range = [](QDoubleSpinBox* from, QDoubleSpinBox* to) {
+        auto* row = new QHBoxLayout;
+        row->addWidget(from, 1);
+        row->addWidget(to, 1);
+        return row;
+    };
+    mapForm->addRow(tr("x"), xKey_);
+    mapForm->addRow(QString(), range(xFrom_, xTo_));
+    mapForm->addRow(tr("y"), yKey_);
+    mapForm->addRow(QString(), range(yFrom_, yTo_));
     cells_ = new QSpinBox(mapBox);
     cells_->setRange(3, 301);
     cells_->setValue(41);
@@ -203,8 +215,8 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     auto* goalRow = new QHBoxLayout;
     goalRow->addWidget(new QLabel(tr("Goal"), this));
     goalRow->addWidget(goal_, 1);
-    goalRow->addWidget(goalFromShot_);
     layout->addLayout(goalRow);
+    layout->addWidget(goalFromShot_, 0, Qt::AlignRight);  // under the goal: the dock fits a narrow column
     layout->addWidget(tolerance);
     layout->addWidget(mapBox, 1);
     auto* progressRow = new QHBoxLayout;
@@ -299,8 +311,7 @@ void AnalysisPanel::updateAxisChoices()
     for (QWidget* w : std::initializer_list<QWidget*>{xKey_, yKey_, xFrom_, xTo_, yFrom_, yTo_}) w->setEnabled(two);
     // The tip-offset disk has fixed axes: the key rows only confuse there.
     if (mapForm_) {
-        mapForm_->setRowVisible(1, two);
-        mapForm_->setRowVisible(2, two);
+        for (int row = 1; row <= 4; ++row) mapForm_->setRowVisible(row, two);  // x, its range, y, its range
     }
     const QString x = xKey_->currentData().toString(), y = yKey_->currentData().toString();
     xKey_->clear();
@@ -359,12 +370,12 @@ void AnalysisPanel::runTolerance()
     const auto goal = currentGoal();
     if (!goal) return;
     const SweepSpec spec = baseSpec(*goal);
-    const QString goalWords = QString::fromStdString(describeGoal(std::get<Goal>(parseGoal(goal_->text().trimmed().toStdString()))));
+    const QString words = cuelab::goalWords(std::get<Goal>(parseGoal(goal_->text().trimmed().toStdString())));
     for (ToleranceBar* bar : bars_) bar->setPending(tr("scanning…"));
-    toleranceGoal_->setText(tr("Goal: %1").arg(goalWords));
+    toleranceGoal_->setText(tr("Goal: %1").arg(words));
     toleranceTable_->setRowCount(0);
     toleranceTable_->setVisible(false);
-    setStatus(tr("Scanning the tolerance of %1 parameters for: %2").arg(bars_.size()).arg(goalWords));
+    setStatus(tr("Scanning the tolerance of %1 parameters for: %2").arg(bars_.size()).arg(words));
     const std::vector<ToleranceBar*> bars = bars_;
     job_->start([spec, bars, this](AnalysisJob::Context& context) {
         const long long perScan = kBarPoints + 2 * 20 + 1;
@@ -457,7 +468,7 @@ void AnalysisPanel::runMap()
     map_->reset(*mapX_, *mapY_, disk);
     map_->setCurrent(mapX_->parameter.number(base.base), mapY_->parameter.number(base.base));
     setStatus(tr("Mapping %1 shots for: %2").arg(static_cast<long long>(n) * n)
-                  .arg(QString::fromStdString(describeGoal(std::get<Goal>(parseGoal(mapGoalText_.trimmed().toStdString()))))));
+                  .arg(goalWords(std::get<Goal>(parseGoal(mapGoalText_.trimmed().toStdString())))));
     const SweepSpec work = *spec;
     OutcomeMap* map = map_;
     job_->start([work, map, this](AnalysisJob::Context& context) {

@@ -43,7 +43,7 @@ public:
     static QColor colourOf(double probability);
 
     QSize sizeHint() const override { return {360, 400}; }
-    QSize minimumSizeHint() const override { return {240, 260}; }
+    QSize minimumSizeHint() const override { return {190, 260}; }  // fits Coach's column at 800x600
 
 signals:
     void cellClicked(int index);

@@ -1,5 +1,7 @@
 #include "OddsSection.h"
 
+#include "i18n/DisplayNames.h"
+
 #include "AnalysisJob.h"
 #include "OddsMap.h"
 
@@ -69,6 +71,9 @@ QDoubleSpinBox* numberBox(QWidget* parent, const QString& tip, double low, doubl
     box->setRange(low, high);
     box->setDecimals(decimals);
     box->setToolTip(tip);
+    // As wide as a value of four integer digits needs, not as the range's ends (±1000000.0000): the
+    // map's ranges then fit a side column beside each other.
+    box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-0000.0000")) + 28);
     return box;
 }
 
@@ -90,7 +95,7 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
         sigma_[i] = numberBox(this, tr(s.tip), 0.0, s.maximum, s.decimals);
         sigma_[i]->setSuffix(QStringLiteral(" ") + QString::fromUtf8(sigmaUnitOf(k).data()));
         sigma_[i]->setSingleStep(std::pow(10.0, 1 - s.decimals));
-        const int row = static_cast<int>(i) / 2, column = static_cast<int>(i) % 2 * 2;
+        const int row = static_cast<int>(i), column = 0;  // one a row: the section fits a 240-pixel column
         sigmas->addWidget(new QLabel(tr(s.label), this), row, column);
         sigmas->addWidget(sigma_[i], row, column + 1);
         connect(sigma_[i], &QDoubleSpinBox::valueChanged, this, [this] {
@@ -116,6 +121,10 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     xKey_->setToolTip(tr("The key along the map's horizontal axis"));
     yKey_ = new QComboBox(this);
     yKey_->setToolTip(tr("The key along the map's vertical axis"));
+    for (QComboBox* box : {preset_, xKey_, yKey_}) {  // as AnalysisPanel's: never wider than the dock
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(12);
+    }
     const QString ends[] = {tr("First value of the horizontal axis, in the key's unit"),
                             tr("Last value of the horizontal axis, in the key's unit"),
                             tr("First value of the vertical axis, in the key's unit"),
@@ -154,28 +163,27 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     auto* oddsRow = new QHBoxLayout;
     oddsRow->addWidget(new QLabel(tr("Strikes"), this));
     oddsRow->addWidget(samples_);
-    oddsRow->addWidget(oddsButton_);
     oddsRow->addStretch(1);
     layout->addLayout(oddsRow);
+    layout->addWidget(oddsButton_, 0, Qt::AlignRight);  // under its strikes: the section fits 240 px
     layout->addWidget(odds_);
     auto* form = new QFormLayout;
-    auto* xRow = new QHBoxLayout;
-    xRow->addWidget(xKey_, 1);
-    xRow->addWidget(range_[0]);
-    xRow->addWidget(range_[1]);
-    auto* yRow = new QHBoxLayout;
-    yRow->addWidget(yKey_, 1);
-    yRow->addWidget(range_[2]);
-    yRow->addWidget(range_[3]);
-    form->addRow(tr("x"), xRow);
-    form->addRow(tr("y"), yRow);
-    auto* cellsRow = new QHBoxLayout;
-    cellsRow->addWidget(cells_);
-    cellsRow->addWidget(new QLabel(tr("strikes per cell"), this));
-    cellsRow->addWidget(cellSamples_);
-    cellsRow->addWidget(mapButton_);
-    cellsRow->addStretch(1);
-    form->addRow(tr("Cells"), cellsRow);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    // Each key above its range, and the map's button under its cells: the section fits a side
+    // column (Coach at 1280x800 keeps the table view wide).
+    const auto range = [](QDoubleSpinBox* from, QDoubleSpinBox* to) {
+        auto* row = new QHBoxLayout;
+        row->addWidget(from, 1);
+        row->addWidget(to, 1);
+        return row;
+    };
+    form->addRow(tr("x"), xKey_);
+    form->addRow(QString(), range(range_[0], range_[1]));
+    form->addRow(tr("y"), yKey_);
+    form->addRow(QString(), range(range_[2], range_[3]));
+    form->addRow(tr("Cells"), cells_);
+    form->addRow(tr("strikes per cell"), cellSamples_);
+    form->addRow(QString(), mapButton_);
     layout->addLayout(form);
     layout->addWidget(map_, 1);
     auto* progressRow = new QHBoxLayout;
@@ -191,7 +199,7 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     connect(map_, &OddsMap::cellClicked, this, [this](int index) { loadCell(index); });
     const auto centreRange = [this](QComboBox* key, QDoubleSpinBox* from, QDoubleSpinBox* to) {
         const Setup& s = document_->setup();
-        const auto p = Parameter::resolve(s, key->currentText().toStdString());
+        const auto p = Parameter::resolve(s, key->currentData().toString().toStdString());
         if (!std::holds_alternative<Parameter>(p)) return;
         const double v = std::get<Parameter>(p).number(s);
         from->setValue(v - std::max(0.1, std::abs(v) * 0.1));
@@ -262,15 +270,16 @@ NoiseModel OddsSection::noise() const
 void OddsSection::updateKeys()
 {
     const Setup& s = document_->setup();
-    const QString x = xKey_->currentText(), y = yKey_->currentText();
+    // Each box names its keys in words with their units (the key itself is the item's data).
+    const QString x = xKey_->currentData().toString(), y = yKey_->currentData().toString();
     xKey_->clear();
     yKey_->clear();
     for (const std::string& key : overridableKeys(s, true)) {
-        xKey_->addItem(QString::fromStdString(key));
-        yKey_->addItem(QString::fromStdString(key));
+        xKey_->addItem(displayKeyName(key), QString::fromStdString(key));
+        yKey_->addItem(displayKeyName(key), QString::fromStdString(key));
     }
     const auto choose = [](QComboBox* box, const QString& wanted, const QString& fallback) {
-        const int i = box->findText(wanted.isEmpty() ? fallback : wanted);
+        const int i = box->findData(wanted.isEmpty() ? fallback : wanted);
         box->setCurrentIndex(i >= 0 ? i : 0);
     };
     choose(xKey_, x, QStringLiteral("shot.heading"));
@@ -348,11 +357,11 @@ void OddsSection::runMap()
 {
     const auto base = baseSpec(document_->setup());
     if (!base) return;
-    const auto x = Parameter::resolve(base->base, xKey_->currentText().toStdString());
-    const auto y = Parameter::resolve(base->base, yKey_->currentText().toStdString());
+    const auto x = Parameter::resolve(base->base, xKey_->currentData().toString().toStdString());
+    const auto y = Parameter::resolve(base->base, yKey_->currentData().toString().toStdString());
     if (!std::holds_alternative<Parameter>(x) || !std::holds_alternative<Parameter>(y))
         return setStatus(tr("Choose two keys of this setup."));
-    if (xKey_->currentText() == yKey_->currentText()) return setStatus(tr("Choose two different keys."));
+    if (xKey_->currentData() == yKey_->currentData()) return setStatus(tr("Choose two different keys."));
     const int n = cells_->value();
     SweepSpec spec = mapSpec(*base, Variation{std::get<Parameter>(x), Range{range_[0]->value(), range_[1]->value(), n}},
                              Variation{std::get<Parameter>(y), Range{range_[2]->value(), range_[3]->value(), n}});

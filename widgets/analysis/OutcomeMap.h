@@ -41,7 +41,7 @@ public:
     static QColor colourOf(analysis::ShotClass c);
 
     QSize sizeHint() const override { return {360, 420}; }
-    QSize minimumSizeHint() const override { return {220, 260}; }
+    QSize minimumSizeHint() const override { return {190, 260}; }  // fits Coach's column at 800x600
 
 signals:
     void cellClicked(double x, double y, int index);

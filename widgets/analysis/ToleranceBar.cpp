@@ -61,7 +61,7 @@ void ToleranceBar::setPending(const QString& text)
 }
 
 QSize ToleranceBar::sizeHint() const { return {360, 2 * fontMetrics().height() + 24}; }
-QSize ToleranceBar::minimumSizeHint() const { return {200, 2 * fontMetrics().height() + 24}; }
+QSize ToleranceBar::minimumSizeHint() const { return {180, 2 * fontMetrics().height() + 24}; }
 
 void ToleranceBar::paintEvent(QPaintEvent*)
 {

@@ -80,8 +80,8 @@ BallEditor::BallEditor(Document* document, QWidget* parent) : QWidget(parent), d
     id_->setClearButtonEnabled(false);
 
     const auto spin = [this](BallProperty p, const SpinBoxSpec& spec) {
+        // Its own minimum: wide enough for its whole range with its unit (never a cut "0.0000 m").
         QDoubleSpinBox* box = makeSpinBox(spec, box_);
-        box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-00.0000 rad/s")) / 2);
         numbers_[slot(p)] = box;
         connect(box, &QDoubleSpinBox::valueChanged, this, [this, p] { commit(p); });
         // A run of arrow clicks is one step; leaving the field ends it.
@@ -122,23 +122,30 @@ BallEditor::BallEditor(Document* document, QWidget* parent) : QWidget(parent), d
         return l;
     };
     const auto number = [this](BallProperty p) { return numbers_[slot(p)]; };
+    // One field a row, its axis beside it: the editor fits a side column of 240 px (Edit at 800x600)
+    // with every value whole, each box as wide as its range and unit ask.
     grid->addWidget(label(tr("&Id"), id_), 0, 0);
-    grid->addWidget(id_, 0, 1, 1, 3);
-    grid->addWidget(label(tr("Position"), number(BallProperty::X)), 1, 0);
-    grid->addWidget(number(BallProperty::X), 1, 1);
-    grid->addWidget(number(BallProperty::Y), 1, 2);
-    grid->addWidget(label(tr("Velocity"), number(BallProperty::Vx)), 2, 0);
-    grid->addWidget(number(BallProperty::Vx), 2, 1);
-    grid->addWidget(number(BallProperty::Vy), 2, 2);
-    grid->addWidget(label(tr("Spin"), number(BallProperty::Wx)), 3, 0);
-    grid->addWidget(number(BallProperty::Wx), 3, 1);
-    grid->addWidget(number(BallProperty::Wy), 3, 2);
-    grid->addWidget(number(BallProperty::Wz), 3, 3);
-    grid->addWidget(label(tr("Radius"), number(BallProperty::Radius)), 4, 0);
-    grid->addWidget(number(BallProperty::Radius), 4, 1);
-    grid->addWidget(label(tr("Mass"), number(BallProperty::Mass)), 4, 2, Qt::AlignRight);
-    grid->addWidget(number(BallProperty::Mass), 4, 3);
-    for (int c = 1; c <= 3; ++c) grid->setColumnStretch(c, 1);
+    grid->addWidget(id_, 0, 1, 1, 2);
+    int row = 1;
+    const auto vector = [&](const QString& name, std::initializer_list<BallProperty> components) {
+        const char* axes[] = {"x", "y", "z"};
+        int k = 0;
+        for (BallProperty p : components) {
+            if (k == 0) grid->addWidget(label(name, number(p)), row, 0);
+            auto* axis = new QLabel(QString::fromLatin1(axes[k++]), box_);
+            axis->setToolTip(number(p)->toolTip());
+            grid->addWidget(axis, row, 1);
+            grid->addWidget(number(p), row++, 2);
+        }
+    };
+    vector(tr("Position"), {BallProperty::X, BallProperty::Y});
+    vector(tr("Velocity"), {BallProperty::Vx, BallProperty::Vy});
+    vector(tr("Spin"), {BallProperty::Wx, BallProperty::Wy, BallProperty::Wz});
+    grid->addWidget(label(tr("Radius"), number(BallProperty::Radius)), row, 0);
+    grid->addWidget(number(BallProperty::Radius), row++, 1, 1, 2);
+    grid->addWidget(label(tr("Mass"), number(BallProperty::Mass)), row, 0);
+    grid->addWidget(number(BallProperty::Mass), row++, 1, 1, 2);
+    grid->setColumnStretch(2, 1);
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -20,6 +20,7 @@ CushionModelParameters::CushionModelParameters(Document* document, QWidget* pare
     : QWidget(parent), document_(document), form_(new QFormLayout(this))
 {
     form_->setContentsMargins(0, 0, 0, 0);
+    form_->setRowWrapPolicy(QFormLayout::WrapLongRows);  // as PhysicsPanel's forms
     connect(document_, &Document::setupChanged, this, &CushionModelParameters::rebuild);
     rebuild();
 }

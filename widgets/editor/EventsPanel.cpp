@@ -60,6 +60,11 @@ EventsPanel::EventsPanel(QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
+    // The filters show the start of a long choice rather than widening the side column.
+    for (QComboBox* box : {kinds_, ball_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(6);
+    }
     auto* options = new QHBoxLayout;
     options->setContentsMargins(6, 2, 6, 0);
     options->addWidget(kinds_, 2);
@@ -67,9 +72,13 @@ EventsPanel::EventsPanel(QWidget* parent)
     auto* speedLabel = new QLabel(tr("v_rel"), this);
     speedLabel->setToolTip(minSpeed_->toolTip());
     speedLabel->setBuddy(minSpeed_);
-    options->addWidget(speedLabel);
-    options->addWidget(minSpeed_, 1);
+    // The speed filter on a row of its own: the panel fits a 240-pixel side column.
+    auto* speedRow = new QHBoxLayout;
+    speedRow->setContentsMargins(6, 0, 6, 0);
+    speedRow->addWidget(speedLabel);
+    speedRow->addWidget(minSpeed_, 1);
     layout->addLayout(options);
+    layout->addLayout(speedRow);
     layout->addWidget(table_);
 
     connect(kinds_, &QComboBox::currentIndexChanged, this, &EventsPanel::applyFilter);

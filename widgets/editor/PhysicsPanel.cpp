@@ -89,6 +89,14 @@ PhysicsPanel::PhysicsPanel(Document* document, QWidget* parent) : QWidget(parent
     timeForm->addRow(tr("Frame step"), frameDt_);
     timeForm->addRow(tr("Stop at"), maxTime_);
 
+    // In a narrow column (Edit at 800x600) a field goes under its label rather than past the dock's
+    // edge, and a list box shows the start of its choice rather than widening the panel.
+    for (QFormLayout* form : {tableForm, clothForm, ballsForm, cushionForm, timeForm}) form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    for (QComboBox* box : {tableKind_, ballBallModel_, ballBallFrictionKind_, cushionModel_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(14);
+    }
+
     auto* layout = new QVBoxLayout(this);
     for (QWidget* w : std::initializer_list<QWidget*>{table, cloth, balls, cushion, time}) layout->addWidget(w);
     layout->addWidget(reset_, 0, Qt::AlignRight);

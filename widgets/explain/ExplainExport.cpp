@@ -1,6 +1,7 @@
 #include "ExplainExport.h"
 
 #include "Explain.h"
+#include "ExplainLanguage.h"
 #include "ExplainText.h"
 
 #include "ConservationWidget.h"
@@ -110,7 +111,7 @@ std::string htmlWithFigures(const explain::Explanation& e)
                    inlineSvg([&](QPainter& p, const QRectF& r) { ConservationWidget::paintFigure(p, r, e); },
                              QObject::tr("Momentum and energy")) +
                    QStringLiteral("</figure>\n");
-    return explain::toHtml(e) + "\n" + figures.toStdString();
+    return explain::toHtml(e, explainLanguage()) + "\n" + figures.toStdString();
 }
 
 std::string htmlDocument(const std::vector<explain::Explanation>& all, const std::string& title)
@@ -146,7 +147,7 @@ bool exportExplanations(const QString& path, const SimulationResult& result, con
     }
     const QString suffix = QFileInfo(path).suffix().toLower();
     const bool markdown = suffix == QLatin1String("md") || suffix == QLatin1String("markdown");
-    const std::string text = markdown ? explain::toMarkdown(all, title.toStdString())
+    const std::string text = markdown ? explain::toMarkdown(all, title.toStdString(), explainLanguage())
                                       : htmlDocument(all, title.toStdString());
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {

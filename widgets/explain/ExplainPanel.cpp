@@ -3,6 +3,7 @@
 #include "ConservationWidget.h"
 #include "editor/Document.h"
 #include "Explain.h"
+#include "ExplainLanguage.h"
 #include "ExplainText.h"
 #include "editor/Playback.h"
 #include "ToiChart.h"
@@ -112,16 +113,20 @@ void ExplainPanel::showEvent(int index)
     }
     placeholder_->setVisible(!explanation_);
     if (explanation_) {
-        text_->setHtml(QString::fromStdString(explain::toHtml(*explanation_)));
+        text_->setHtml(QString::fromStdString(explain::toHtml(*explanation_, explainLanguage())));
     } else {
         text_->clear();
     }
     chart_->setExplanation(explanation_ ? &*explanation_ : nullptr);
     conservation_->setExplanation(explanation_ ? &*explanation_ : nullptr);
     // A figure with nothing to show gives its room to the derivation: no chart for an event whose
-    // time is closed-form (a transition, the cue strike), no momenta without bodies.
-    chart_->setVisible(!explanation_ || explanation_->toi.has_value());
-    conservation_->setVisible(!explanation_ || !explanation_->bodies.empty());
+    // time is closed-form (a transition, the cue strike), no momenta without bodies. With no event
+    // at all only the placeholder stays: the dock then asks for no height of its own, and the
+    // table view beside it keeps the window's height.
+    chart_->setVisible(explanation_ && explanation_->toi.has_value());
+    conservation_->setVisible(explanation_ && !explanation_->bodies.empty());
+    figures_->setVisible(!chart_->isHidden() || !conservation_->isHidden());
+    text_->setVisible(explanation_.has_value());
     emit explanationChanged();
 }
 

@@ -6,6 +6,7 @@
 #include "Explain.h"
 #include "ExplainText.h"
 #include "explain/ConservationWidget.h"
+#include "explain/ExplainLanguage.h"
 #include "i18n/DisplayNames.h"
 
 #include <QCoreApplication>
@@ -169,8 +170,8 @@ void keyCollisionPage(QPainter& p, const SimulationResult& r, const std::optiona
         return;
     }
     const explain::Explanation e = explain::explain(r, index, shot);
-    y = paragraph(p, y, QStringLiteral("%1 %2 (%3 s)").arg(eventNumber(index), QString::fromStdString(e.title)).arg(e.time, 0, 'f', 4), 15, true);
-    if (!e.model.empty()) y = paragraph(p, y, tr("Model: %1").arg(QString::fromStdString(e.model)), 13);
+    y = paragraph(p, y, QStringLiteral("%1 %2 (%3 s)").arg(eventNumber(index), translated(e.title)).arg(e.time, 0, 'f', 4), 15, true);
+    if (!e.model.empty()) y = paragraph(p, y, tr("Model: %1").arg(translated(e.model)), 13);
     p.setFont(font(13));
     const QRectF figure(kMargin, y, kWidth - 2 * kMargin, 300);
     ConservationWidget::paintFigure(p, figure, e);
@@ -182,11 +183,12 @@ void keyCollisionPage(QPainter& p, const SimulationResult& r, const std::optiona
     const double bottom = kHeight - 70;
     for (const explain::Step& step : e.steps) {
         QString body;
-        if (!step.law.empty()) body += QString::fromStdString(step.law) + QLatin1Char('\n');
-        if (!step.formula.empty()) body += QString::fromStdString(explain::markupToText(step.formula)) + QLatin1Char('\n');
+        const QString law = QString::fromStdString(explain::markupToText(translated(step.law).toStdString()));
+        if (!law.isEmpty()) body += law + QLatin1Char('\n');
+        if (!step.formula.empty()) body += QString::fromStdString(explain::markupToText(translated(step.formula).toStdString())) + QLatin1Char('\n');
         QStringList results;
         for (const explain::Quantity& q : step.results)
-            results << QStringLiteral("%1 = %2%3").arg(QString::fromStdString(explain::markupToText(q.symbol)),
+            results << QStringLiteral("%1 = %2%3").arg(QString::fromStdString(explain::markupToText(translated(q.symbol).toStdString())),
                                                       QString::fromStdString(explain::readable(q.value)),
                                                       q.unit.empty() ? QString() : QLatin1Char(' ') + QString::fromStdString(q.unit));
         if (!results.isEmpty()) body += results.join(QStringLiteral(",  "));
@@ -196,7 +198,7 @@ void keyCollisionPage(QPainter& p, const SimulationResult& r, const std::optiona
             paragraph(p, y, tr("… the rest of the derivation: File → Export → Explanation."), 12);
             return;
         }
-        y = paragraph(p, y, QString::fromStdString(step.title), 13, true) - 4;
+        y = paragraph(p, y, QString::fromStdString(explain::markupToText(translated(step.title).toStdString())), 13, true) - 4;
         y = paragraph(p, y, body.trimmed(), 12);
     }
 }

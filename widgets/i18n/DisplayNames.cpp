@@ -26,6 +26,10 @@ namespace {
     QT_TRANSLATE_NOOP("cuelab::DisplayNames", "roll-to-spin"),
     QT_TRANSLATE_NOOP("cuelab::DisplayNames", "roll-to-stop"),
     QT_TRANSLATE_NOOP("cuelab::DisplayNames", "spin-to-stop"),
+    // The models' names that are words (the others are their authors' names).
+    QT_TRANSLATE_NOOP("cuelab::DisplayNames", "frictionless"),
+    QT_TRANSLATE_NOOP("cuelab::DisplayNames", "frictional"),
+    QT_TRANSLATE_NOOP("cuelab::DisplayNames", "mirror"),
 };
 
 QString translated(std::string_view name)
@@ -40,6 +44,7 @@ QString tr(const char* text) { return QCoreApplication::translate("cuelab", text
 }  // namespace
 
 QString displayName(MotionState state) { return translated(toString(state)); }
+QString displayCoreName(std::string_view name) { return translated(name); }
 QString displayName(EventKind kind) { return translated(toString(kind)); }
 
 QString eventNumber(int index) { return QStringLiteral("#%1").arg(index + 1); }

@@ -9,11 +9,14 @@
 #include <QString>
 
 #include <string>
+#include <string_view>
 
 namespace cuelab {
 
 QString displayName(MotionState state);
 QString displayName(EventKind kind);
+// Any of the core's names (Names.h: states, event kinds, ball-ball models, cushion models).
+QString displayCoreName(std::string_view name);
 
 // The number a person reads for event `index` (0-based, as in the result and the JSON): "#1" for the
 // first (CONTRACT.md, Extensions version 2). Every surface of the window (Events list, Inspector,

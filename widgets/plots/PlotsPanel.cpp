@@ -68,20 +68,28 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent)
 
     view_ = new PlotsChartView(this);
     view_->setObjectName(QStringLiteral("plotsChart"));
-    view_->setMinimumSize(320, 200);
+    view_->setMinimumSize(240, 150);  // fits under the table view at 800x600
 
+    // Long choices are elided rather than widening the dock (Plots under the view at 800x600).
+    for (QComboBox* box : {plotBox_, ballsBox_}) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(6);
+    }
+    hint_->setWordWrap(true);  // its words wrap rather than widening the dock
     // Alt+T reaches the choice from the keyboard (then the arrow keys pick a plot).
     auto* plotLabel = new QLabel(tr("Plo&t"), this);
     plotLabel->setBuddy(plotBox_);
     auto* controls = new QHBoxLayout;
     controls->addWidget(plotLabel);
-    controls->addWidget(plotBox_);
-    controls->addWidget(ballsBox_);
+    // The boxes take a share of any room beyond their minimum: whole names in a wide dock.
+    controls->addWidget(plotBox_, 1);
+    controls->addWidget(ballsBox_, 1);
     controls->addWidget(reset);
-    controls->addWidget(hint_, 1);
+    controls->addStretch(2);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(controls);
+    layout->addWidget(hint_);  // under the controls: the panel fits under the view at 800x600
     layout->addWidget(view_, 1);
 
     connect(plotBox_, &QComboBox::currentIndexChanged, this,

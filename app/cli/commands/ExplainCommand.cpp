@@ -49,25 +49,25 @@ std::string explanationJson(const SimulationResult& r, const explain::Explanatio
     w.key("time");
     w.value(e.time);
     w.key("title");
-    w.value(e.title);
+    w.value(e.title.english());
     w.key("balls");
     w.beginArray(Layout::Line);
     for (const explain::Body& b : e.bodies) w.value(b.id);
     w.endArray();
     if (!e.model.empty()) {
         w.key("model");
-        w.value(e.model);
+        w.value(e.model.english());
     }
     w.key("steps");
     w.beginArray(Layout::Block);
     for (const explain::Step& s : e.steps) {
         w.beginObject(Layout::Block);
         w.key("title");
-        w.value(explain::markupToText(s.title));
+        w.value(explain::markupToText(s.title.english()));
         w.key("law");
-        w.value(explain::markupToText(s.law));
+        w.value(explain::markupToText(s.law.english()));
         w.key("formula");
-        w.value(explain::markupToText(s.formula));
+        w.value(explain::markupToText(s.formula.english()));
         w.key("values");
         writeQuantities(w, s.inputs);
         w.key("result");
@@ -90,9 +90,9 @@ std::string explanationJson(const SimulationResult& r, const explain::Explanatio
         w.key("horizon");
         w.value(t.horizon);  // null when the paths never end (a frictionless cloth)
         w.key("gap");
-        w.value(explain::markupToText(t.gap));
+        w.value(explain::markupToText(t.gap.english()));
         w.key("why");
-        w.value(explain::markupToText(t.why));
+        w.value(explain::markupToText(t.why.english()));
         w.key("roots");
         w.beginArray(Layout::Block);
         for (const explain::ToiRoot& root : t.roots) {

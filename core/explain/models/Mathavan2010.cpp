@@ -57,10 +57,10 @@ CushionResult explainMathavan2010(const CushionInput& in, std::vector<Step>& ste
     const Vec3 nI = -rI / R;
     const Vec3 rC = -R * z;
 
-    StepBuilder(steps, "Two contacts: the cushion nose and the cloth",
-                "The nose touches the ball at θ above the equator (I, its force along n_I towards the centre); "
+    StepBuilder(steps, Text::tr("Two contacts: the cushion nose and the cloth"),
+                Text::tr("The nose touches the ball at θ above the equator (I, its force along n_I towards the centre); "
                 "the cloth holds the ball from below (C). Both rub during the impact: μ_w at the cushion, the "
-                "cloth's μ_s under the ball.",
+                "cloth's μ_s under the ball."),
                 "sin θ = h/R − 1,   r_I = R (cos θ X + sin θ z),   n_I = −r_I/R,   r_C = −R z")
         .in("h", "h", in.noseHeight, "m")
         .in("R", "R", R, "m")
@@ -78,9 +78,9 @@ CushionResult explainMathavan2010(const CushionInput& in, std::vector<Step>& ste
     const double approach0 = vInto * cosT;
     const double stepsWanted = std::max(1.0, p.mathavanSteps);
     const double dP0 = (1.0 + e) * m * vInto / (stepsWanted * cosT);
-    StepBuilder(steps, "The impulse steps",
-                "The normal impulse P at I is the clock of the impact. The paper integrates in equal steps dP: "
-                "the expected total (1 + e) m v_n / cos θ split into N steps (the setup's `steps`).",
+    StepBuilder(steps, Text::tr("The impulse steps"),
+                Text::tr("The normal impulse P at I is the clock of the impact. The paper integrates in equal steps dP: "
+                "the expected total (1 + e) m v_n / cos θ split into N steps (the setup's `steps`)."),
                 "ż_I = v_n cos θ,   dP = (1 + e) m v_n / (N cos θ)")
         .in("v_n", "v_n", vInto, "m/s")
         .in("e", "e", e)
@@ -89,7 +89,7 @@ CushionResult explainMathavan2010(const CushionInput& in, std::vector<Step>& ste
         .out("z_dot_I", "ż_I", approach0, "m/s")
         .out("dP", "dP", dP0, "N s");
     if (!(approach0 > 0.0)) {
-        StepBuilder(steps, "No approach", "The contact point does not move into the cushion: no impulse.",
+        StepBuilder(steps, Text::tr("No approach"), Text::tr("The contact point does not move into the cushion: no impulse."),
                     "v′ = v,   ω′ = ω")
             .out("v_after", "v′", result.after.velocity, "m/s")
             .out("w_after", "ω′", result.after.spin, "rad/s");
@@ -125,11 +125,11 @@ CushionResult explainMathavan2010(const CushionInput& in, std::vector<Step>& ste
     };
     const auto approach = [&](const Moving& s) { return s.v.dot(X) * cosT; };
 
-    StepBuilder(steps, "Slip at both contacts before",
-                "How fast the ball's surface slides over the cushion at I and over the cloth at C. In every "
+    StepBuilder(steps, Text::tr("Slip at both contacts before"),
+                Text::tr("How fast the ball's surface slides over the cushion at I and over the cloth at C. In every "
                 "step friction acts against each slip, at its Coulomb limit (μ_w dP at I; μ_s times the cloth's "
                 "normal impulse at C), or less if that would more than stop the slip (a friction impulse f "
-                "changes its contact's slip by 7f/(2m)).",
+                "changes its contact's slip by 7f/(2m))."),
                 "s_I = (v + ω × r_I)_t,   s_C = (v + ω × r_C)_t")
         .in("v", "v", Vec2(in.before.velocity), "m/s")
         .in("w", "ω", in.before.spin, "rad/s")
@@ -169,19 +169,19 @@ CushionResult explainMathavan2010(const CushionInput& in, std::vector<Step>& ste
         break;
     }
     const double pCompression = impulse.dot(nI);
-    StepBuilder(steps, "Compression: until I stops approaching",
-                "Step by step, each step's friction directions those at its start, until ż_I reaches 0; the last "
+    StepBuilder(steps, Text::tr("Compression: until I stops approaching"),
+                Text::tr("Step by step, each step's friction directions those at its start, until ż_I reaches 0; the last "
                 "step is cut where it does (ż_I is linear in dP within a step). W_c is the work of the normal "
-                "force so far (trapezoidal, exact on a linear ż_I).",
+                "force so far (trapezoidal, exact on a linear ż_I)."),
                 "ż_I ← ż_I + Δż_I(dP),   W_c = Σ dP (ż_{I,0} + ż_{I,1}) / 2")
-        .out("n_compression", "steps", static_cast<double>(compressionSteps))
+        .out("n_compression", Text::tr("steps"), static_cast<double>(compressionSteps))
         .out("dP_last_c", "dP_{last}", lastCompression, "N s")
         .out("P_c", "P_c", pCompression, "N s")
         .out("W_c", "W_c", workCompression, "J")
-        .out("limit_I_c", "I at μ_w", static_cast<double>(compression.limitI))
-        .out("stop_I_c", "I stopped", static_cast<double>(compression.stopI))
-        .out("limit_C_c", "C at μ_s", static_cast<double>(compression.limitC))
-        .out("stop_C_c", "C stopped", static_cast<double>(compression.stopC))
+        .out("limit_I_c", Text::tr("I at μ_w"), static_cast<double>(compression.limitI))
+        .out("stop_I_c", Text::tr("I stopped"), static_cast<double>(compression.stopI))
+        .out("limit_C_c", Text::tr("C at μ_s"), static_cast<double>(compression.limitC))
+        .out("stop_C_c", Text::tr("C stopped"), static_cast<double>(compression.stopC))
         .out("v_c", "v_c", Vec2(b.v.head<2>()), "m/s")
         .out("w_c", "ω_c", b.w, "rad/s")
         .out("s_I_c", "|s_I|", slipAt(b, rI, nI).norm(), "m/s")
@@ -219,19 +219,19 @@ CushionResult explainMathavan2010(const CushionInput& in, std::vector<Step>& ste
         remaining = 0.0;
         break;
     }
-    StepBuilder(steps, "Restitution: until e² of the work comes back",
-                "The same steps go on while the ball leaves the cushion, until the work the normal force returns "
+    StepBuilder(steps, Text::tr("Restitution: until e² of the work comes back"),
+                Text::tr("The same steps go on while the ball leaves the cushion, until the work the normal force returns "
                 "is e² W_c (the energetic coefficient); the last step is cut where it is (the returned work is "
-                "quadratic in dP within a step).",
+                "quadratic in dP within a step)."),
                 "W_r = Σ −dP (ż_{I,0} + ż_{I,1}) / 2 = e² W_c")
         .in("e", "e", e)
         .out("W_r", "e² W_c", target, "J")
-        .out("n_restitution", "steps", static_cast<double>(restitutionSteps))
+        .out("n_restitution", Text::tr("steps"), static_cast<double>(restitutionSteps))
         .out("dP_last_r", "dP_{last}", lastRestitution, "N s")
-        .out("limit_I_r", "I at μ_w", static_cast<double>(restitution.limitI))
-        .out("stop_I_r", "I stopped", static_cast<double>(restitution.stopI))
-        .out("limit_C_r", "C at μ_s", static_cast<double>(restitution.limitC))
-        .out("stop_C_r", "C stopped", static_cast<double>(restitution.stopC))
+        .out("limit_I_r", Text::tr("I at μ_w"), static_cast<double>(restitution.limitI))
+        .out("stop_I_r", Text::tr("I stopped"), static_cast<double>(restitution.stopI))
+        .out("limit_C_r", Text::tr("C at μ_s"), static_cast<double>(restitution.limitC))
+        .out("stop_C_r", Text::tr("C stopped"), static_cast<double>(restitution.stopC))
         .out("s_I_r", "|s_I|", slipAt(b, rI, nI).norm(), "m/s")
         .out("s_C_r", "|s_C|", slipAt(b, rC, z).norm(), "m/s");
 
@@ -245,13 +245,13 @@ CushionResult explainMathavan2010(const CushionInput& in, std::vector<Step>& ste
     result.after.spin = b.w;
     result.after.motion = classify(result.after, R);
     result.impulse = impulse;
-    StepBuilder(steps, "Velocity and spin after",
-                guarded ? "The integration's step cap was reached with the ball still pressing in: its normal "
-                          "velocity into the cushion is taken away (which only removes energy)."
-                        : "The sum of the steps' impulses at I, with the cloth's, changed the velocity and the spin; "
-                          "the vertical part went into the cloth. The ball leaves as its slip says.",
+    StepBuilder(steps, Text::tr("Velocity and spin after"),
+                guarded ? Text::tr("The integration's step cap was reached with the ball still pressing in: its normal "
+                          "velocity into the cushion is taken away (which only removes energy).")
+                        : Text::tr("The sum of the steps' impulses at I, with the cloth's, changed the velocity and the spin; "
+                          "the vertical part went into the cloth. The ball leaves as its slip says."),
                 "v′ = v + Σ (j_I + j_C)/m,   ω′ = ω + Σ (r_I × j_I + r_C × j_C)/I,   J = Σ j_I")
-        .out("steps_total", "steps", static_cast<double>(compressionSteps + restitutionSteps))
+        .out("steps_total", Text::tr("steps"), static_cast<double>(compressionSteps + restitutionSteps))
         .out("v_after", "v′", result.after.velocity, "m/s")
         .out("w_after", "ω′", result.after.spin, "rad/s")
         .out("J", "J", result.impulse, "N s");

@@ -8,9 +8,9 @@ CushionResult explainMirror(const CushionInput& in, std::vector<Step>& steps)
 {
     MirrorTrace tr;
     const CushionResult r = mirrorCushion(in.before, in.normal, in.radius, in.mass, in.params.cushionRestitution, &tr);
-    StepBuilder(steps, "Mirror reflection with restitution",
-                "The normal component of the velocity is reversed and scaled by e; the component along the "
-                "cushion and the spins are kept (angles from the normal obey tan(out) = tan(in)/e).",
+    StepBuilder(steps, Text::tr("Mirror reflection with restitution"),
+                Text::tr("The normal component of the velocity is reversed and scaled by e; the component along the "
+                "cushion and the spins are kept (angles from the normal obey tan(out) = tan(in)/e)."),
                 "v′ = v − (1 + e)(v·N) N")
         .in("v", "v", in.before.velocity, "m/s")
         .in("N", "N", in.normal, "")

@@ -146,9 +146,9 @@ CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
     result.approachSpeed = -in.before.velocity.dot(in.normal);
     const Vec3 ut = u - vn0 * N;
     const double vt0 = ut.norm();
-    StepBuilder(steps, "Contact at the equator",
-                "As in pooltool, the ball meets the cushion at its equator, along the cushion's normal N. The "
-                "velocity of the contact point splits into its approach v_n (< 0 approaching) and its slip v_t.",
+    StepBuilder(steps, Text::tr("Contact at the equator"),
+                Text::tr("As in pooltool, the ball meets the cushion at its equator, along the cushion's normal N. The "
+                "velocity of the contact point splits into its approach v_n (< 0 approaching) and its slip v_t."),
                 "u = v + ω × r_c,  r_c = −R N,   v_n = u·N,   v_t = |u − v_n N|")
         .in("v", "v", Vec2(in.before.velocity), "m/s")
         .in("w", "ω", in.before.spin, "rad/s")
@@ -157,7 +157,7 @@ CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
         .out("u_n", "v_n", vn0, "m/s")
         .out("u_t", "v_t", vt0, "m/s");
     if (!(vn0 < 0.0)) {
-        StepBuilder(steps, "No approach", "The contact point does not move into the cushion: no impulse.",
+        StepBuilder(steps, Text::tr("No approach"), Text::tr("The contact point does not move into the cushion: no impulse."),
                     "v′ = v,   ω′ = ω")
             .out("v_after", "v′", result.after.velocity, "m/s")
             .out("w_after", "ω′", result.after.spin, "rad/s");
@@ -168,11 +168,11 @@ CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
     const double mu = p.cushionFriction, e = p.cushionRestitution, ratio = p.strongeOmegaRatio;
     const double kappa = ratio * ratio / betaT;
     const double A = -vn0;  // the normal spring's amplitude per unit effective mass (beta_n = 1), time in 1/ω_n
-    StepBuilder(steps, "Normal and tangential springs",
-                "Time runs in units of 1/ω_n. The normal spring's force per unit effective mass is A sin t while it "
+    StepBuilder(steps, Text::tr("Normal and tangential springs"),
+                Text::tr("Time runs in units of 1/ω_n. The normal spring's force per unit effective mass is A sin t while it "
                 "compresses (to t = π/2) and A cos((t − π/2)/e) while it unloads, stiffer by 1/e², so the contact "
                 "leaves at −e v_n (ends at (1 + e) π/2). The tangential spring has frequency ω_t = r ω_n, its "
-                "stiffness per unit effective mass κ = r²/β_t with β_t = 1 + m R²/I = 7/2.",
+                "stiffness per unit effective mass κ = r²/β_t with β_t = 1 + m R²/I = 7/2."),
                 "A = −v_n,   κ = r²/β_t,   t_end = (1 + e) π/2")
         .in("e", "e", e)
         .in("r", "ω_t/ω_n", ratio)
@@ -185,22 +185,22 @@ CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
     bool chattered = false;
     const double vtRaw = tangentialVelocity(vn0, vt0, mu, e, ratio, betaT, phases, chattered);
     {
-        StepBuilder phaseStep(steps, "Stick and slip",
-                              "At t = 0 the contact slips if its slip outruns what the growing friction limit can hold "
+        StepBuilder phaseStep(steps, Text::tr("Stick and slip"),
+                              Text::tr("At t = 0 the contact slips if its slip outruns what the growing friction limit can hold "
                               "(v_t > μ A/κ), else it sticks. A stick ends when the spring force reaches μ F_n (the "
                               "contact then slips the way the spring pulls); a slip ends when the contact's velocity "
                               "reaches what the spring alone would give (it then sticks, holding its deflection). "
-                              "Each switch time is a root of the phases' closed forms (sampled, then bisected).",
-                              "stick: v(t) = v₀ cos(r τ) − u₀ r sin(r τ);   slip: v(t) = v₀ ∓ μ β_t (P_n(t) − P_n(t₀))");
+                              "Each switch time is a root of the phases' closed forms (sampled, then bisected)."),
+                              Text::tr("stick: v(t) = v₀ cos(r τ) − u₀ r sin(r τ);   slip: v(t) = v₀ ∓ μ β_t (P_n(t) − P_n(t₀))"));
         phaseStep.in("mu_A_over_kappa", "μ A/κ", mu * A / kappa, "m/s");
-        phaseStep.out("phases", "phases", static_cast<double>(phases.size()));
+        phaseStep.out("phases", Text::tr("phases"), static_cast<double>(phases.size()));
         for (std::size_t k = 0; k < phases.size() && k < 12; ++k) {
             const std::string i = std::to_string(k + 1);
-            phaseStep.out("phase" + i + "_stick", "stick_{" + i + "}", phases[k].stick ? 1.0 : 0.0);
+            phaseStep.out("phase" + i + "_stick", Text::tr("stick_{%1}").arg(i), phases[k].stick ? 1.0 : 0.0);
             phaseStep.out("phase" + i + "_start", "t_{" + i + "}", phases[k].start);
             phaseStep.out("phase" + i + "_v", "v_{t," + i + "}", phases[k].v0, "m/s");
         }
-        phaseStep.out("chattered", "chattering", chattered ? 1.0 : 0.0);
+        phaseStep.out("chattered", Text::tr("chattering"), chattered ? 1.0 : 0.0);
         phaseStep.out("v_t_end", "v_t′", vtRaw, "m/s");
     }
     const double vtf = std::clamp(vtRaw, -vt0, vt0);
@@ -214,9 +214,9 @@ CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
         impulse += Jt * t;
         dw = rc.cross(Jt * t) / ballInertia(m, R);
     }
-    StepBuilder(steps, "Impulses",
-                "The normal impulse returns the approach e times; the tangential one changes the slip from v_t to "
-                "v_t′ (at most |v_t|: a rounding guard keeps the tangential energy from growing).",
+    StepBuilder(steps, Text::tr("Impulses"),
+                Text::tr("The normal impulse returns the approach e times; the tangential one changes the slip from v_t to "
+                "v_t′ (at most |v_t|: a rounding guard keeps the tangential energy from growing)."),
                 "J_n = −(1 + e) m v_n,   J_t = m (v_t′ − v_t)/β_t")
         .in("m", "m", m, "kg")
         .out("J_n", "J_n", Jn, "N s")
@@ -225,9 +225,9 @@ CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
     result.after.spin = in.before.spin + dw;
     result.after.motion = classify(result.after, R);
     result.impulse = impulse;
-    StepBuilder(steps, "Velocity and spin after",
-                "The impulse over mass changes the velocity (its vertical part goes into the cloth), its torque "
-                "about the centre over I = 2/5 m R² the spin.",
+    StepBuilder(steps, Text::tr("Velocity and spin after"),
+                Text::tr("The impulse over mass changes the velocity (its vertical part goes into the cloth), its torque "
+                "about the centre over I = 2/5 m R² the spin."),
                 "v′ = v + J/m,   ω′ = ω + (r_c × J_t t̂)/I")
         .out("v_after", "v′", result.after.velocity, "m/s")
         .out("w_after", "ω′", result.after.spin, "rad/s")
