@@ -209,6 +209,14 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     auto local = [&](int b) {
         return static_cast<int>(std::find(members.begin(), members.end(), b) - members.begin());
     };
+    // The forces are solved for the motion each ball's new segment will have: the label its numbers
+    // give (a slip that has as good as ended rolls out), as beginSegment gives a free one.
+    auto relabel = [](ContactBall& cb) {
+        BallState& st = cb.state;
+        if (st.motion == MotionState::Pocketed) return;
+        if (st.motion == MotionState::Sliding && slipHasEnded(st, cb.radius)) rollOut(st, cb.radius);
+        st.motion = classify(st, cb.radius);
+    };
     std::vector<std::pair<std::size_t, int>> logged;  // transitions of other members due now: event, ball
     for (std::size_t m = 0; m < members.size(); ++m) {
         const int b = members[m];
@@ -233,13 +241,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         }
         balls[m].radius = radius(b);
         balls[m].mass = mass(b);
-        // The forces are solved for the motion each ball's new segment will have: the label its
-        // numbers give (a slip that has as good as ended is rolling), as beginSegment gives a free one.
-        BallState& st = balls[m].state;
-        if (st.motion != MotionState::Pocketed) {
-            if (st.motion == MotionState::Sliding && slipHasEnded(st, radius(b))) rollOut(st, radius(b));
-            st.motion = classify(st, radius(b));
-        }
+        relabel(balls[m]);
     }
 
     // The contacts that may hold: touching (within kHeldGap), no faster normal relative speed than
@@ -363,6 +365,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
                 seating.after = normalSpeeds;
             }
         }
+        for (ContactBall& cb : balls)  // (as beginSegment labels a free segment)
+            if (cb.state.motion != MotionState::Pocketed) cb.state.motion = classify(cb.state, cb.radius);
         for (std::size_t k = 0; k < links.size(); ++k) parting[k] = !heldMask[k] && seating.after[k] > kRestingSpeed;
         if (candidateLink < links.size()) lastCandidateImpulse_ = seating.impulse[candidateLink];
     }
