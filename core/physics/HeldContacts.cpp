@@ -385,7 +385,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         if (parting[k] || approaching[k] || (k == candidateLink && !candidateHeld)) continue;
         open.push_back(k);
     }
-    std::vector<char> keep(links.size(), 0);
+    std::vector<char> keep(links.size(), 0), stillSkipped(links.size(), 0);
     {
         std::vector<ContactLink> trial;
         for (std::size_t k : open) trial.push_back(links[k]);
@@ -399,7 +399,12 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         };
         for (std::size_t r = 0; r < open.size(); ++r) {
             const std::size_t k = open[r];
-            if (still(links[k].a) && still(links[k].b)) continue;  // nothing to hold
+            // Nothing to hold (unless the others' forces move them), but for the contact just met: let
+            // go at rest, it would be met again as soon as another contact's forces stir its balls.
+            if (k != candidateLink && still(links[k].a) && still(links[k].b)) {
+                stillSkipped[k] = 1;
+                continue;
+            }
             // (A contact that began to be held at this very instant stays held through it: letting
             // it go would only have it met again at the same instant, over and over.)
             keep[k] = pressed.active[r] || pressed.accel[r] <= kRestingAcceleration || k == candidateLink ||
@@ -476,6 +481,20 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             return pathOf(st, balls[q].radius, p_, push);
         };
         bool joined = false;
+        // A contact left out as still must stay so: if the kept contacts' forces set one of its balls
+        // moving, it is kept after all (else it is met at once, left out, met again: a cycle).
+        for (std::size_t k = 0; k < links.size(); ++k) {
+            if (keep[k] || !stillSkipped[k] || keptLinks.empty()) continue;
+            auto moves = [&](int m) {
+                if (m < 0) return false;
+                const std::size_t q = at(m);
+                return !(sol.label[q] == MotionState::Stationary || sol.label[q] == MotionState::Spinning) || !sol.push[q].isZero(0.0);
+            };
+            if (moves(links[k].a) || moves(links[k].b)) {
+                keep[k] = 1;
+                joined = true;
+            }
+        }
         for (std::size_t k = 0; k < links.size(); ++k) {
             if (keep[k] || approaching[k]) continue;
             const HeldContact& h = contacts[k];
