@@ -137,24 +137,33 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
     for (Step& s : model) e.steps.push_back(std::move(s));
     if (ev.held) {
         const double separation = (res.b.velocity - res.a.velocity).dot(res.normal);
-        const double hold = separation / (1.0 / in.a.mass + 1.0 / in.b.mass);
-        const Vec2 va = res.a.velocity + (hold / in.a.mass) * res.normal;
-        const Vec2 vb = res.b.velocity - (hold / in.b.mass) * res.normal;
+        const double hold = ev.holdImpulse;
+        BallState a = res.a, b = res.b;
+        a.motion = classify(a, in.a.radius);
+        b.motion = classify(b, in.b.radius);
+        const double ca = contactResponse(a), cb = contactResponse(b);
+        applyContactImpulse(a, in.a.radius, in.a.mass, hold * res.normal);
+        applyContactImpulse(b, in.b.radius, in.b.mass, -hold * res.normal);
         Vec3 J = res.impulse;
         J.head<2>() += hold * res.normal;
         StepBuilder(e.steps, Text::tr("Held in contact (a push)"),
-                    Text::tr("The law above leaves the balls parting slower than %1 m/s while the cloth's friction "
-                             "presses them together: they would only chatter, ever more weakly, into a lasting "
-                             "contact. The simulator drops that micro-bounce (a normal impulse takes the separation "
-                             "speed away, which only removes energy) and holds the pair: from here a contact force "
-                             "N ≥ 0 pushes along n, solved with the cloth's friction (Contact.h).")
+                    Text::tr("The law above leaves the balls parting slower than %1 m/s while the contact forces "
+                             "press them together (the cloth's friction closes the gap faster than their turning "
+                             "about each other, |v_t|²/d, opens it): they would only chatter, ever more weakly, into "
+                             "a lasting contact. The simulator drops that micro-bounce (a normal impulse ΔP takes the "
+                             "separation speed away, which only removes energy) and holds the pair: from here a "
+                             "contact force N ≥ 0 pushes along n, solved with the cloth's friction (Contact.h). Each "
+                             "ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling; the "
+                             "cloth takes the rest), 0 at rest.")
                         .arg(number(kHoldSpeed)),
-                    "ΔP = ((v′_b − v′_a)·n) / (1/m_a + 1/m_b),   v″_a = v′_a + ΔP/m_a n,   v″_b = v′_b − ΔP/m_b n")
+                    "ΔP (c_a/m_a + c_b/m_b) = (v′_b − v′_a)·n,   v″_a = v′_a + c_a ΔP/m_a n,   v″_b = v′_b − c_b ΔP/m_b n")
             .in("v_sep", "(v′_b − v′_a)·n", separation, "m/s")
             .in("v_hold", "v_{hold}", kHoldSpeed, "m/s")
+            .in("c_a", "c_a", ca)
+            .in("c_b", "c_b", cb)
             .out("hold", "ΔP", hold, "N s")
-            .out("v_a_after", "v″_a", va, "m/s")
-            .out("v_b_after", "v″_b", vb, "m/s")
+            .out("v_a_after", "v″_a", a.velocity, "m/s")
+            .out("v_b_after", "v″_b", b.velocity, "m/s")
             .out("J", "J", J, "N s");
     }
     if (ev.held || ev.grouped) addGroupStep(e, ev);
@@ -236,20 +245,27 @@ void explainCushion(const SimulationResult& r, int index, Explanation& e)
     for (Step& s : model) e.steps.push_back(std::move(s));
     if (ev.held) {
         const double separation = res.after.velocity.dot(in.normal);
+        const double hold = ev.holdImpulse;
+        BallState after = res.after;
+        after.motion = classify(after, in.radius);
+        const double c = contactResponse(after);
+        applyContactImpulse(after, in.radius, in.mass, -hold * in.normal);
         Vec3 J = res.impulse;
-        J.head<2>() -= (in.mass * separation) * in.normal;
+        J.head<2>() -= hold * in.normal;
         StepBuilder(e.steps, Text::tr("Held in contact (a push)"),
-                    Text::tr("The law above leaves the ball leaving the cushion slower than %1 m/s while the cloth's "
-                             "friction drives it back in: it would only chatter into a lasting contact. The "
-                             "simulator drops that micro-bounce (a normal impulse takes the separation speed away, "
-                             "which only removes energy) and holds the ball against the cushion: from here the "
-                             "cushion's force N ≥ 0 pushes along N (Contact.h).")
+                    Text::tr("The law above leaves the ball leaving the cushion slower than %1 m/s while the contact "
+                             "force presses it in: it would only chatter into a lasting contact. The simulator drops "
+                             "that micro-bounce (a normal impulse ΔP takes the separation speed away, which only "
+                             "removes energy) and holds the ball against the cushion: from here the cushion's force "
+                             "N ≥ 0 pushes along N (Contact.h). The ball takes the impulse by one rule: c = 1 sliding, "
+                             "5/7 rolling (it keeps rolling), 0 at rest.")
                         .arg(number(kHoldSpeed)),
-                    "ΔP = m v′·N,   v″ = v′ − (v′·N) N")
+                    "ΔP c/m = v′·N,   v″ = v′ − c ΔP/m N")
             .in("v_sep", "v′·N", separation, "m/s")
             .in("v_hold", "v_{hold}", kHoldSpeed, "m/s")
-            .out("hold", "ΔP", in.mass * separation, "N s")
-            .out("v_after", "v″", Vec2(res.after.velocity - separation * in.normal), "m/s")
+            .in("c", "c", c)
+            .out("hold", "ΔP", hold, "N s")
+            .out("v_after", "v″", after.velocity, "m/s")
             .out("J", "J", J, "N s");
     }
     if (ev.held || ev.grouped) addGroupStep(e, ev);

@@ -80,8 +80,12 @@ SegmentBefore segmentBefore(const SimulationResult& r, int ball, int index)
     const int slot = ev.balls[0] == ball ? 0 : ev.balls[1] == ball ? 1 : -1;
     if (slot >= 0) {
         const BallState& before = ev.before[static_cast<std::size_t>(slot)];
+        // Of the segments begun at t itself, the earliest that matches: the later ones were begun by
+        // this event or after it (a held contact's forces, solved once it is met).
+        std::size_t found = timeline.size();
         for (std::size_t q = timeline.size(); q-- > 0;) {
             if (timeline[q].start > t) continue;
+            if (found < timeline.size() && timeline[q].start < t) break;
             const BallState s = segmentState(timeline[q], R, r.physics, t - timeline[q].start);
             // A transition ends the very segment it explains (the segment it begins starts from a
             // state that may equal its before-state bit for bit).
@@ -90,10 +94,11 @@ SegmentBefore segmentBefore(const SimulationResult& r, int ball, int index)
                 if (tr.after == kNever || timeline[q].start + tr.after != t) continue;
             }
             if (s.position == before.position && s.velocity == before.velocity && s.spin == before.spin) {
-                k = q;
-                break;
+                found = q;
+                if (isTransition(ev.kind) || timeline[q].start < t) break;
             }
         }
+        if (found < timeline.size()) k = found;
     }
     SegmentBefore s;
     s.start = timeline[k].start;

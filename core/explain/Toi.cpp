@@ -97,6 +97,39 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
     std::array<double, 4> roots{};
     const int count = solveQuartic(q, roots);
     if (chosen == 0.0) touchingNow = true;
+    // The simulator met the contact later than t0 and at once: the bodies were touching and pressed
+    // together at the event (a held group solved again there; Detection.h's resting contact).
+    const double late = ev.time - p.t0;
+    if (!touchingNow && late > 0.0 && (chosen == kNever || std::abs(chosen - late) > 1e-12 * std::max(1.0, std::abs(ev.time)))) {
+        const Path a = p.a.shifted(late);
+        double now = kNever;
+        switch (ev.kind) {
+        case EventKind::BallBall:
+            now = ballBallTime(a, Ra, p.b.shifted(late), r.balls.at(static_cast<std::size_t>(ev.balls[1])).radius, 1e-300);
+            break;
+        case EventKind::BallCushion: now = cushionTime(a, Ra, *segment, 1e-300); break;
+        case EventKind::BallJaw: now = jawTime(a, Ra, r.table.jaws.at(static_cast<std::size_t>(ev.jaw)), 1e-300); break;
+        default: break;
+        }
+        if (now == 0.0) {
+            chosen = late;
+            touchingNow = true;
+        }
+    }
+    // A contact the simulator held when it solved a group again, touching at that instant (within
+    // kContactTolerance), is the event's contact then, whatever the old path's roots say.
+    if (!touchingNow && late > 0.0 && ev.held && ev.grouped && chosen != late) {
+        double f = 0.0;  // the gap polynomial at the event (highest degree first)
+        for (double c : q) f = f * late + c;
+        double D = 0.0;  // the touching distance, for f = |d|^2 - D^2 = 2 D gap + gap^2
+        if (ev.kind == EventKind::BallBall) D = touchDistance(Ra, r.balls.at(static_cast<std::size_t>(ev.balls[1])).radius);
+        if (ev.kind == EventKind::BallJaw) D = Ra + r.table.jaws.at(static_cast<std::size_t>(ev.jaw)).radius;
+        const double tolerance = ev.kind == EventKind::BallCushion ? kContactTolerance : kContactTolerance * (2.0 * D + kContactTolerance);
+        if (std::abs(f) <= tolerance) {
+            chosen = late;
+            touchingNow = true;
+        }
+    }
     if (chosen == kNever) {
         // The simulator predicted this contact from a later instant (a refresh of its prediction
         // window); the same polynomial from t0 rounds its root differently. Take the root nearest
@@ -139,7 +172,11 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
     }
     toi.root = chosen;
     toi.touching = touchingNow;
-    if (touchingNow)
+    if (touchingNow && chosen > 0.0)
+        toi.why = Text::tr("The bodies were touching at the event (within 10^{−10} m) and pressed together, found "
+                           "when a group of held contacts was solved again then: the contact begins at that instant, "
+                           "not at a root of f (Detection.h, resting contact).");
+    else if (touchingNow)
         toi.why = ev.kind == EventKind::BallPocket
                       ? Text::tr("The centre was already over the pocket at t_0: the ball drops at once (τ = 0).")
                       : Text::tr("The bodies were touching at t_0 (within 10^{−10} m) and approaching, or pressed "

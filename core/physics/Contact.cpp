@@ -9,44 +9,48 @@ namespace cuelab {
 
 namespace {
 
-// How a ball answers a contact force F: a = a0 + (c / m) F.
+// How a ball answers a contact force F in the force solver: a = a0 + (c / m) F.
 struct Response {
-    double c = 0.0;          // 1 sliding, 5/7 rolling (static friction), 0 held still by the cloth
+    double c = 0.0;          // contactResponse's rule; a ball at rest starts as free to roll off
     Vec2 a0 = Vec2::Zero();  // m/s^2, the acceleration without the force
     bool atRest = false;     // starts from rest: rolls off if pushed hard enough
     Vec2 restDirection = Vec2::Zero();  // unit, the direction a ball at rest is assumed to start in
+    bool pinned = false;  // held still by the cloth whatever the forces (no fixed point, see solveContacts)
 };
 
-bool restsOnCloth(const BallState& s, double radius)
+bool restsOnCloth(const BallState& s)
 {
     if (s.motion == MotionState::Sliding) return false;
     if (s.motion == MotionState::Rolling) return s.velocity.norm() <= kRollOffSpeed;
-    return classify(s, radius) != MotionState::Sliding && classify(s, radius) != MotionState::Rolling;
+    return true;
 }
 
 Response responseOf(const ContactBall& b, const PhysicsParams& p)
 {
     Response r;
     const BallState& s = b.state;
+    if (s.motion == MotionState::Pocketed) return r;
     if (s.motion == MotionState::Sliding) {
         const Vec2 u = slipVelocity(s, b.radius);
         r.c = 1.0;
         if (u.norm() > 0.0) r.a0 = -(p.muSlide * p.gravity) * u.normalized();
         return r;
     }
-    if (restsOnCloth(s, b.radius)) {
-        r.atRest = true;
-        r.c = 5.0 / 7.0;  // first assumed free to roll off with no resistance; see solveContacts
+    r.c = 5.0 / 7.0;
+    if (restsOnCloth(s)) {
+        r.atRest = true;  // first assumed free to roll off with no resistance; see solveContacts
         return r;
     }
-    r.c = 5.0 / 7.0;
     r.a0 = -(p.muRoll * p.gravity) * s.velocity.normalized();
     return r;
 }
 
-// The relative normal accelerations g = b + A N of the links for the given responses.
+// The relative normal accelerations g = b + A N of the links for the given responses, with the given
+// share of each link's curvature (or, with the
+// accelerations a0 all zero and `curvature` 0, the relative normal velocity changes A P of
+// impulses P).
 void buildSystem(const std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
-                 const std::vector<Response>& resp, Eigen::MatrixXd& A, Eigen::VectorXd& b)
+                 const std::vector<Response>& resp, double curvature, Eigen::MatrixXd& A, Eigen::VectorXd& b)
 {
     const Eigen::Index m = static_cast<Eigen::Index>(links.size());
     A.setZero(m, m);
@@ -54,7 +58,7 @@ void buildSystem(const std::vector<ContactBall>& balls, const std::vector<Contac
     auto acc0 = [&](int i) { return i < 0 ? Vec2(Vec2::Zero()) : resp[static_cast<std::size_t>(i)].a0; };
     for (Eigen::Index k = 0; k < m; ++k) {
         const ContactLink& lk = links[static_cast<std::size_t>(k)];
-        b(k) = (acc0(lk.b) - acc0(lk.a)).dot(lk.normal);
+        b(k) = (acc0(lk.b) - acc0(lk.a)).dot(lk.normal) + curvature * lk.curvature;
     }
     for (Eigen::Index l = 0; l < m; ++l) {
         const ContactLink& ll = links[static_cast<std::size_t>(l)];
@@ -75,10 +79,31 @@ void buildSystem(const std::vector<ContactBall>& balls, const std::vector<Contac
     }
 }
 
-// The active-set pivoting of the LCP g = b + A N, N >= 0, g >= 0, N g = 0 (A symmetric positive
-// semi-definite): links pressed now start active; a negative force leaves the set, a negative
-// acceleration joins it. Deterministic (ties go to the lowest index).
-bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorXd& N, std::vector<char>& active)
+// Projected Gauss-Seidel on the mixed LCP below: the fallback when the pivoting runs out of steps
+// (never seen on the soak; it keeps the contacts instead of dropping them). Bilateral rows are not
+// projected. Rows with no response (both bodies held by the cloth) keep no force.
+void gaussSeidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::vector<char>& bilateral,
+                 Eigen::VectorXd& N)
+{
+    const Eigen::Index m = b.size();
+    N.setZero(m);
+    for (int sweep = 0; sweep < 500; ++sweep) {
+        for (Eigen::Index k = 0; k < m; ++k) {
+            if (A(k, k) <= 0.0) continue;
+            const double g = b(k) + A.row(k).dot(N);
+            double x = N(k) - g / A(k, k);
+            if (!bilateral[static_cast<std::size_t>(k)]) x = std::max(0.0, x);
+            N(k) = x;
+        }
+    }
+}
+
+// The active-set pivoting of the mixed LCP g = b + A N (A symmetric positive semi-definite):
+// bilateral rows keep g = 0 with N free; the others N >= 0, g >= 0, N g = 0. Rows pressed now start
+// active; a negative force leaves the set, a negative g joins it. Deterministic (ties go to the
+// lowest index). Returns false (and the Gauss-Seidel answer) when it runs out of pivots.
+bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::vector<char>& bilateral,
+              int maxPivots, Eigen::VectorXd& N, std::vector<char>& active)
 {
     const Eigen::Index m = b.size();
     N.setZero(m);
@@ -86,8 +111,10 @@ bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorX
     double scale = 0.0;
     for (Eigen::Index k = 0; k < m; ++k) scale = std::max(scale, std::abs(b(k)));
     const double tolG = 1e-12 * scale + 1e-300;
-    for (Eigen::Index k = 0; k < m; ++k) active[static_cast<std::size_t>(k)] = b(k) < 0.0 ? 1 : 0;
-    for (int iteration = 0; iteration < 8 * static_cast<int>(m) + 16; ++iteration) {
+    for (Eigen::Index k = 0; k < m; ++k)
+        active[static_cast<std::size_t>(k)] = bilateral[static_cast<std::size_t>(k)] || b(k) < 0.0 ? 1 : 0;
+    const int pivots = maxPivots < 0 ? 8 * static_cast<int>(m) + 16 : maxPivots;
+    for (int iteration = 0; iteration < pivots; ++iteration) {
         std::vector<Eigen::Index> set;
         for (Eigen::Index k = 0; k < m; ++k)
             if (active[static_cast<std::size_t>(k)]) set.push_back(k);
@@ -102,13 +129,18 @@ bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorX
             }
             const Eigen::VectorXd x = As.completeOrthogonalDecomposition().solve(bs);
             Eigen::Index worst = -1;
-            for (Eigen::Index r = 0; r < s; ++r)
+            for (Eigen::Index r = 0; r < s; ++r) {
+                if (bilateral[static_cast<std::size_t>(set[static_cast<std::size_t>(r)])]) continue;
                 if (x(r) < 0.0 && (worst < 0 || x(r) < x(worst))) worst = r;
+            }
             if (worst >= 0 && x(worst) < -1e-12 * (x.cwiseAbs().maxCoeff() + 1e-300)) {
                 active[static_cast<std::size_t>(set[static_cast<std::size_t>(worst)])] = 0;
                 continue;
             }
-            for (Eigen::Index r = 0; r < s; ++r) N(set[static_cast<std::size_t>(r)]) = std::max(0.0, x(r));
+            for (Eigen::Index r = 0; r < s; ++r) {
+                const Eigen::Index k = set[static_cast<std::size_t>(r)];
+                N(k) = bilateral[static_cast<std::size_t>(k)] ? x(r) : std::max(0.0, x(r));
+            }
         }
         const Eigen::VectorXd g = b + A * N;
         Eigen::Index join = -1;
@@ -117,61 +149,64 @@ bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorX
         if (join < 0) return true;
         active[static_cast<std::size_t>(join)] = 1;
     }
-    N.setZero(m);
+    gaussSeidel(A, b, bilateral, N);
+    for (Eigen::Index k = 0; k < m; ++k)
+        active[static_cast<std::size_t>(k)] = bilateral[static_cast<std::size_t>(k)] || N(k) > 0.0 ? 1 : 0;
     return false;
 }
 
 }  // namespace
 
-std::vector<double> seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
-                                 const std::vector<double>& vn)
+double contactResponse(const BallState& s)
+{
+    switch (s.motion) {
+    case MotionState::Sliding: return 1.0;
+    case MotionState::Rolling: return restsOnCloth(s) ? 0.0 : 5.0 / 7.0;  // (rolling off from rest: at rest)
+    default: return 0.0;
+    }
+}
+
+void applyContactImpulse(BallState& s, double radius, double mass, const Vec2& J)
+{
+    const double c = contactResponse(s);
+    if (c == 0.0 || J.isZero(0.0)) return;
+    s.velocity += (c / mass) * J;
+    if (s.motion == MotionState::Rolling) {  // u stays 0
+        s.spin.x() = -s.velocity.y() / radius;
+        s.spin.y() = s.velocity.x() / radius;
+    }
+}
+
+Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
+                     const std::vector<double>& vn, const std::vector<char>& held)
 {
     const std::size_t n = balls.size();
     std::vector<Response> resp(n);
-    PhysicsParams none;
-    for (std::size_t i = 0; i < n; ++i) {
-        resp[i] = responseOf(balls[i], none);
-        if (resp[i].atRest) resp[i].c = 0.0;  // a ball at rest is not set moving by a re-seat: the cloth holds it
-    }
+    for (std::size_t i = 0; i < n; ++i) resp[i].c = contactResponse(balls[i].state);
     Eigen::MatrixXd A;
-    Eigen::VectorXd b;
-    buildSystem(balls, links, resp, A, b);
-    Eigen::VectorXd v(static_cast<Eigen::Index>(links.size()));
-    for (std::size_t k = 0; k < links.size(); ++k) v(static_cast<Eigen::Index>(k)) = vn[k];
-    const Eigen::VectorXd P = A.completeOrthogonalDecomposition().solve(-v);
-    std::vector<Vec2> dv(n, Vec2::Zero());
-    std::vector<double> out(links.size());
+    Eigen::VectorXd b, P;
+    buildSystem(balls, links, resp, 0.0, A, b);
+    for (std::size_t k = 0; k < links.size(); ++k) b(static_cast<Eigen::Index>(k)) = vn[k];
+    std::vector<char> active;
+    Seating out;
+    out.converged = solveLcp(A, b, held, -1, P, active);
+    const Eigen::VectorXd after = b + A * P;
+    std::vector<Vec2> J(n, Vec2::Zero());
+    out.impulse.resize(links.size());
+    out.after.resize(links.size());
     for (std::size_t k = 0; k < links.size(); ++k) {
-        out[k] = P(static_cast<Eigen::Index>(k));
+        out.impulse[k] = P(static_cast<Eigen::Index>(k));
+        out.after[k] = after(static_cast<Eigen::Index>(k));
         const ContactLink& l = links[k];
-        dv[static_cast<std::size_t>(l.a)] -= (resp[static_cast<std::size_t>(l.a)].c / balls[static_cast<std::size_t>(l.a)].mass * out[k]) * l.normal;
-        if (l.b >= 0)
-            dv[static_cast<std::size_t>(l.b)] += (resp[static_cast<std::size_t>(l.b)].c / balls[static_cast<std::size_t>(l.b)].mass * out[k]) * l.normal;
+        J[static_cast<std::size_t>(l.a)] -= out.impulse[k] * l.normal;
+        if (l.b >= 0) J[static_cast<std::size_t>(l.b)] += out.impulse[k] * l.normal;
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (dv[i].isZero(0.0)) continue;
-        BallState& s = balls[i].state;
-        s.velocity += dv[i];
-        if (s.motion != MotionState::Sliding) {  // rolling: u stays 0
-            s.motion = MotionState::Rolling;
-            s.spin.x() = -s.velocity.y() / balls[i].radius;
-            s.spin.y() = s.velocity.x() / balls[i].radius;
-        }
-    }
+    for (std::size_t i = 0; i < n; ++i) applyContactImpulse(balls[i].state, balls[i].radius, balls[i].mass, J[i]);
     return out;
 }
 
-Vec2 freeAcceleration(const BallState& s, double radius, const PhysicsParams& p)
-{
-    switch (classify(s, radius)) {
-    case MotionState::Sliding: return -(p.muSlide * p.gravity) * slipVelocity(s, radius).normalized();
-    case MotionState::Rolling: return -(p.muRoll * p.gravity) * s.velocity.normalized();
-    default: return Vec2::Zero();
-    }
-}
-
 ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
-                              const PhysicsParams& p)
+                              const PhysicsParams& p, ContactForces mode, int maxPivots)
 {
     const std::size_t n = balls.size();
     std::vector<Response> resp(n);
@@ -180,13 +215,14 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
     ContactSolution out;
     Eigen::MatrixXd A;
     Eigen::VectorXd b, N;
+    const std::vector<char> unilateral(links.size(), 0);
     std::vector<Vec2> force(n, Vec2::Zero());
     // A ball at rest either rolls off (when 5/7 |F| / m beats its rolling resistance mu_r g, which
     // then acts against the direction of F) or stays put, taking the force like a wall. Which one
     // depends on the forces: a few rounds of a fixed point, each a full solve.
     auto solveWith = [&] {
-        buildSystem(balls, links, resp, A, b);
-        out.converged = solveLcp(A, b, N, out.active);
+        buildSystem(balls, links, resp, mode == ContactForces::Pressed ? 1.0 : kHeldCurvatureShare, A, b);
+        out.converged = solveLcp(A, b, unilateral, maxPivots, N, out.active);
         std::fill(force.begin(), force.end(), Vec2::Zero());
         for (std::size_t k = 0; k < links.size(); ++k) {
             const double f = N(static_cast<Eigen::Index>(k));
@@ -194,34 +230,41 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
             if (links[k].b >= 0) force[static_cast<std::size_t>(links[k].b)] += f * links[k].normal;
         }
     };
-    bool settled = false;
-    for (int round = 0; round < 16 && !settled; ++round) {
-        solveWith();
-        settled = true;
-        for (std::size_t i = 0; i < n; ++i) {
-            Response& r = resp[i];
-            if (!r.atRest) continue;
-            const double drive = (5.0 / 7.0) * force[i].norm() / balls[i].mass;
-            const bool rolls = drive > p.muRoll * p.gravity && force[i].norm() > 0.0;
-            const Vec2 dir = rolls ? Vec2(force[i].normalized()) : Vec2(Vec2::Zero());
-            const double c = rolls ? 5.0 / 7.0 : 0.0;
-            if (c != r.c || (dir - r.restDirection).norm() > 1e-15) {
-                settled = false;
-                r.c = c;
-                r.restDirection = dir;
-                r.a0 = -(p.muRoll * p.gravity) * dir;
+    // No fixed point within 16 rounds (the direction a ball at rest would roll off in keeps changing
+    // with the forces): the balls whose answer still changed in the last round are held still from
+    // then on, like walls, and the others solved again until their answers hold (each pass pins at
+    // least one ball, so this ends); the motion the forces give is the one they were solved for.
+    std::vector<char> changed(n, 0);
+    for (std::size_t pass = 0; pass <= n; ++pass) {
+        bool settled = false;
+        for (int round = 0; round < 16 && !settled; ++round) {
+            solveWith();
+            settled = true;
+            for (std::size_t i = 0; i < n; ++i) {
+                Response& r = resp[i];
+                changed[i] = 0;
+                if (!r.atRest || r.pinned) continue;
+                const double drive = (5.0 / 7.0) * force[i].norm() / balls[i].mass;
+                const bool rolls = drive > p.muRoll * p.gravity * (1.0 + 1e-9) && force[i].norm() > 0.0;  // (beyond rounding:
+                // Motion.h's pushed rolling must find it accelerating)
+                const Vec2 dir = rolls ? Vec2(force[i].normalized()) : Vec2(Vec2::Zero());
+                const double c = rolls ? 5.0 / 7.0 : 0.0;
+                if (c != r.c || (dir - r.restDirection).norm() > 1e-15) {
+                    settled = false;
+                    changed[i] = 1;
+                    r.c = c;
+                    r.restDirection = dir;
+                    r.a0 = -(p.muRoll * p.gravity) * dir;
+                }
             }
         }
-    }
-    if (!settled) {
-        // No fixed point (the direction a ball at rest would roll off in keeps changing with the
-        // forces): those balls are held still instead, like walls, and the forces solved once more, so
-        // that the motion the forces give is the one the contacts were solved for.
-        for (Response& r : resp)
-            if (r.atRest) {
-                r.c = 0.0;
-                r.a0 = Vec2::Zero();
-                r.restDirection = Vec2::Zero();
+        if (settled) break;
+        for (std::size_t i = 0; i < n; ++i)
+            if (changed[i]) {
+                resp[i].pinned = true;
+                resp[i].c = 0.0;
+                resp[i].a0 = Vec2::Zero();
+                resp[i].restDirection = Vec2::Zero();
             }
         solveWith();
     }

@@ -6,10 +6,16 @@
 // an endless, converging sequence of ever weaker collisions (inelastic collapse). Instead:
 //
 // 1. The hold rule. When a collision's law would leave two bodies parting slower than kHoldSpeed
-//    while the cloth's friction presses them together (their free accelerations close the gap), the
-//    micro-bounce is dropped: a normal impulse takes the small separation speed away (that only
-//    removes energy, 1/2 m_eff v^2) and the pair is *held*. The chatter this replaces would have
-//    ended in the same contact; its amplitude is about v^2 / a, under 0.05 mm at 1 cm/s and 2 m/s^2.
+//    and the contact forces press them together (solveContacts in ContactForces::Pressed mode says
+//    the contact is active: the cloth's friction closes the gap faster than the bodies' curvature
+//    |v_t|^2 / D opens it), the micro-bounce is dropped: a normal impulse takes the small separation
+//    speed away (that only removes energy, 1/2 m_eff v^2) and the pair is *held*. The chatter this
+//    replaces would have ended in the same contact; its amplitude is about v^2 / a, under 0.05 mm at
+//    1 cm/s and 2 m/s^2. A pair the forces do not press keeps its law's result exactly (a thin cut).
+//    Every impulse of the hold and of a group's re-seating acts on the balls by one rule
+//    (contactResponse: a sliding ball takes it all, a rolling one 5/7 and keeps rolling, a ball at
+//    rest none), and only a held contact may draw its bodies together: every other one is pushed
+//    apart or left alone (seatContacts, a mixed complementarity problem), and released when it parts.
 //
 // 2. Held motion. While held, a contact carries a normal force N >= 0 through both centres (no
 //    torque). The forces of a group of held contacts solve the linear complementarity problem
@@ -57,6 +63,11 @@ inline constexpr double kSegmentGap = 1e-9;
 // or two balls rolling side by side at one speed) stays held with no force.
 inline constexpr double kRestingAcceleration = 1e-9;
 
+// m/s: the most a frozen rolling direction may cost a held segment in velocity (the rolling
+// resistance mu_r g acting along a direction off the true one by the turn): a slow rolling ball pushed
+// sideways turns fast, and kMaxTurn alone would cut its turn into ever shorter segments.
+inline constexpr double kTurnSpeedError = 1e-7;
+
 // m/s: a pushed rolling ball slower than this counts as rolling off from rest (its rolling
 // resistance acts against the push, not along a velocity that is rounding).
 inline constexpr double kRollOffSpeed = 1e-9;
@@ -72,6 +83,10 @@ struct HeldContact {
     int a = -1;
     ContactBody body = ContactBody::Ball;
     int other = -1;
+    double since = 0.0;  // s, when it began to be held (the simulator's bookkeeping; not compared)
+    // Held without the curvature allowance (its forces keep the frozen normal's distance): its
+    // tangential motion slows too fast for the allowance (the simulator's bookkeeping; not compared).
+    bool flat = false;
     bool operator==(const HeldContact& o) const { return a == o.a && body == o.body && other == o.other; }
 };
 
@@ -88,7 +103,26 @@ struct ContactLink {
     int a = -1;
     int b = -1;
     Vec2 normal = Vec2::Zero();  // unit, from a towards the other body
+    // m/s^2: |v_t|^2 / D, the relative tangential speed squared over the distance between the centre of
+    // a and the other body's centre (or, for a straight cushion, 0). Two bodies that slide past each
+    // other at the distance D part with this normal acceleration even with no force between them: the
+    // term of |d|'' that Detection.cpp's resting-contact test has, so that the solver, the hold and
+    // detection answer "pressed?" alike.
+    double curvature = 0.0;
 };
+
+// How a ball's centre answers an impulse or force F through it (Contact.h's one rule, for the hold of
+// a collision, the re-seating of a group and the forces alike): its velocity changes by c F / m with
+//   c = 1    sliding (the cloth's kinetic friction does not react to it at once),
+//   c = 5/7  rolling (static friction keeps it rolling: its spin follows, the cloth takes 2/7),
+//   c = 0    at rest, spinning in place or rolling off from rest slower than kRollOffSpeed (the cloth
+//            holds it against what a contact can do at once;
+//            the force solver lets such a ball roll off when the push beats its rolling resistance).
+double contactResponse(const BallState& s);
+
+// Applies a horizontal impulse J (N s) through the centre of a ball by that rule: v += c J / m, and a
+// rolling ball's horizontal spin follows its velocity (it keeps rolling). A ball at rest is unchanged.
+void applyContactImpulse(BallState& s, double radius, double mass, const Vec2& J);
 
 struct ContactSolution {
     std::vector<double> force;       // N, per link (>= 0)
@@ -96,21 +130,43 @@ struct ContactSolution {
     std::vector<double> accel;       // m/s^2, per link: the relative normal acceleration g (>= 0)
     std::vector<Vec2> push;          // m/s^2, per ball: its net contact force over its mass
     std::vector<MotionState> label;  // per ball: the motion label of its pushed segment
-    bool converged = true;           // false only if the pivoting ran out of steps (then forces are 0)
+    // false when the pivoting ran out of steps: then the forces are the projected Gauss-Seidel
+    // iteration's (non-negative, complementary to rounding only approximately), never dropped.
+    bool converged = true;
 };
 
+// Which relative normal acceleration the forces are solved for.
+//   Pressed: the true one, n.(a_b - a_a) + curvature: does the group press this contact now? (the
+//            one test of "pressed", shared with detection's resting contact);
+//   Held:    the forces of a held segment, whose normals are frozen over it: with kHeldCurvatureShare
+//            of the curvature, so that the pair's distance grows by (1 - share) curvature s^2 / 2 over
+//            a segment, far above the third-order error of the frozen normal (the segment turns the
+//            normal by at most about 2e-4 rad, turnLimit): a held pair never overlaps, and what its
+//            frozen normal leaves of relative normal speed, (1 - share) curvature s, is small for the
+//            re-seating to take away.
+inline constexpr double kHeldCurvatureShare = 0.9;
+enum class ContactForces : std::uint8_t { Pressed, Held };
+
 // The forces of a group of touching bodies whose relative normal velocities are zero.
+// `maxPivots` bounds the active-set pivoting (< 0: the default, 8 per link + 16); tests pass 0 to
+// reach the Gauss-Seidel fallback.
 ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
-                              const PhysicsParams& p);
+                              const PhysicsParams& p, ContactForces mode = ContactForces::Held,
+                              int maxPivots = -1);
 
-// Re-seats held contacts: the normal impulses that bring every link's relative normal velocity
-// (vn, m/s, > 0 parting) to zero together, applied to the balls (velocities, and the spins of rolling
-// balls, which keep rolling; a ball at rest is held by the cloth and takes no part). Removing relative normal velocity
-// never adds energy (it is -1/2 vn.A+ vn). Returns the impulses (N s per link, > 0 pushing apart).
-std::vector<double> seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
-                                 const std::vector<double>& vn);
-
-// The acceleration of a ball's centre in its free motion as the solver uses it (m/s^2).
-Vec2 freeAcceleration(const BallState& s, double radius, const PhysicsParams& p);
+// Re-seating: normal impulses at the links, applied together by contactResponse's rule, so that
+//   - a held link (held[k] != 0: its forces press it, or it is a collision's hold) ends with no
+//     relative normal velocity, vn' = 0: it may draw its bodies together, by at most its vn
+//     (<= kHoldSpeed), the micro-bounce the pressing force would end anyway;
+//   - any other link is compressive only: P >= 0, vn' >= 0, P vn' = 0 (a pair that parts keeps
+//     parting, and is released by the caller);
+// a mixed linear complementarity problem on the impulses. vn: m/s per link, > 0 parting.
+struct Seating {
+    std::vector<double> impulse;  // N s per link, > 0 pushing apart, < 0 drawing together
+    std::vector<double> after;    // m/s per link, the relative normal velocity after
+    bool converged = true;
+};
+Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
+                     const std::vector<double>& vn, const std::vector<char>& held);
 
 }  // namespace cuelab

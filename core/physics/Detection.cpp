@@ -46,7 +46,7 @@ double circleContactTime(const Vec2& d0, const Vec2& d1, const Vec2& d2, double 
         // past kContactTolerance: |d|'' = (press - vn^2) / |d| < 0, the gap's largest value is
         // gap + vn^2 / (2 |d|''|). That is a resting contact too (a root finder cannot see a gap of
         // 1e-18 m come back down), so the contact is now.
-        const double curvature = (press - normalSpeed * normalSpeed) / dist;
+        const double curvature = separationCurvature(d0, d1) + d0.dot(2.0 * d2) / dist;  // |d|'' at s = 0
         if (curvature < 0.0 && (dist - reach) + normalSpeed * normalSpeed / (-2.0 * curvature) <= kContactTolerance)
             return 0.0;
     }
@@ -105,14 +105,22 @@ double cushionTime(const Path& p, double radius, const CushionSegment& seg, doub
     const Quartic g = cushionGap(p, radius, seg);
     const double g0 = g[4], g1 = g[3], g2 = g[2];
     auto onSegment = [&](double s) { return onCushionSegment(p, seg, s); };
+    // A ball resting against the nose at an end of its segment (at the junction with the jaw, whose
+    // normal is the same there) rests against this cushion too, up to rounding of where its foot is.
+    auto touchesSegment = [&] {
+        const Vec2 along = seg.b - seg.a;
+        const double L = along.norm();
+        const double foot = (p.c0 - seg.a).dot(along / L);
+        return foot >= -kContactTolerance && foot <= L + kContactTolerance;
+    };
     // Touching: a contact now if the ball approaches, or rests against the nose (normal speed below
     // kRestingSpeed) while its acceleration presses it in.
-    if (std::abs(g0) <= kContactTolerance && (g1 < -kRestingSpeed || (g1 <= kRestingSpeed && g2 < 0.0)) && onSegment(0.0))
+    if (std::abs(g0) <= kContactTolerance && ((g1 < -kRestingSpeed && onSegment(0.0)) || (g1 <= kRestingSpeed && g1 >= -kRestingSpeed && g2 < 0.0 && touchesSegment())))
         return 0.0;
     // Parting so slowly that it comes back before the gap has opened past kContactTolerance (its
     // largest value g0 + g1^2 / (4 |g2|)): a resting contact, now (see circleContactTime).
     if (std::abs(g0) <= kContactTolerance && g1 > 0.0 && g2 < 0.0 && g0 + g1 * g1 / (-4.0 * g2) <= kContactTolerance &&
-        onSegment(0.0))
+        touchesSegment())
         return 0.0;
 
     // Roots of the quadratic, stably (no cancellation between -g1 and the square root).

@@ -14,6 +14,8 @@
 #include "Quartic.h"
 #include "Table.h"
 
+#include <algorithm>
+
 namespace cuelab {
 
 // m: bodies closer than this (or overlapping by rounding) count as touching.
@@ -23,7 +25,17 @@ inline constexpr double kContactTolerance = 1e-10;
 // approaching nor parting); the contact begins now if the accelerations press the bodies together.
 inline constexpr double kRestingSpeed = 1e-9;
 
-// (There is no separation floor: a push is a held contact, Contact.h.)
+// m/s^2: the part of |d|'' that the motion alone gives two bodies at the relative position d with
+// relative velocity v: |v_t|^2 / |d|, v_t the part of v across d (they turn about each other, so
+// their distance grows). The one test of "pressed" adds it to the relative normal acceleration
+// n.(a_b - a_a): detection's resting contact below, and the held contacts' solver (Contact.h's
+// ContactLink::curvature).
+inline double separationCurvature(const Vec2& d, const Vec2& v)
+{
+    const double dist = d.norm();
+    const double vn = v.dot(d) / dist;
+    return std::max(0.0, v.squaredNorm() - vn * vn) / dist;
+}
 
 // The gap functions whose roots are the contacts, as polynomials in s (Quartic order, highest degree
 // first). The detection functions below find their roots; core/explain shows them (one code path).

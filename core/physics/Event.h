@@ -47,9 +47,13 @@ struct Event {
     double approachSpeed = 0.0;        // m/s, normal relative speed just before (> 0 when approaching)
     Vec3 impulse = Vec3::Zero();       // N s, impulse on balls[0] (x, y, z in the table frame)
     // Sustained contact (Contact.h): the law's bodies would part slower than kHoldSpeed while the
-    // cloth's friction presses them together, so the collision ends with no normal separation and the
-    // pair is held in contact (a push) from here on. `holdImpulse` (N s, >= 0) is the normal impulse
-    // that took the law's small separation speed away; it is included in `impulse`.
+    // contact forces press them together, so the collision ends with no normal separation and the
+    // pair is held in contact (a push) from here on. `holdImpulse` (N s) is the normal impulse of the
+    // re-seating at this contact, signed: > 0 draws the bodies together (it took the law's small
+    // separation speed away), < 0 pushes them apart (a held group's other contacts drove them in). It
+    // acts on each ball by Contact.h's contactResponse (a rolling ball takes 5/7 of it, the cloth the
+    // rest); it is included in `impulse`. A collision that touches a held group but is not pressed
+    // (held false, grouped true) may carry one too (< 0 only).
     bool held = false;
     double holdImpulse = 0.0;
     // The event's balls were solved together with other held contacts (a group of three or more

@@ -8,6 +8,7 @@
 
 namespace cuelab::detail {
 
+
 bool Simulator::heldPair(int i, int j) const
 {
     for (const HeldContact& h : held_)
@@ -66,11 +67,39 @@ double firstCrossing(double c0, double c1, double c2, double target)
     return best;
 }
 
+// How long a held circle contact (ball-ball or ball-jaw) may keep its frozen normal, from the
+// relative path rel0 + rel1 s + rel2 s^2 of the other centre and the touching distance D:
+// `gap`, until the distance grows by kSegmentGap or the normal turns by kMaxTurn; `drop`, until the
+// tangential motion falls behind the curvature allowance of the held forces (kNever if it does not
+// slow down).
+struct CircleLimits {
+    double gap = kNever, drop = kNever;
+};
+
+CircleLimits circleLimits(const Vec2& rel0, const Vec2& rel1, const Vec2& rel2, double D)
+{
+    CircleLimits out;
+    const Vec2 n = rel0.normalized();
+    const double W = (rel1 - rel1.dot(n) * n).norm();
+    const double A = 2.0 * (rel2 - rel2.dot(n) * n).norm();
+    // The frozen normal lets the pair's distance grow by |tangential displacement|^2 / (2 D):
+    // at most kSegmentGap per segment, and the normal turns by at most kMaxTurn.
+    const double target = std::min(kMaxTurn * D, std::sqrt(2.0 * D * kSegmentGap));
+    if (A > 0.0) out.gap = (-W + std::sqrt(W * W + 2.0 * A * target)) / A;
+    else if (W > 0.0) out.gap = target / W;
+    // The held forces take kHeldCurvatureShare of the curvature |v_t|^2 / D, so the normal gives
+    // way by share |v_t|^2 s^2 / (2 D) over the segment, and the tangential displacement must keep
+    // ahead of it: its mean speed |v_t + a_t s / 2| may fall to sqrt(share) |v_t| at most (then the
+    // distance never drops below D: |d|^2 = (D - h s^2)^2 + s^2 |v_t + a_t s / 2|^2).
+    const Vec2 vt = rel1 - rel1.dot(n) * n, ht = rel2 - rel2.dot(n) * n;  // ht = a_t / 2
+    if (vt.dot(ht) < 0.0 && ht.norm() > 0.0) out.drop = (1.0 - std::sqrt(kHeldCurvatureShare)) * vt.norm() / ht.norm();
+    return out;
+}
+
 }  // namespace
 
-double Simulator::turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts, double t) const
+double Simulator::turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts) const
 {
-    (void)t;
     double limit = kMaxHeldSegment;
     const double g = p_.gravity;
     for (int m : members) {
@@ -92,7 +121,18 @@ double Simulator::turnLimit(const std::vector<int>& members, const std::vector<H
         const double along = rate.dot(e);
         const double across = (rate - along * e).norm();
         const double den = across - kMaxTurn * along;
-        if (across > 1e-12 * rate.norm() && den > 0.0) limit = std::min(limit, kMaxTurn * n0 / den);
+        if (!(across > 1e-12 * rate.norm())) continue;
+        double turn = den > 0.0 ? kMaxTurn * n0 / den : kNever;  // s: until it turns by kMaxTurn
+        if (s.motion == MotionState::Rolling) {
+            // A rolling ball's frozen direction costs at most mu_r g (turn) ds of velocity: allow up
+            // to kTurnSpeedError over the segment (turn ~ across s / n0), but never a turn beyond
+            // 1/4 rad (its resistance must keep acting against the motion).
+            const double budget = std::sqrt(kTurnSpeedError * n0 / (p_.muRoll * g * across));
+            const double den4 = across - 0.25 * along;
+            const double quarter = den4 > 0.0 ? 0.25 * n0 / den4 : kNever;
+            turn = std::min(std::max(turn, budget), quarter);
+        }
+        limit = std::min(limit, turn);
     }
     for (const HeldContact& h : contacts) {
         const Path pa = path_[at(h.a)];
@@ -120,27 +160,23 @@ double Simulator::turnLimit(const std::vector<int>& members, const std::vector<H
             rel2 = -pa.c2;
             D = radius(h.a) + jaw.radius;
         }
-        const Vec2 n = rel0.normalized();
-        const double W = (rel1 - rel1.dot(n) * n).norm();
-        const double A = 2.0 * (rel2 - rel2.dot(n) * n).norm();
-        // The frozen normal lets the pair's distance grow by |tangential displacement|^2 / (2 D):
-        // at most kSegmentGap per segment, and the normal turns by at most kMaxTurn.
-        const double target = std::min(kMaxTurn * D, std::sqrt(2.0 * D * kSegmentGap));
-        double s = kNever;
-        if (A > 0.0) s = (-W + std::sqrt(W * W + 2.0 * A * target)) / A;
-        else if (W > 0.0) s = target / W;
-        limit = std::min(limit, s);
+        const CircleLimits l = circleLimits(rel0, rel1, rel2, D);
+        limit = std::min(limit, l.gap);
+        if (!h.flat) limit = std::min(limit, l.drop);  // (a flat contact's forces allow no curvature)
     }
     return std::max(limit, 1e-9);  // s: a floor, so that solving again always moves time on
 }
 
-int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::vector<BallState>& eventStates,
-                      const HeldContact* candidate, bool forceHold, double candidateSeparation)
+Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBalls,
+                                     const std::vector<BallState>& eventStates, const HeldContact* candidate,
+                                     bool forceHold, int regroup)
 {
     lastGroupSize_ = 0;
+    lastCandidateImpulse_ = 0.0;
     bool touched = candidate != nullptr;
     for (int b : eventBalls) touched = touched || heldCount_[at(b)] > 0;
-    if (!touched) return 0;
+    touched = touched || (regroup >= 0 && heldCount_[at(regroup)] > 0);
+    if (!touched) return Settled::Untouched;
 
     // The group: the balls reachable from the event's balls over held contacts, and the candidate.
     std::vector<int> members;
@@ -149,6 +185,7 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
         if (std::find(members.begin(), members.end(), b) == members.end()) members.push_back(b);
     };
     for (int b : eventBalls) addMember(b);
+    if (regroup >= 0) addMember(regroup);
     if (candidate) {
         addMember(candidate->a);
         if (candidate->body == ContactBody::Ball) addMember(candidate->other);
@@ -171,6 +208,14 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
     std::vector<ContactBall> balls(members.size());
     auto local = [&](int b) {
         return static_cast<int>(std::find(members.begin(), members.end(), b) - members.begin());
+    };
+    // The forces are solved for the motion each ball's new segment will have: the label its numbers
+    // give (a slip that has as good as ended rolls out), as beginSegment gives a free one.
+    auto relabel = [](ContactBall& cb) {
+        BallState& st = cb.state;
+        if (st.motion == MotionState::Pocketed) return;
+        if (st.motion == MotionState::Sliding && slipHasEnded(st, cb.radius)) rollOut(st, cb.radius);
+        st.motion = classify(st, cb.radius);
     };
     std::vector<std::pair<std::size_t, int>> logged;  // transitions of other members due now: event, ball
     for (std::size_t m = 0; m < members.size(); ++m) {
@@ -196,122 +241,335 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
         }
         balls[m].radius = radius(b);
         balls[m].mass = mass(b);
+        relabel(balls[m]);
     }
 
-    // The contacts that still hold: touching (within kHeldGap), no faster normal relative speed than
-    // kHoldSpeed, nobody pocketed. What normal relative speed the held contacts have left (the frozen
-    // normal of a push off the line of centres, or the group's other events) is taken away by normal
-    // impulses at the contacts, all together ("re-seating", Contact.h: seatContacts; it only removes
-    // energy).
+    // The contacts that may hold: touching (within kHeldGap), no faster normal relative speed than
+    // kHoldSpeed, nobody pocketed (the others are released here), and the candidate.
     std::vector<HeldContact> contacts;
     std::vector<ContactLink> links;
     std::vector<double> normalSpeeds;
-    auto consider = [&](const HeldContact& h, bool isCandidate) {
+    // The geometry of a contact from the group's states: its link (normal, curvature), gap and
+    // relative normal speed (> 0 parting). False when a body is pocketed, or a cushion's foot has
+    // left its segment.
+    auto geometry = [&](const HeldContact& h, ContactLink& link, double& gap, double& vn) {
         const BallState& sa = balls[at(local(h.a))].state;
-        if (sa.motion == MotionState::Pocketed) return;
-        ContactLink link;
+        if (sa.motion == MotionState::Pocketed) return false;
         link.a = local(h.a);
-        double gap = 0.0, vn = 0.0;
+        link.b = -1;
         if (h.body == ContactBody::Ball) {
             const BallState& sb = balls[at(local(h.other))].state;
-            if (sb.motion == MotionState::Pocketed) return;
+            if (sb.motion == MotionState::Pocketed) return false;
             const Vec2 d = sb.position - sa.position;
+            const Vec2 v = sb.velocity - sa.velocity;
             link.b = local(h.other);
             link.normal = d.normalized();
             gap = d.norm() - touchDistance(radius(h.a), radius(h.other));
-            vn = (sb.velocity - sa.velocity).dot(link.normal);
-        } else if (h.body == ContactBody::Cushion) {
+            vn = v.dot(link.normal);
+            link.curvature = separationCurvature(d, v);
+            return true;
+        }
+        if (h.body == ContactBody::Cushion) {
             const CushionSegment& seg = table_.cushions[at(h.other)];
             link.normal = -seg.normal;
             gap = (sa.position - seg.a).dot(seg.normal) - radius(h.a);
             vn = -sa.velocity.dot(link.normal);
+            link.curvature = 0.0;
             const double foot = (sa.position - seg.a).dot((seg.b - seg.a).normalized());
-            if (!isCandidate && (foot < 0.0 || foot > (seg.b - seg.a).norm())) return;
-        } else {
-            const JawTip& jaw = table_.jaws[at(h.other)];
-            const Vec2 d = jaw.centre - sa.position;
-            link.normal = d.normalized();
-            gap = d.norm() - radius(h.a) - jaw.radius;
-            vn = -sa.velocity.dot(link.normal);
+            return foot >= -kContactTolerance && foot <= (seg.b - seg.a).norm() + kContactTolerance;  // (as detection)
         }
-        if (!isCandidate && (gap > kHeldGap || gap < -1e-9 || std::abs(vn) > kHoldSpeed)) return;  // parted, or struck
+        const JawTip& jaw = table_.jaws[at(h.other)];
+        const Vec2 d = jaw.centre - sa.position;
+        link.normal = d.normalized();
+        gap = d.norm() - radius(h.a) - jaw.radius;
+        vn = -sa.velocity.dot(link.normal);
+        link.curvature = separationCurvature(d, -sa.velocity);
+        return true;
+    };
+    auto consider = [&](const HeldContact& h, bool isCandidate) {
+        ContactLink link;
+        double gap = 0.0, vn = 0.0;
+        const bool valid = geometry(h, link, gap, vn);
+        if (!isCandidate && (!valid || gap > kHeldGap || gap < -1e-9 || std::abs(vn) > kHoldSpeed)) return;  // parted, or struck
+        if (isCandidate && balls[at(link.a)].state.motion == MotionState::Pocketed) return;
         contacts.push_back(h);
         links.push_back(link);
         normalSpeeds.push_back(vn);
     };
     for (std::size_t k : fromHeld) consider(held_[k], false);
-    if (candidate) consider(*candidate, true);
-
+    if (candidate) {
+        HeldContact c = *candidate;
+        c.since = t;
+        for (const HeldContact& h : held_)
+            if (h == c) c.since = h.since;
+        consider(c, true);
+    }
+    const std::size_t candidateLink = candidate && !contacts.empty() && contacts.back() == *candidate ? contacts.size() - 1
+                                                                                                      : contacts.size();
     lastGroupSize_ = links.size() + (members.size() - eventBalls.size());  // contacts, and others re-segmented
+
+    // Which contacts the forces press now (the one test of "pressed", with the curvature term). The
+    // candidate is held when pressed, or when holding is forced (no approach, or a law that does not
+    // part the bodies: it would be found again at this instant).
+    std::vector<char> heldMask(links.size(), 0);
+    if (!links.empty()) {
+        const ContactSolution probe = solveContacts(balls, links, p_, ContactForces::Pressed);
+        for (std::size_t k = 0; k < links.size(); ++k) heldMask[k] = probe.active[k];
+    }
+    bool candidateHeld = false;
+    if (candidateLink < links.size()) {
+        candidateHeld = heldMask[candidateLink] || forceHold;
+        heldMask[candidateLink] = candidateHeld ? 1 : 0;
+    }
+    if (candidate && !candidateHeld && fromHeld.empty()) return Settled::NotPressed;  // its law stands
+
+    // Re-seating (seatContacts): the held contacts lose the normal speed left by the frozen normal
+    // of a push off the line of centres, the group's other events, or the candidate's law; the others
+    // are only pushed apart. It never adds energy. A re-seat that would change a ball's velocity by
+    // more than kHoldSpeed per contact (nearly parallel normals: a ball wedged at a rail and its jaw)
+    // is solved again with every contact pushing only.
     bool seat = false;
     for (double vn : normalSpeeds) seat = seat || std::abs(vn) > 1e-14;  // m/s: rounding is left alone
-    if (seat) seatContacts(balls, links, normalSpeeds);
-    ContactSolution sol;
-    if (!links.empty()) sol = solveContacts(balls, links, p_);
-    bool seatedOnly = false;
-    (void)candidateSeparation;
-    if (candidate) {
-        const bool pressed = !links.empty() && contacts.back() == *candidate && sol.active.back();
-        // A resting candidate (no approach, up to kRestingSpeed, or a law that does not part the
-        // bodies) is held even when the solve does not press it (with no force: its bodies part as
-        // they will), so that it cannot be found again and again at one instant; the next solve
-        // releases it.
-        if (!pressed && !forceHold) {
-            // A pair on its own keeps its law's result. In a held group the candidate (parting slower
-            // than kHoldSpeed) is seated with the others instead, its separation taken away as theirs
-            // are: micro-bounces inside a pressed group are inelastic, and re-seating the others
-            // cannot drive it back in at this instant (a ball wedged between a rail and a jaw). It is
-            // not held; the next solve sees it as any touching pair.
-            if (fromHeld.empty()) return 2;
-            seatedOnly = true;
-        } else if (!links.empty() && contacts.back() == *candidate) {
-            sol.active.back() = 1;
+    std::vector<char> parting(links.size(), 0);
+    if (seat) {
+        const std::vector<ContactBall> before = balls;
+        Seating seating = seatContacts(balls, links, normalSpeeds, heldMask);
+        // Bounded, and never adding energy (a projection cannot, but a nearly singular system's
+        // rounding can): otherwise every contact only pushes, and if even that fails the states are
+        // left as they are (the contacts that still approach are then met by detection).
+        double energyBefore = 0.0;
+        for (const ContactBall& cb : before) energyBefore += kineticEnergy(cb.state, cb.radius, cb.mass);
+        auto sound = [&] {
+            // Solved: every held contact left at rest and none approaching (a nearly singular system,
+            // nearly parallel normals, can end with a residue that breaks both).
+            for (std::size_t k = 0; k < links.size(); ++k)
+                if (seating.after[k] < -kRestingSpeed || (heldMask[k] && seating.after[k] > kRestingSpeed)) return false;
+            double energy = 0.0;
+            for (std::size_t m = 0; m < balls.size(); ++m) {
+                int count = 0;
+                for (const ContactLink& l : links) count += (l.a == static_cast<int>(m) || l.b == static_cast<int>(m)) ? 1 : 0;
+                if ((balls[m].state.velocity - before[m].state.velocity).norm() > kHoldSpeed * count + 1e-12) return false;
+                energy += kineticEnergy(balls[m].state, balls[m].radius, balls[m].mass);
+            }
+            return energy <= energyBefore * (1.0 + 1e-13);  // (rounding of a projection)
+        };
+        if (!sound()) {
+            balls = before;
+            std::fill(heldMask.begin(), heldMask.end(), 0);
+            if (candidateLink < links.size() && forceHold) heldMask[candidateLink] = 1;
+            seating = seatContacts(balls, links, normalSpeeds, heldMask);
+            if (!sound()) {
+                balls = before;
+                std::fill(heldMask.begin(), heldMask.end(), 0);
+                std::fill(seating.impulse.begin(), seating.impulse.end(), 0.0);
+                seating.after = normalSpeeds;
+            }
+        }
+        for (ContactBall& cb : balls)  // (as beginSegment labels a free segment)
+            if (cb.state.motion != MotionState::Pocketed) cb.state.motion = classify(cb.state, cb.radius);
+        for (std::size_t k = 0; k < links.size(); ++k) parting[k] = !heldMask[k] && seating.after[k] > kRestingSpeed;
+        if (candidateLink < links.size()) lastCandidateImpulse_ = seating.impulse[candidateLink];
+    }
+    if (candidateLink < links.size() && !heldMask[candidateLink]) candidateHeld = false;
+
+    // The contacts kept: not parting, and pressed by the forces of the re-seated states (or resting:
+    // no force, parting no faster than kRestingAcceleration), and the held candidate.
+    // A contact the re-seating left approaching (it was refused: unsound) is let go: detection meets
+    // it at once as a collision, never held while its bodies move into each other.
+    std::vector<std::size_t> open;  // links neither parting, approaching nor an unheld candidate
+    std::vector<char> approaching(links.size(), 0);
+    for (std::size_t k = 0; k < links.size(); ++k) {
+        double gap = 0.0, vn = 0.0;
+        geometry(contacts[k], links[k], gap, vn);  // the curvature of the re-seated velocities
+        approaching[k] = vn < -kRestingSpeed;
+        if (parting[k] || approaching[k] || (k == candidateLink && !candidateHeld)) continue;
+        open.push_back(k);
+    }
+    std::vector<char> keep(links.size(), 0), stillSkipped(links.size(), 0);
+    {
+        std::vector<ContactLink> trial;
+        for (std::size_t k : open) trial.push_back(links[k]);
+        ContactSolution pressed;
+        if (!trial.empty()) pressed = solveContacts(balls, trial, p_, ContactForces::Pressed);
+        auto still = [&](int m) {  // the ball neither moves nor is pushed into motion
+            if (m < 0) return true;
+            const std::size_t q = at(m);
+            const MotionState label = pressed.label[q];
+            return (label == MotionState::Stationary || label == MotionState::Spinning) && pressed.push[q].isZero(0.0);
+        };
+        for (std::size_t r = 0; r < open.size(); ++r) {
+            const std::size_t k = open[r];
+            // Nothing to hold (unless the others' forces move them), but for the contact just met: let
+            // go at rest, it would be met again as soon as another contact's forces stir its balls.
+            if (k != candidateLink && still(links[k].a) && still(links[k].b)) {
+                stillSkipped[k] = 1;
+                continue;
+            }
+            // (A contact that began to be held at this very instant stays held through it: letting
+            // it go would only have it met again at the same instant, over and over.)
+            keep[k] = pressed.active[r] || pressed.accel[r] <= kRestingAcceleration || k == candidateLink ||
+                      contacts[k].since == t;
         }
     }
+    // The held segments' forces are solved with frozen normals (ContactForces::Held), which press
+    // harder than the true ones, and a contact let go may part so slowly that it would be back before
+    // its gap opens past kContactTolerance: detection (Detection.h) would find such a contact again at
+    // once, and it would be found, held and let go over and over. So every contact that detection
+    // would find now, on the paths the kept contacts' forces give, is kept too, until none is left
+    // (each joins at most once).
+    ContactSolution sol;
+    std::vector<ContactLink> keptLinks;
+    // A held contact whose tangential motion slows so fast that the curvature allowance would end
+    // the segment before its normal has turned (or its gap grown) enough to matter is held flat: its
+    // forces allow no curvature, so nothing limits the segment for it but the frozen normal. (Else
+    // the segments shrink geometrically as the tangential speed runs down: a Zeno run of solves.)
+    std::vector<char> flat(links.size(), 0);
+    auto flatten = [&] {
+        std::vector<Path> paths(members.size());
+        for (std::size_t m = 0; m < members.size(); ++m) {
+            BallState st = balls[m].state;
+            Vec2 push = Vec2::Zero();
+            if (st.motion != MotionState::Pocketed) {
+                push = sol.push[m];
+                st.motion = sol.label[m];
+                if (push.isZero(0.0)) st.motion = classify(st, balls[m].radius);
+            }
+            paths[m] = pathOf(st, balls[m].radius, p_, push);
+        }
+        bool flattened = false;
+        std::size_t r = 0;
+        for (std::size_t k = 0; k < links.size(); ++k) {
+            if (!keep[k]) continue;
+            const HeldContact& h = contacts[k];
+            ContactLink& link = keptLinks[r++];
+            if (h.body == ContactBody::Cushion || flat[k]) continue;
+            const Path& pa = paths[at(local(h.a))];
+            CircleLimits l;
+            if (h.body == ContactBody::Ball) {
+                const Path& pb = paths[at(local(h.other))];
+                l = circleLimits(pb.c0 - pa.c0, pb.c1 - pa.c1, pb.c2 - pa.c2, touchDistance(radius(h.a), radius(h.other)));
+            } else {
+                const JawTip& jaw = table_.jaws[at(h.other)];
+                l = circleLimits(jaw.centre - pa.c0, -pa.c1, -pa.c2, radius(h.a) + jaw.radius);
+            }
+            if (l.drop < l.gap) {
+                flat[k] = 1;
+                link.curvature = 0.0;
+                flattened = true;
+            }
+        }
+        if (flattened) sol = solveContacts(balls, keptLinks, p_, ContactForces::Held);
+    };
+    for (;;) {
+        keptLinks.clear();
+        for (std::size_t k = 0; k < links.size(); ++k)
+            if (keep[k]) {
+                keptLinks.push_back(links[k]);
+                if (flat[k]) keptLinks.back().curvature = 0.0;
+            }
+        sol = keptLinks.empty() ? ContactSolution{} : solveContacts(balls, keptLinks, p_, ContactForces::Held);
+        if (!keptLinks.empty()) flatten();
+        auto pathOfMember = [&](int m) {
+            const std::size_t q = at(m);
+            BallState st = balls[q].state;
+            Vec2 push = Vec2::Zero();
+            if (!keptLinks.empty() && st.motion != MotionState::Pocketed) {
+                push = sol.push[q];
+                st.motion = sol.label[q];
+            }
+            if (push.isZero(0.0) && st.motion != MotionState::Pocketed) st.motion = classify(st, balls[q].radius);
+            return pathOf(st, balls[q].radius, p_, push);
+        };
+        bool joined = false;
+        // A contact left out as still must stay so: if the kept contacts' forces set one of its balls
+        // moving, it is kept after all (else it is met at once, left out, met again: a cycle).
+        for (std::size_t k = 0; k < links.size(); ++k) {
+            if (keep[k] || !stillSkipped[k] || keptLinks.empty()) continue;
+            auto moves = [&](int m) {
+                if (m < 0) return false;
+                const std::size_t q = at(m);
+                return !(sol.label[q] == MotionState::Stationary || sol.label[q] == MotionState::Spinning) || !sol.push[q].isZero(0.0);
+            };
+            if (moves(links[k].a) || moves(links[k].b)) {
+                keep[k] = 1;
+                joined = true;
+            }
+        }
+        for (std::size_t k = 0; k < links.size(); ++k) {
+            if (keep[k] || approaching[k]) continue;
+            const HeldContact& h = contacts[k];
+            const Path pa = pathOfMember(links[k].a);
+            constexpr double kNow = 1e-300;  // s: detection's horizon, "at once"
+            double when = kNever;
+            if (h.body == ContactBody::Ball)
+                when = ballBallTime(pa, radius(h.a), pathOfMember(links[k].b), radius(h.other), kNow);
+            else if (h.body == ContactBody::Cushion)
+                when = cushionTime(pa, radius(h.a), table_.cushions[at(h.other)], kNow);
+            else
+                when = jawTime(pa, radius(h.a), table_.jaws[at(h.other)], kNow);
+            if (when == 0.0) {
+                keep[k] = 1;
+                joined = true;
+            }
+        }
+        if (!joined) break;
+    }
+    std::vector<HeldContact> kept;
+    for (std::size_t k = 0; k < links.size(); ++k)
+        if (keep[k]) {
+            kept.push_back(contacts[k]);
+            kept.back().flat = flat[k];
+        }
+    if (candidateLink < links.size()) candidateHeld = keep[candidateLink];  // (kept at rest: nothing to hold)
 
-    // Commit: the group's contacts are replaced by those that are active.
+    // Commit: the group's contacts are replaced by those kept, whose forces (frozen normals) give
+    // every ball of the group its pushed segment.
     for (std::size_t r = fromHeld.size(); r-- > 0;) {
         const HeldContact& h = held_[fromHeld[r]];
         --heldCount_[at(h.a)];
         if (h.body == ContactBody::Ball) --heldCount_[at(h.other)];
         held_.erase(held_.begin() + static_cast<std::ptrdiff_t>(fromHeld[r]));
     }
-    std::vector<HeldContact> kept;
-    auto still = [&](int m) {  // the ball neither moves nor is pushed into motion
-        if (m < 0) return true;
-        const std::size_t q = at(m);
-        const MotionState label = sol.label.empty() ? balls[q].state.motion : sol.label[q];
-        return (label == MotionState::Stationary || label == MotionState::Spinning) && (sol.push.empty() || sol.push[q].isZero(0.0));
-    };
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
-        if (!links.empty() && still(links[k].a) && still(links[k].b)) continue;  // nothing to hold
-        const bool isCandidate = candidate && k + 1 == contacts.size() && contacts[k] == *candidate;
-        const bool resting = !isCandidate && sol.accel[k] <= kRestingAcceleration;
-        if (!sol.converged || !(sol.active[k] || resting)) continue;
-        kept.push_back(contacts[k]);
-        held_.push_back(contacts[k]);
-        ++heldCount_[at(contacts[k].a)];
-        if (contacts[k].body == ContactBody::Ball) ++heldCount_[at(contacts[k].other)];
+    for (const HeldContact& h : kept) {
+        held_.push_back(h);
+        ++heldCount_[at(h.a)];
+        if (h.body == ContactBody::Ball) ++heldCount_[at(h.other)];
     }
+    // A ball of the group that had and keeps no push, and that the re-seating left alone (a wall of
+    // the group, or a ball held by resting contacts only), keeps its segment: solving the group again
+    // changes nothing of its motion.
+    std::vector<char> idle(members.size(), 0);
     for (std::size_t m = 0; m < members.size(); ++m) {
         const int b = members[m];
         BallState s = balls[m].state;
         Vec2 push = Vec2::Zero();
-        if (!links.empty() && sol.converged && heldCount_[at(b)] > 0 && s.motion != MotionState::Pocketed) {
+        if (!keptLinks.empty() && heldCount_[at(b)] > 0 && s.motion != MotionState::Pocketed) {
             push = sol.push[m];
             s.motion = sol.label[m];
         }
+        if (push_[at(b)].isZero(0.0) && push.isZero(0.0) &&
+            std::find(eventBalls.begin(), eventBalls.end(), b) == eventBalls.end()) {
+            const BallState now = stateNow(b, t);
+            idle[m] = now.motion == s.motion && now.position == s.position && now.velocity == s.velocity && now.spin == s.spin;
+        }
+        if (idle[m]) continue;
         state_[at(b)] = s;
         push_[at(b)] = push;
         path_[at(b)] = pathOf(s, radius(b), p_, push);
     }
     bool pushed = false;
     for (int b : members) pushed = pushed || !push_[at(b)].isZero(0.0);
-    const double limit = pushed ? t + turnLimit(members, kept, t) : kNever;
+    // (Held contacts without force still turn their normals: the segment is bounded for them too.)
+    const double limit = pushed || !kept.empty() ? t + turnLimit(members, kept) : kNever;
     for (std::size_t m = 0; m < members.size(); ++m) {
         const int b = members[m];
         regroupAt_[at(b)] = heldCount_[at(b)] > 0 ? limit : kNever;
-        beginSegment(b, t, state_[at(b)], push_[at(b)]);
+        if (!idle[m]) {
+            beginSegment(b, t, state_[at(b)], push_[at(b)]);
+        } else {  // its window of predictions ends at its own transition or at the group's next solve
+            const double s0 = start_[at(b)];
+            box_[at(b)] = boxOf(path_[at(b)], std::min(end_[at(b)], regroupAt_[at(b)]) - s0);
+        }
     }
     for (int b : members) predictOwn(b, t);
     for (int b : members) predictPairs(b, t);
@@ -319,8 +577,8 @@ int Simulator::settle(double t, const std::vector<int>& eventBalls, const std::v
         r_.events[index].after[0] = state_[at(b)];
         r_.events[index].grouped = true;
     }
-    return seatedOnly ? 3 : 1;
+    if (!candidate || candidateHeld) return Settled::Held;
+    return Settled::SeatedOnly;
 }
-
 
 }  // namespace cuelab::detail

@@ -283,10 +283,9 @@ BallState applyTransition(const BallState& s, double radius, const PhysicsParams
     // in a push along the line of centres (then made exact), small otherwise (the state goes on).
     const double scale = s.velocity.norm() + radius * s.spin.head<2>().norm() + push.norm() * t.after;
     if (s.motion == MotionState::Sliding) {
-        if (slipVelocity(out, radius).norm() <= 1e-9 * scale) {
-            out.spin.x() = -out.velocity.y() / radius;
-            out.spin.y() = out.velocity.x() / radius;
-        }
+        // (The residue is taken off as the cloth would, never adding energy, where setting the spin
+        // from the velocity could.)
+        if (slipVelocity(out, radius).norm() <= 1e-9 * scale || slipHasEnded(out, radius)) rollOut(out, radius);
     } else if (s.motion == MotionState::Rolling) {
         if (out.velocity.norm() <= 1e-9 * scale) {
             out.velocity.setZero();
@@ -301,6 +300,19 @@ BallState applyTransition(const BallState& s, double radius, const PhysicsParams
     }
     out.motion = classify(out, radius);
     return out;
+}
+
+bool slipHasEnded(const BallState& s, double radius)
+{
+    const double speeds = s.velocity.norm() + radius * s.spin.head<2>().norm();
+    return slipVelocity(s, radius).norm() <= kSlipEnded * speeds;
+}
+
+void rollOut(BallState& s, double radius)
+{
+    s.velocity -= (2.0 / 7.0) * slipVelocity(s, radius);
+    s.spin.x() = -s.velocity.y() / radius;
+    s.spin.y() = s.velocity.x() / radius;
 }
 
 double translationalEnergy(const BallState& s, double mass)

@@ -78,6 +78,14 @@ BallState evolve(const BallState& s, double radius, const PhysicsParams& p, doub
 BallState applyTransition(const BallState& s, double radius, const PhysicsParams& p, const Vec2& push);
 
 // Translational plus rotational kinetic energy (J). A pocketed ball has none.
+// A slip no larger than kSlipEnded of the ball's speeds (|v| + R |w_xy|) has as good as ended: its
+// direction is rounding, so is the sliding friction it would steer.
+inline constexpr double kSlipEnded = 1e-8;
+bool slipHasEnded(const BallState& s, double radius);
+// Takes the slip off as the cloth does: a friction impulse at the contact point, -2/7 m u on the
+// centre, which keeps the angular momentum about that point and never adds energy. The ball rolls.
+void rollOut(BallState& s, double radius);
+
 double kineticEnergy(const BallState& s, double radius, double mass);
 // Its two parts, 1/2 m |v|^2 and 1/2 I |w|^2 (J); kineticEnergy() is their sum.
 double translationalEnergy(const BallState& s, double mass);

@@ -34,6 +34,9 @@ struct MotionSegment {
     // push (Contact.h), constant over the segment; zero for free motion. Motion.h's forced
     // functions evolve such a segment (segmentState below does the right thing for both).
     Vec2 push = Vec2::Zero();
+    // The ball belongs to a group of held contacts over this segment (Contact.h): its segments may
+    // begin without an event of its own, when the group is solved again.
+    bool held = false;
 };
 
 // The state of a segment's ball `dt` seconds after the segment's start, free or pushed, without

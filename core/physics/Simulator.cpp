@@ -36,7 +36,7 @@ void Simulator::beginSegment(int i, double t, const BallState& s, const Vec2& pu
     const Transition tr = nextTransition(st, radius(i), p_, push);
     end_[at(i)] = tr.after == kNever ? kNever : t + tr.after;
     box_[at(i)] = boxOf(path_[at(i)], std::min(tr.after, regroupAt_[at(i)] - t));
-    r_.timelines[at(i)].push_back(MotionSegment{t, st, push});
+    r_.timelines[at(i)].push_back(MotionSegment{t, st, push, heldCount_[at(i)] > 0});
 }
 
 void Simulator::predictOwn(int i, double now)
@@ -206,7 +206,7 @@ void Simulator::finishEvent(double t, const Event& e)
             states.push_back(e.after[k]);
         }
     const std::size_t index = r_.events.size() - 1;
-    if (settle(t, balls, states, nullptr, false) == 1) {
+    if (settle(t, balls, states, nullptr, false) == Settled::Held) {
         for (std::size_t k = 0; k < balls.size(); ++k) r_.events[index].after[k] = state_[at(balls[k])];
         r_.events[index].grouped = lastGroupSize_ > 0;
         return;
@@ -222,7 +222,7 @@ void Simulator::process(const Candidate& c)
     const int i = c.ball;
     if (c.agent == Agent::Refresh) {
         if (c.index == 1) {  // a held group is solved again (no event)
-            if (settle(t, {i}, {stateNow(i, t)}, nullptr, false) == 0) {
+            if (settle(t, {}, {}, nullptr, false, i) == Settled::Untouched) {
                 regroupAt_[at(i)] = kNever;
                 predictOwn(i, t);
                 predictPairs(i, t);
@@ -252,7 +252,7 @@ void Simulator::process(const Candidate& c)
                 finishEvent(t, e);
                 return;
             }
-            if (settle(t, {i}, {after}, nullptr, false) == 0) {
+            if (settle(t, {i}, {after}, nullptr, false) == Settled::Untouched) {
                 beginSegment(i, t, after);
                 predictOwn(i, t);
                 predictPairs(i, t);
@@ -298,28 +298,7 @@ void Simulator::process(const Candidate& c)
         e.approachSpeed = res.approachSpeed;
         e.impulse = res.impulse;
         const double separation = res.after.velocity.dot(normal);
-        if (separation < kHoldSpeed) {
-            Event h = e;
-            h.after[0].velocity -= separation * normal;
-            h.after[0].motion = classify(h.after[0], radius(i));
-            h.impulse.head<2>() -= (mass(i) * separation) * normal;
-            h.held = true;
-            h.holdImpulse = mass(i) * separation;
-            const std::size_t index = r_.events.size();
-            r_.events.push_back(h);
-            // Forced when the approach was nil or the law does not even part them: then holding is the
-            // only way not to meet again at this instant.
-            const bool force = e.approachSpeed <= kRestingSpeed || separation <= kRestingSpeed;
-            const int settled = settle(t, {i}, {h.after[0]}, &candidate, force, separation);
-            if (settled == 1 || settled == 3) {
-                Event& logged = r_.events[index];
-                logged.after[0] = state_[at(i)];
-                logged.grouped = lastGroupSize_ > 1;
-                if (settled == 3) logged.held = false;
-                return;
-            }
-            r_.events.pop_back();
-        }
+        if (separation < kHoldSpeed && holdCollision(e, candidate, separation)) return;
         break;
     }
     case Agent::Ball: {
@@ -337,35 +316,42 @@ void Simulator::process(const Candidate& c)
         e.approachSpeed = res.approachSpeed;
         e.impulse = res.impulse;
         const double separation = (res.b.velocity - res.a.velocity).dot(res.normal);
-        if (separation < kHoldSpeed) {
-            Event h = e;
-            const double extra = separation / (1.0 / mass(i) + 1.0 / mass(j));  // N s
-            h.after[0].velocity += (extra / mass(i)) * res.normal;
-            h.after[1].velocity -= (extra / mass(j)) * res.normal;
-            h.after[0].motion = classify(h.after[0], radius(i));
-            h.after[1].motion = classify(h.after[1], radius(j));
-            h.impulse.head<2>() += extra * res.normal;
-            h.held = true;
-            h.holdImpulse = extra;
-            const std::size_t index = r_.events.size();
-            r_.events.push_back(h);
-            const HeldContact candidate{i, ContactBody::Ball, j};
-            const bool force = e.approachSpeed <= kRestingSpeed || separation <= kRestingSpeed;
-            const int settled = settle(t, {i, j}, {h.after[0], h.after[1]}, &candidate, force, separation);
-            if (settled == 1 || settled == 3) {
-                Event& logged = r_.events[index];
-                logged.after[0] = state_[at(i)];
-                logged.after[1] = state_[at(j)];
-                logged.grouped = lastGroupSize_ > 1;
-                if (settled == 3) logged.held = false;
-                return;
-            }
-            r_.events.pop_back();
-        }
+        if (separation < kHoldSpeed && holdCollision(e, HeldContact{i, ContactBody::Ball, j}, separation)) return;
         break;
     }
     }
     finishEvent(t, e);
+}
+
+bool Simulator::holdCollision(const Event& e, const HeldContact& candidate, double separation)
+{
+    // The law leaves the bodies parting slower than kHoldSpeed: settle() decides with the group they
+    // touch whether the forces press them (then the pair is held and its separation taken away) or
+    // not (then the law's result stands, re-seated with the group if there is one).
+    const std::size_t index = r_.events.size();
+    r_.events.push_back(e);
+    std::vector<int> balls;
+    std::vector<BallState> states;
+    for (std::size_t k = 0; k < 2; ++k)
+        if (e.balls[k] >= 0) {
+            balls.push_back(e.balls[k]);
+            states.push_back(e.after[k]);
+        }
+    // Forced when the approach was nil or the law does not even part them: then holding is the only
+    // way not to meet again at this instant.
+    const bool force = e.approachSpeed <= kRestingSpeed || separation <= kRestingSpeed;
+    const Settled settled = settle(e.time, balls, states, &candidate, force);
+    if (settled != Settled::Held && settled != Settled::SeatedOnly) {
+        r_.events.pop_back();
+        return false;
+    }
+    Event& logged = r_.events[index];
+    for (std::size_t k = 0; k < balls.size(); ++k) logged.after[k] = state_[at(balls[k])];
+    logged.held = settled == Settled::Held;
+    logged.holdImpulse = -lastCandidateImpulse_;
+    logged.impulse.head<2>() -= lastCandidateImpulse_ * e.normal;
+    logged.grouped = lastGroupSize_ > 1;
+    return true;
 }
 
 void Simulator::run(const std::optional<CueStrike>& shot)
@@ -398,12 +384,18 @@ void Simulator::run(const std::optional<CueStrike>& shot)
     for (;;) {
         const Candidate c = queue_.top();
         if (c.time == kNever || c.time > limit_) break;
-        if (static_cast<long long>(r_.events.size()) >= maxEvents_ || ++steps > 50 * maxEvents_ + 1000) {
+        const bool eventCap = static_cast<long long>(r_.events.size()) >= maxEvents_;
+        if (eventCap || ++steps > 50 * maxEvents_ + 1000) {
             r_.status = SimulationStatus::EventLimit;
             r_.endTime = lastEvent;
             std::ostringstream msg;
-            msg << "the simulation stopped after " << maxEvents_ << " events at t = " << lastEvent
-                << " s with balls still moving (event limit reached)";
+            if (eventCap)
+                msg << "the simulation stopped after " << maxEvents_ << " events at t = " << lastEvent
+                    << " s with balls still moving (event limit reached)";
+            else
+                msg << "the simulation stopped after " << (steps - 1) << " steps (" << r_.events.size()
+                    << " events and the internal re-predictions between them, at most 50 per allowed event) at t = "
+                    << lastEvent << " s with balls still moving (event limit reached)";
             r_.error = msg.str();
             return;
         }

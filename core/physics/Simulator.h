@@ -89,16 +89,25 @@ private:
     // Sustained contact (Contact.h).
     bool heldPair(int i, int j) const;
     bool heldWall(int i, ContactBody body, int index) const;
-    void release(std::size_t k);
     // After an event: solves the held group its balls belong to (with a contact that may begin
-    // holding, `candidate`) and gives every ball of that group its new segment. Returns 0 when no
-    // group is touched (the caller segments the balls freely), 1 when settled, 2 when the candidate
-    // is not pressed and `forceHold` is false and it touches no held group (nothing changed), 3 when
-    // such a candidate was seated with the group it touches but not held.
-    int settle(double t, const std::vector<int>& eventBalls, const std::vector<BallState>& eventStates,
-               const HeldContact* candidate, bool forceHold, double candidateSeparation = 0.0);
+    // holding, `candidate`, whose bodies carry its collision law's after-states) and gives every ball
+    // of that group its new segment.
+    enum class Settled {
+        Untouched,   // no held group is touched and there is no candidate: the caller segments freely
+        Held,        // settled; the candidate (if any) is held
+        NotPressed,  // the candidate is not pressed and touches no held group: nothing changed
+        SeatedOnly,  // the candidate is not pressed: settled with the group it touches, not held
+    };
+    // `regroup` (>= 0): a ball whose group is solved again with no event (a frozen direction has
+    // turned far enough).
+    Settled settle(double t, const std::vector<int>& eventBalls, const std::vector<BallState>& eventStates,
+                   const HeldContact* candidate, bool forceHold, int regroup = -1);
     void finishEvent(double t, const Event& e);
-    double turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts, double t) const;
+    // A collision whose law parts its bodies slower than kHoldSpeed (Contact.h's hold rule): logs the
+    // event with its hold and settles the group; false when the law's result stands alone (the
+    // caller finishes the event as any other).
+    bool holdCollision(const Event& e, const HeldContact& candidate, double separation);
+    double turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts) const;
 
     SimulationResult& r_;
     const Table& table_;
@@ -128,6 +137,8 @@ private:
     std::vector<int> heldCount_;      // per ball, how many of held_ involve it
     std::vector<double> regroupAt_;   // s, when a held group is solved again (kNever if none)
     std::size_t lastGroupSize_ = 0;   // how many contacts the last settle() solved
+    double lastCandidateImpulse_ = 0.0;  // N s, the last settle()'s re-seating impulse at its candidate
+                                         // (> 0 pushing apart, < 0 drawing together: the hold)
 };
 
 // The kind of a pushed state's end, when its label changes (false when the push only turned it).

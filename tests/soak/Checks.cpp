@@ -1,5 +1,8 @@
 #include "Checks.h"
 
+#include "BallBallCollision.h"
+#include "Contact.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -160,11 +163,33 @@ bool sameState(const BallState& a, const BallState& b)
 double momentumChange(const SimulationResult& r, const Event& e)
 {
     if (e.kind != EventKind::BallBall || e.grouped) return 0.0;
-    const double m0 = r.balls[static_cast<std::size_t>(e.balls[0])].mass;
-    const double m1 = r.balls[static_cast<std::size_t>(e.balls[1])].mass;
-    const Vec2 before = m0 * e.before[0].velocity + m1 * e.before[1].velocity;
-    const Vec2 after = m0 * e.after[0].velocity + m1 * e.after[1].velocity;
-    return (after - before).norm();
+    const Ball& A = r.balls[static_cast<std::size_t>(e.balls[0])];
+    const Ball& B = r.balls[static_cast<std::size_t>(e.balls[1])];
+    const Vec2 before = A.mass * e.before[0].velocity + B.mass * e.before[1].velocity;
+    const Vec2 after = A.mass * e.after[0].velocity + B.mass * e.after[1].velocity;
+    // A held event's hold impulse acts by Contact.h's contactResponse (a rolling ball takes 5/7 of it,
+    // the cloth the rest): the pair's momentum changes by exactly (c_a - c_b) holdImpulse n, with c
+    // from its law's after-states.
+    // Before it, a ball the law leaves with a slip that has as good as ended rolls out (Motion.h's
+    // rollOut: the cloth's impulse -2/7 m u).
+    Vec2 cloth = Vec2::Zero();
+    if (e.held || e.holdImpulse != 0.0) {
+        const BallBallResult law = resolveBallBall({e.before[0], A.radius, A.mass}, {e.before[1], B.radius, B.mass}, r.physics);
+        BallState a = law.a, b = law.b;
+        auto settled = [](BallState& s, const Ball& ball, Vec2& share) {
+            s.motion = classify(s, ball.radius);
+            if (s.motion == MotionState::Sliding && slipHasEnded(s, ball.radius)) {
+                const Vec2 v = s.velocity;
+                rollOut(s, ball.radius);
+                share += ball.mass * (s.velocity - v);
+                s.motion = classify(s, ball.radius);
+            }
+        };
+        settled(a, A, cloth);
+        settled(b, B, cloth);
+        cloth += (contactResponse(a) - contactResponse(b)) * e.holdImpulse * law.normal;
+    }
+    return (after - before - cloth).norm();
 }
 
 BallState continued(const SimulationResult& r, int index, const MotionSegment& seg, double t)
@@ -368,7 +393,7 @@ std::string timelineProblem(const SimulationResult& r, double positionTol, doubl
             const bool extra = segments > eventsHere;
             // A segment of its own held group solved again: this ball's push begins, goes on or ends
             // here, or the ball touches a ball of a held or grouped event at this instant.
-            auto heldHere = [&] { return inSolvedGroup(index, seg.start); };
+            auto heldHere = [&] { return seg.held || tl[k].held || inSolvedGroup(index, seg.start); };
             const BallState end = continued(r, index, tl[k], seg.start);
             const BallState& begin = seg.state;
             // A segment that only goes on with the same motion (the same push, label, velocity and

@@ -132,8 +132,8 @@ void checkEvents(const SimulationResult& r, const CheckOptions& o, Verdict& v, R
         // Every collision begins with the bodies approaching (or pressed together at rest), never
         // with them parting: no collision is found twice. (A held collision may begin from a parting
         // speed so small that the pair would never part by more than kContactTolerance before the
-        // cloth presses it back: Detection.cpp.)
-        if (isCollision(e.kind) && !(e.approachSpeed > -kRestingSpeed || (e.held && e.approachSpeed > -1e-4)))
+        // cloth presses it back: Detection.cpp; so may a collision solved with a held group.)
+        if (isCollision(e.kind) && !(e.approachSpeed > -kRestingSpeed || ((e.held || e.grouped) && e.approachSpeed > -1e-4)))
             v.add(FailureKind::Timeline, "event " + std::to_string(k) + " (" + std::string(toString(e.kind)) + " at t = " +
                                              number(e.time) + ") begins parting at " + number(e.approachSpeed) + " m/s");
         if (!isCollision(e.kind) || e.grouped) continue;
