@@ -47,6 +47,7 @@ private slots:
     void init()
     {
         QSettings().clear();
+        QSettings().setValue(QStringLiteral("help/firstStartTipSeen"), true);  // the tip would cover the view
         window_ = new MainWindow;
         window_->resize(1600, 1000);
         window_->show();
@@ -169,6 +170,9 @@ void TestPredictMode::stopsPredictsAndReveals()
     QVERIFY(panel_->revealButton()->isEnabled());
     QVERIFY(panel_->statusLabel()->text().contains(QStringLiteral("0 of 2")));
     QVERIFY(window_->tableView()->layers().count(kPredictLayer));
+    // The future paths would give the answer away: hidden while the question waits.
+    QVERIFY(!window_->tableView()->overlayVisible(Overlay::FuturePaths));
+    QVERIFY(!window_->tableView()->overlayVisible(Overlay::GhostBalls));
 
     // The student aims each ball 10° counter-clockwise of where it really goes.
     std::vector<double> actual;
@@ -191,6 +195,7 @@ void TestPredictMode::stopsPredictsAndReveals()
 
     QTest::mouseClick(panel_->revealButton(), Qt::LeftButton);
     QCOMPARE(session->state(), PredictSession::State::Revealed);
+    QVERIFY(window_->tableView()->overlayVisible(Overlay::FuturePaths));  // back as they were
     QCOMPARE(session->revealed().size(), std::size_t(1));
     const auto& reveals = session->revealed()[0].balls;
     for (std::size_t i = 0; i < reveals.size(); ++i) {

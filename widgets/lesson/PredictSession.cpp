@@ -82,9 +82,26 @@ bool PredictSession::start(QString* why)
     return true;
 }
 
+void PredictSession::hideAnswers()
+{
+    if (!view_ || !hiddenOverlays_.empty()) return;
+    for (Overlay o : {Overlay::FuturePaths, Overlay::EventMarkers, Overlay::GhostBalls}) {
+        hiddenOverlays_.emplace_back(o, view_->overlayVisible(o));
+        view_->setOverlayVisible(o, false);
+    }
+}
+
+void PredictSession::restoreOverlays()
+{
+    if (view_)
+        for (const auto& [overlay, visible] : hiddenOverlays_) view_->setOverlayVisible(overlay, visible);
+    hiddenOverlays_.clear();
+}
+
 void PredictSession::stop()
 {
     if (state_ == State::Idle) return;
+    restoreOverlays();
     if (view_) {
         view_->removeEventFilter(this);
         view_->clearLayer(kPredictLayer);
@@ -112,6 +129,7 @@ void PredictSession::ask(int question)
     const lesson::AskedQuestion& q = asked_[static_cast<std::size_t>(question)];
     predictions_.assign(q.balls.size(), lesson::BallPrediction{});
     setState(State::Asking);
+    hideAnswers();
     playback_->pause();
     playback_->setTime(std::max(0.0, q.time - kStopBefore));
     drawLayer();
@@ -132,6 +150,7 @@ void PredictSession::reveal()
     const lesson::AskedQuestion& q = asked_[static_cast<std::size_t>(current_)];
     revealed_.push_back(Revealed{current_, lesson::reveal(q, predictions_, *result_)});
     dragging_ = -1;
+    restoreOverlays();
     setState(State::Revealed);
     drawLayer();
     emit revealedChanged();

@@ -78,6 +78,10 @@ protected:
 
 private:
     void setState(State state);
+    // While a question waits, the overlays that show the future (paths after now, contact markers,
+    // ghost balls) would give the answer away: hidden, and shown again as they were on Reveal or Stop.
+    void hideAnswers();
+    void restoreOverlays();
     void onTime(double seconds);
     void ask(int question);
     void drawLayer();
@@ -95,6 +99,7 @@ private:
     std::vector<lesson::BallPrediction> predictions_;
     std::vector<Revealed> revealed_;
     int dragging_ = -1;  // the asked ball whose arrow the mouse is dragging
+    std::vector<std::pair<Overlay, bool>> hiddenOverlays_;  // what hideAnswers() switched off, and how it was
 };
 
 }  // namespace cuelab
