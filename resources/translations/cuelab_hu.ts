@@ -3649,8 +3649,8 @@ Kimaradt kérdés: %1</translation>
         <translation>%1: helyben maradt</translation>
     </message>
     <message>
-        <source>Yellow: your guess · green: where the ball went</source>
-        <translation>Sárga: az Ön tippje · zöld: ahová a golyó ment</translation>
+        <source>Pink: your guess · green: where the ball went</source>
+        <translation>Rózsaszín: az Ön tippje · zöld: ahová a golyó ment</translation>
     </message>
     <message>
         <source>Drag from each ball where it will go; click a ball that stays</source>

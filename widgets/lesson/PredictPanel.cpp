@@ -82,12 +82,15 @@ PredictPanel::PredictPanel(Document* document, Playback* playback, Selection* se
     reveal_ = new QPushButton(tr("Reveal"), this);
     reveal_->setObjectName(QStringLiteral("predictReveal"));
     reveal_->setToolTip(tr("Show where each ball went beside your guess, with the angle between them in degrees, and play on"));
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(add_);
-    buttons->addWidget(remove_);
-    buttons->addStretch();
-    buttons->addWidget(start_);
-    buttons->addWidget(reveal_);
+    // Two rows, so that the dock stays narrow: the teacher's buttons, then the student's.
+    auto* edits = new QHBoxLayout;
+    edits->addWidget(add_);
+    edits->addWidget(remove_);
+    edits->addStretch();
+    auto* mode = new QHBoxLayout;
+    mode->addWidget(start_);
+    mode->addWidget(reveal_);
+    mode->addStretch();
 
     status_ = new QLabel(this);
     status_->setObjectName(QStringLiteral("predictStatus"));
@@ -111,7 +114,8 @@ PredictPanel::PredictPanel(Document* document, Playback* playback, Selection* se
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(intro);
     layout->addWidget(questions_, 1);
-    layout->addLayout(buttons);
+    layout->addLayout(edits);
+    layout->addLayout(mode);
     layout->addWidget(status_);
     layout->addWidget(results_, 1);
 

@@ -16,7 +16,7 @@ namespace cuelab {
 namespace {
 
 constexpr double kRadPerDeg = std::numbers::pi / 180.0;
-const QColor kGuessColour(255, 205, 40);    // the student's arrows
+const QColor kGuessColour(245, 90, 220);    // the student's arrows (the velocity arrows are yellow)
 const QColor kActualColour(90, 230, 130);   // where the balls went
 const QColor kAskColour(255, 255, 255);     // a ball still waiting for its arrow
 
@@ -131,7 +131,15 @@ void PredictSession::ask(int question)
     setState(State::Asking);
     hideAnswers();
     playback_->pause();
-    playback_->setTime(std::max(0.0, q.time - kStopBefore));
+    // Back to just before the event once the playback's current timeChanged has reached every
+    // receiver: set from inside it, the window (connected before this session) would get the old,
+    // later time last and show the balls after the collision.
+    const double stop = std::max(0.0, q.time - kStopBefore);
+    QMetaObject::invokeMethod(
+        this, [this, stop] {
+            if (state_ == State::Asking) playback_->setTime(stop);
+        },
+        Qt::QueuedConnection);
     drawLayer();
     emit predictionsChanged();
 }
@@ -192,7 +200,7 @@ void PredictSession::drawLayer()
         if (r.actualDeg) layer.arrows.push_back({centre, arrowTo(*r.actualDeg), kActualColour, 4.0f, verdict});
         else layer.markers.push_back({centre, kActualColour, 34.0f, verdict});
     }
-    layer.legend = revealedNow ? tr("Yellow: your guess · green: where the ball went")
+    layer.legend = revealedNow ? tr("Pink: your guess · green: where the ball went")
                                : tr("Drag from each ball where it will go; click a ball that stays");
     view_->setLayer(kPredictLayer, std::move(layer));
 }
