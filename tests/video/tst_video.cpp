@@ -366,6 +366,7 @@ void TestVideo::demo()
         QVERIFY(video.frames[std::size_t(frame)].save(frameOut));
     }
     if (qEnvironmentVariableIntValue("CUELAB_SCREENSHOT_DEMO") == 1) {
+        QSettings().setValue(QStringLiteral("help/firstStartTipSeen"), true);  // the tip would cover the view
         MainWindow window;
         window.showMaximized();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
