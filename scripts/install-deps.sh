@@ -18,6 +18,7 @@ packages=(
   qt6-translations-l10n                      # Qt's own translations (qtbase_hu.qm: standard buttons and dialogs)
   libbox2d-dev                               # Box2D 2.4, the comparison engine of core/compare
   libnlopt-cxx-dev                           # NLopt 2.7: derivative-free searches of core/fit (with libnlopt-dev)
+  pkg-config libavcodec-dev libavformat-dev libswscale-dev  # FFmpeg 5.1: slow-motion video (widgets/video; H.264, VP9, GIF)
   clang libclang-rt-14-dev                   # libFuzzer (-fsanitize=fuzzer) for the fuzz targets
   desktop-file-utils appstream               # desktop-file-validate, appstreamcli (install checks)
   dpkg-dev file                              # cpack -G DEB (dpkg-shlibdeps, file)

@@ -10,6 +10,7 @@ const QString kBalls = QStringLiteral("BallsDock");
 const QString kShot = QStringLiteral("ShotDock");
 const QString kPhysics = QStringLiteral("PhysicsDock");
 const QString kLesson = QStringLiteral("LessonDock");
+const QString kPredict = QStringLiteral("PredictDock");  // issue 22: predict, then reveal
 const QString kEvents = QStringLiteral("EventsDock");
 const QString kOutcome = QStringLiteral("OutcomeDock");
 const QString kExplain = QStringLiteral("ExplainDock");
@@ -28,7 +29,7 @@ ArrangementSpec arrangementSpec(Arrangement arrangement)
     case Arrangement::Default:
         // The sides together take 44 % of the width: the table view keeps more than half of the
         // window at 1280x800 and above (tst_windowapi::tableViewKeepsItsShare).
-        s.left = {{{kShot, kBalls, kPhysics, kLesson}, {kShot, kBalls, kPhysics, kLesson}, 1}};
+        s.left = {{{kShot, kBalls, kPhysics, kLesson, kPredict}, {kShot, kBalls, kPhysics, kLesson, kPredict}, 1}};
         s.right = {{{kEvents, kOutcome}, {kEvents, kOutcome}, 4},
                    {{kExplain, kInspector, kHistory, kAnalysis}, {kExplain, kInspector, kHistory}, 6}};
         s.bottom = {{{kPlots, kCompare}, {}, 1}};
@@ -36,7 +37,7 @@ ArrangementSpec arrangementSpec(Arrangement arrangement)
         s.rightShare = 0.24;
         break;
     case Arrangement::Teach:
-        s.left = {{{kLesson, kShot, kBalls, kPhysics}, {kLesson}, 1}};
+        s.left = {{{kLesson, kPredict, kShot, kBalls, kPhysics}, {kLesson, kPredict}, 1}};
         s.right = {{{kExplain, kEvents, kOutcome, kInspector, kHistory, kAnalysis}, {kExplain}, 1}};
         s.bottom = {{{kPlots, kCompare}, {kPlots}, 1}};
         s.leftShare = 0.2;
@@ -44,7 +45,7 @@ ArrangementSpec arrangementSpec(Arrangement arrangement)
         s.bottomShare = 0.22;
         break;
     case Arrangement::Coach:
-        s.left = {{{kShot, kBalls, kPhysics, kLesson}, {kShot}, 1}};
+        s.left = {{{kShot, kBalls, kPhysics, kLesson, kPredict}, {kShot}, 1}};
         s.right = {{{kAnalysis, kExplain, kInspector, kHistory}, {kAnalysis}, 6},
                    {{kOutcome, kEvents}, {kOutcome}, 4}};
         s.bottom = {{{kPlots, kCompare}, {}, 1}};
@@ -53,7 +54,7 @@ ArrangementSpec arrangementSpec(Arrangement arrangement)
         break;
     case Arrangement::Edit:
         // Balls alone on the left: its list shows every ball of a rack above its editor.
-        s.left = {{{kBalls, kShot, kLesson}, {kBalls}, 1}};
+        s.left = {{{kBalls, kShot, kLesson, kPredict}, {kBalls}, 1}};
         s.right = {{{kEvents, kOutcome, kExplain, kInspector, kHistory, kAnalysis}, {kEvents}, 9},
                    {{kPhysics}, {kPhysics}, 11}};
         s.bottom = {{{kPlots, kCompare}, {}, 1}};

@@ -15,6 +15,8 @@ void installFeatures(MainWindow& window)
     installAnalysis(window);
     installCompare(window);
     installRecording(window);
+    installPredict(window);
+    installVideo(window);
 }
 
 }  // namespace cuelab

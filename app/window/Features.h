@@ -22,10 +22,20 @@ void installAim(MainWindow& window);      // features/AimFeature.cpp: View > Ove
 void installAnalysis(MainWindow& window);  // features/AnalysisFeature.cpp: the Analysis dock and menu
 void installCompare(MainWindow& window);  // features/CompareFeature.cpp
 void installRecording(MainWindow& window);  // features/RecordingFeature.cpp: recorded shots (issue 24)
+void installPredict(MainWindow& window);  // features/PredictFeature.cpp: predict, then reveal (issue 22)
+void installVideo(MainWindow& window);    // features/VideoFeature.cpp: File > Export > Video (issue 22)
 
 // Opens a recording file in the window's Recording dock (RecordingFeature.cpp). A recording of balls
 // the shot lacks starts a new shot from the recording, after asking when `ask` and the current shot
 // is worth keeping (a file, an example, unsaved edits). False when refused (the message is shown).
 bool openRecording(MainWindow& window, const QString& path, bool ask);
+
+class VideoExportJob;
+struct VideoRequest;
+// Starts writing the view as a video behind a progress dialog (VideoFeature.cpp); the job ends with
+// VideoExportJob::finished and deletes itself.
+VideoExportJob* exportVideo(MainWindow& window, const VideoRequest& request);
+// The Export Video dialog (slow motion, frame rate, size) over *request; false when cancelled.
+bool askVideoSettings(MainWindow& window, VideoRequest* request);
 
 }  // namespace cuelab

@@ -1,6 +1,8 @@
 #include "HeadlessScreenshot.h"
 
+#include "HeadlessVideo.h"
 #include "export/DiagramFiles.h"
+#include "video/VideoEncoder.h"
 #include "view/Screenshot.h"
 
 #include "NumberParse.h"
@@ -34,7 +36,8 @@ void printCommandLineError(const QString& message) { printError(message); }
 QString strayScreenshotOption(const QCommandLineParser& parser)
 {
     if (parser.isSet(QStringLiteral("screenshot"))) return {};
-    for (const QString& name : {QStringLiteral("time"), QStringLiteral("camera"), QStringLiteral("size")})
+    for (const QString& name : {QStringLiteral("time"), QStringLiteral("camera"), QStringLiteral("size"), QStringLiteral("slow"),
+                                QStringLiteral("fps")})
         if (parser.isSet(name)) return name;
     return {};
 }
@@ -43,7 +46,8 @@ void addScreenshotOptions(QCommandLineParser& parser)
 {
     parser.addOption({QStringLiteral("screenshot"),
                       QStringLiteral("Render SETUP to <out> without opening a window, then exit: .png the table view, "
-                                     ".svg or .pdf a print-style shot diagram (balls where they rest unless --time)."),
+                                     ".svg or .pdf a print-style shot diagram (balls where they rest unless --time), "
+                                     ".mp4, .webm or .gif a video of the shot (--slow, --fps)."),
                       QStringLiteral("out")});
     parser.addOption({QStringLiteral("time"), QStringLiteral("With --screenshot: the time shown, in seconds (default 0)."),
                       QStringLiteral("seconds"), QStringLiteral("0")});
@@ -51,6 +55,7 @@ void addScreenshotOptions(QCommandLineParser& parser)
                       QStringLiteral("preset"), QStringLiteral("top")});
     parser.addOption({QStringLiteral("size"), QStringLiteral("With --screenshot: image size in pixels (default 1600x900)."),
                       QStringLiteral("WxH"), QStringLiteral("1600x900")});
+    addVideoOptions(parser);
 }
 
 // `cuelab --screenshot OUT.png SETUP [--time T] [--camera top|player|side] [--size WxH]`
@@ -92,6 +97,21 @@ int takeScreenshot(const QCommandLineParser& parser, const QString& out)
         printError(QStringLiteral("--size: expected WIDTHxHEIGHT in pixels, 16 to 8192 each, found '%1'").arg(sizeText));
         return kExitUsage;
     }
+    const QSize pixels(static_cast<int>(*w), static_cast<int>(*h));
+
+    VideoFormat videoFormat = VideoFormat::Mp4;
+    const bool video = videoFormatOf(out, &videoFormat);
+    if (!video) {
+        for (const QString& name : {QStringLiteral("slow"), QStringLiteral("fps")})
+            if (parser.isSet(name)) {
+                printError(QStringLiteral("--%1 is an option of a video (.mp4, .webm, .gif) only").arg(name));
+                return kExitUsage;
+            }
+    } else if (parser.isSet(QStringLiteral("time"))) {
+        printError(QStringLiteral("--time is an option of a picture; a video shows the whole shot"));
+        return kExitUsage;
+    }
+    const bool sizeGiven = parser.isSet(QStringLiteral("size"));
 
     QString error;
     const std::optional<Setup> setup = io::loadSetup(args.front(), &error);
@@ -114,8 +134,11 @@ int takeScreenshot(const QCommandLineParser& parser, const QString& out)
         return kExitOk;
     }
     scene.shot = setup->shot;
+    if (video)
+        return takeVideo(parser, out, scene, camera,
+                         sizeGiven ? pixels : kDefaultVideoSize);
     QImage image;
-    if (!renderSceneToImage(scene, time, camera, QSize(static_cast<int>(*w), static_cast<int>(*h)), &image, &error)) {
+    if (!renderSceneToImage(scene, time, camera, pixels, &image, &error)) {
         printError(error);
         return kExitRefused;
     }

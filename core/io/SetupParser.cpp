@@ -15,6 +15,7 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <string>
@@ -303,12 +304,54 @@ SimulationSettings parseSimulation(const QJsonValue& value)
     return s;
 }
 
+// "lesson": {"questions": [{"event": 3, "balls": ["cue", "1"], "prompt": "..."}]} (issue 22: predict,
+// then reveal). Each question is refused as a whole for a wrong shape; a ball it names must be one of
+// the setup's, so that a teacher's typo does not silently drop a ball from the question.
+std::vector<PredictQuestion> parseLesson(const QJsonValue& value, const std::vector<Ball>& balls)
+{
+    const ObjectReader in(value, QStringLiteral("lesson"), {"questions"});
+    std::vector<PredictQuestion> questions;
+    if (!in.has("questions")) return questions;
+    const QString path = in.pathOf("questions");
+    const QJsonValue list = in.value("questions");
+    if (!list.isArray()) wrongType(path, "an array", list);
+    const QJsonArray array = list.toArray();
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const ObjectReader q(array[i], element(path, i), {"event", "balls", "prompt"});
+        PredictQuestion question;
+        if (const auto event = q.optionalNumber("event")) {
+            if (*event < 0 || *event != std::floor(*event) || *event > 1e9)
+                refuse(q.pathOf("event"), QStringLiteral("expected a whole number >= 0 (the 0-based index of an event), "
+                                                         "found %1").arg(*event));
+            question.event = static_cast<int>(*event);
+        }
+        if (q.has("balls")) {
+            const QJsonValue ids = q.value("balls");
+            if (!ids.isArray()) wrongType(q.pathOf("balls"), "an array of ball ids", ids);
+            const QJsonArray idArray = ids.toArray();
+            for (qsizetype k = 0; k < idArray.size(); ++k) {
+                const QString at = element(q.pathOf("balls"), k);
+                if (!idArray[k].isString()) wrongType(at, "a ball id (a string)", idArray[k]);
+                const std::string id = idArray[k].toString().toStdString();
+                if (std::none_of(balls.begin(), balls.end(), [&id](const Ball& b) { return b.id == id; }))
+                    refuse(at, QStringLiteral("no ball \"%1\" in the setup").arg(idArray[k].toString()));
+                if (std::find(question.balls.begin(), question.balls.end(), id) != question.balls.end())
+                    refuse(at, QStringLiteral("ball \"%1\" is named twice").arg(idArray[k].toString()));
+                question.balls.push_back(id);
+            }
+        }
+        question.prompt = q.optionalString("prompt").value_or(QString()).toStdString();
+        questions.push_back(std::move(question));
+    }
+    return questions;
+}
+
 Setup parseDocument(const QJsonValue& document)
 {
     if (!document.isObject()) wrongType(QString(), "a JSON object at the top level", document);
     checkHeader(document.toObject());
     const ObjectReader in(document, QString(),
-                          {"format", "version", "name", "notes", "table", "physics", "balls", "shot", "simulation"});
+                          {"format", "version", "name", "notes", "lesson", "table", "physics", "balls", "shot", "simulation"});
     Setup setup;
     setup.name = in.optionalString("name").value_or(QString()).toStdString();
     setup.notes = in.optionalString("notes").value_or(QString()).toStdString();
@@ -317,6 +360,7 @@ Setup parseDocument(const QJsonValue& document)
     setup.balls = parseBalls(in.required("balls"), makeTable(setup.table.kind));
     if (in.has("shot")) setup.shot = parseShot(in.value("shot"));
     if (in.has("simulation")) setup.simulation = parseSimulation(in.value("simulation"));
+    if (in.has("lesson")) setup.questions = parseLesson(in.value("lesson"), setup.balls);
     // The values and the geometry: the one validator's first problem, its message as it is.
     if (const std::optional<cuelab::SetupProblem> problem = firstSetupProblem(setup))
         refuse(QString::fromStdString(problem->path), QString::fromStdString(problem->message));

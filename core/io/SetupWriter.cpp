@@ -139,6 +139,35 @@ void writeShot(JsonWriter& w, const CueStrike& shot)
     w.endObject();
 }
 
+// The lesson's questions, only when there are any (a file without them stays as it was).
+void writeLesson(JsonWriter& w, const std::vector<PredictQuestion>& questions)
+{
+    w.key("lesson");
+    w.beginObject(Layout::Block);
+    w.key("questions");
+    w.beginArray(Layout::Block);
+    for (const PredictQuestion& q : questions) {
+        w.beginObject(Layout::Line);
+        if (q.event) {
+            w.key("event");
+            w.value(*q.event);
+        }
+        if (!q.balls.empty()) {
+            w.key("balls");
+            w.beginArray(Layout::Line);
+            for (const std::string& id : q.balls) w.value(id);
+            w.endArray();
+        }
+        if (!q.prompt.empty()) {
+            w.key("prompt");
+            w.value(q.prompt);
+        }
+        w.endObject();
+    }
+    w.endArray();
+    w.endObject();
+}
+
 }  // namespace
 
 QByteArray serializeSetup(const Setup& setup)
@@ -157,6 +186,7 @@ QByteArray serializeSetup(const Setup& setup)
         w.key("notes");
         w.value(setup.notes);
     }
+    if (!setup.questions.empty()) writeLesson(w, setup.questions);
     writeTable(w, setup.table);
     writePhysics(w, setup.physics);
     w.key("balls");

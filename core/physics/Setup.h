@@ -3,6 +3,7 @@
 
 #include "Ball.h"
 #include "CueStrike.h"
+#include "LessonQuestion.h"
 #include "Parameters.h"
 #include "Table.h"
 
@@ -25,6 +26,7 @@ struct Setup {
     std::vector<Ball> balls;
     std::optional<CueStrike> shot;
     SimulationSettings simulation;
+    std::vector<PredictQuestion> questions;  // the lesson's predict-then-reveal questions (file: lesson.questions)
 };
 
 }  // namespace cuelab

@@ -286,6 +286,10 @@
         <source>Draw the selected collision&apos;s momenta (N·s), its paths near the event and the momenta diagram as seen from the pair&apos;s centre of mass, where the momenta are equal and opposite</source>
         <translation>A kijelölt ütközés lendületei (N·s), az esemény körüli pályák és a lendületábra a golyópár tömegközéppontjából nézve, ahol a lendületek egyenlő nagyságúak és ellentétesek</translation>
     </message>
+    <message>
+        <source>Predict</source>
+        <translation>Jóslás</translation>
+    </message>
 </context>
 <context>
     <name>cuelab</name>
@@ -1036,6 +1040,70 @@
     <message>
         <source>Cushion model&apos;s %1</source>
         <translation>A mantinelmodell %1 paramétere</translation>
+    </message>
+    <message>
+        <source>Export Video</source>
+        <translation>Videó exportálása</translation>
+    </message>
+    <message>
+        <source>× slower</source>
+        <translation>× lassítva</translation>
+    </message>
+    <message>
+        <source>How many times slower than real time the shot plays (1 = real time; 8: one second of the shot lasts eight seconds of video)</source>
+        <translation>Hányszor lassabban fut a lövés a valós időnél (1 = valós idő; 8: a lövés egy másodperce nyolc másodpercnyi videó)</translation>
+    </message>
+    <message>
+        <source> frames/s</source>
+        <translation> képkocka/s</translation>
+    </message>
+    <message>
+        <source>Frames per second of the video (a GIF&apos;s frame times are in hundredths of a second: 30 plays at 33.3)</source>
+        <translation>A videó képkockái másodpercenként (a GIF képkockaideje századmásodperc: a 30 33,3-ként játszódik le)</translation>
+    </message>
+    <message>
+        <source>Video width in pixels (MP4 and WebM round it down to an even number)</source>
+        <translation>A videó szélessége képpontban (MP4 és WebM esetén lefelé kerekítve páros számra)</translation>
+    </message>
+    <message>
+        <source>Video height in pixels (MP4 and WebM round it down to an even number)</source>
+        <translation>A videó magassága képpontban (MP4 és WebM esetén lefelé kerekítve páros számra)</translation>
+    </message>
+    <message>
+        <source>The view as it is now: its camera, overlays, arrows and labels, with the time on every frame.</source>
+        <translation>A nézet, ahogy most látszik: kamerája, rátétei, nyilai és feliratai, minden képkockán az idővel.</translation>
+    </message>
+    <message>
+        <source>Slow motion</source>
+        <translation>Lassítás</translation>
+    </message>
+    <message>
+        <source>Frame rate</source>
+        <translation>Képkockasebesség</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Szélesség</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Magasság</translation>
+    </message>
+    <message>
+        <source>Writing %1…</source>
+        <translation>%1 írása…</translation>
+    </message>
+    <message>
+        <source>&amp;Video (MP4, WebM, GIF)…</source>
+        <translation>&amp;Videó (MP4, WebM, GIF)…</translation>
+    </message>
+    <message>
+        <source>Write the table view as it plays, slowed down, with the time on screen</source>
+        <translation>Az asztalnézet lejátszás közben, lassítva, az idővel a képen</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4);;WebM video (*.webm);;Animated GIF (*.gif)</source>
+        <translation>MP4-videó (*.mp4);;WebM-videó (*.webm);;Animált GIF (*.gif)</translation>
     </message>
     <message>
         <source>do not pot %1</source>
@@ -3702,6 +3770,260 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     </message>
 </context>
 <context>
+    <name>cuelab::PredictPanel</name>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>stays</source>
+        <translation>marad</translation>
+    </message>
+    <message>
+        <source>spot on</source>
+        <translation>telitalálat</translation>
+    </message>
+    <message>
+        <source>close</source>
+        <translation>közeli</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>mellé</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>helyes</translation>
+    </message>
+    <message>
+        <source>wrong</source>
+        <translation>téves</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>nincs válasz</translation>
+    </message>
+    <message>
+        <source>Predict, then reveal: the shot stops before each question&apos;s event; drag from each ball where it will go, then reveal where it went.</source>
+        <translation>Előbb jósoljon, aztán nézze meg: a lövés minden kérdés eseménye előtt megáll; húzzon minden golyótól arra, amerre menni fog, majd fedje fel, hová ment.</translation>
+    </message>
+    <message>
+        <source>Stops before</source>
+        <translation>Megáll ez előtt</translation>
+    </message>
+    <message>
+        <source>Balls</source>
+        <translation>Golyók</translation>
+    </message>
+    <message>
+        <source>Question</source>
+        <translation>Kérdés</translation>
+    </message>
+    <message>
+        <source>The event the shot stops before (set when the question is added)</source>
+        <translation>Az esemény, amely előtt a lövés megáll (a kérdés hozzáadásakor dől el)</translation>
+    </message>
+    <message>
+        <source>The ids of the balls to predict, separated by commas; empty: the event&apos;s own balls</source>
+        <translation>A megjósolandó golyók azonosítói vesszővel elválasztva; üresen: az esemény saját golyói</translation>
+    </message>
+    <message>
+        <source>What the student reads; empty: &quot;Where will each ball go?&quot;</source>
+        <translation>Amit a diák olvas; üresen: „Merre mennek majd a golyók?”</translation>
+    </message>
+    <message>
+        <source>Add Question</source>
+        <translation>Kérdés hozzáadása</translation>
+    </message>
+    <message>
+        <source>Ask before the event selected in Events (the first collision when none is); one undo step</source>
+        <translation>Kérdés az Események panelen kijelölt esemény előtt (ha nincs kijelölés, az első ütközés előtt); egy visszavonási lépés</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Eltávolítás</translation>
+    </message>
+    <message>
+        <source>Remove the selected question; one undo step</source>
+        <translation>A kijelölt kérdés eltávolítása; egy visszavonási lépés</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Indítás</translation>
+    </message>
+    <message>
+        <source>Play the shot from the start and stop before each question (without questions: before the first collision)</source>
+        <translation>A lövés lejátszása az elejétől, megállással minden kérdés előtt (kérdések nélkül: az első ütközés előtt)</translation>
+    </message>
+    <message>
+        <source>Reveal</source>
+        <translation>Felfedés</translation>
+    </message>
+    <message>
+        <source>Show where each ball went beside your guess, with the angle between them in degrees, and play on</source>
+        <translation>Megmutatja a tippje mellett, hová ment az egyes golyó, a kettő szögeltérésével fokban, és folytatja a lejátszást</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Ball</source>
+        <translation>Golyó</translation>
+    </message>
+    <message>
+        <source>Your guess</source>
+        <translation>Tipp</translation>
+    </message>
+    <message>
+        <source>Went</source>
+        <translation>Valójában</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Eltérés</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Pontszám</translation>
+    </message>
+    <message>
+        <source>Your direction, in degrees (0° = along the table&apos;s length, counter-clockwise)</source>
+        <translation>Az Ön által adott irány fokban (0° = az asztal hossza mentén, az óramutatóval ellentétesen nő)</translation>
+    </message>
+    <message>
+        <source>Where the ball went, in degrees: its direction once it stops sliding, or before its next collision</source>
+        <translation>Ahová a golyó ment, fokban: az iránya, amikor már nem csúszik, vagy a következő ütközése előtt</translation>
+    </message>
+    <message>
+        <source>The angle between your guess and where it went, in degrees (0° to 180°)</source>
+        <translation>A tipp és a valódi irány közti szög fokban (0°–180°)</translation>
+    </message>
+    <message>
+        <source>100 % for a perfect guess, falling to 0 % at 90° off; a right &quot;stays&quot; scores 100 %</source>
+        <translation>Pontos tipp 100 %, 90° eltérésnél 0 %-ra csökken; egy helyes „marad” 100 %</translation>
+    </message>
+    <message>
+        <source>the first collision</source>
+        <translation>az első ütközés</translation>
+    </message>
+    <message>
+        <source>%1 %2 at %3 s</source>
+        <translation>%1 %2, %3 s-nál</translation>
+    </message>
+    <message>
+        <source>%1 (not in this shot)</source>
+        <translation>%1 (nincs ebben a lövésben)</translation>
+    </message>
+    <message>
+        <source>Add a lesson question</source>
+        <translation>Leckekérdés hozzáadása</translation>
+    </message>
+    <message>
+        <source>Remove lesson question %1</source>
+        <translation>A(z) %1. leckekérdés eltávolítása</translation>
+    </message>
+    <message>
+        <source>Edit lesson question %1</source>
+        <translation>A(z) %1. leckekérdés szerkesztése</translation>
+    </message>
+    <message>
+        <source>There is no ball &quot;%1&quot; in the shot.</source>
+        <translation>A lövésben nincs „%1” golyó.</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Leállítás</translation>
+    </message>
+    <message>
+        <source>Playing to the first question…</source>
+        <translation>Lejátszás az első kérdésig…</translation>
+    </message>
+    <message>
+        <source>Where will each ball go?</source>
+        <translation>Merre mennek majd a golyók?</translation>
+    </message>
+    <message>
+        <source>Question %1 of %2: %3
+Drag from each ball where it will go (a click on a ball: it stays). %4 of %5 answered.</source>
+        <translation>%1. kérdés a(z) %2 közül: %3
+Húzzon minden golyótól arra, amerre menni fog (kattintás egy golyóra: helyben marad). %5 golyóból %4 megválaszolva.</translation>
+    </message>
+    <message>
+        <source>Revealed. Playing on to question %1…</source>
+        <translation>Felfedve. Lejátszás tovább a(z) %1. kérdésig…</translation>
+    </message>
+    <message>
+        <source>Revealed. Playing on to the end…</source>
+        <translation>Felfedve. Lejátszás tovább a végéig…</translation>
+    </message>
+    <message>
+        <source>Done: %1 of %2 questions, mean score %3 %.</source>
+        <translation>Kész: %2 kérdésből %1 megválaszolva, átlagos pontszám %3 %.</translation>
+    </message>
+    <message>
+        <source>
+Not asked: %1</source>
+        <translation>
+Kimaradt kérdés: %1</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>%1° (%2)</source>
+        <translation>%1° (%2)</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::PredictSession</name>
+    <message>
+        <source>The shot is still being simulated; try again in a moment.</source>
+        <translation>A lövés szimulációja még fut; próbálja újra egy pillanat múlva.</translation>
+    </message>
+    <message>
+        <source>This shot has no collision to predict.</source>
+        <translation>Ebben a lövésben nincs megjósolható ütközés.</translation>
+    </message>
+    <message>
+        <source>%1: drag where it goes</source>
+        <translation>%1: húzza arra, amerre megy</translation>
+    </message>
+    <message>
+        <source>%1: your guess</source>
+        <translation>%1: az Ön tippje</translation>
+    </message>
+    <message>
+        <source>%1: you say it stays</source>
+        <translation>%1: Ön szerint helyben marad</translation>
+    </message>
+    <message>
+        <source>%1: went here, %2° off</source>
+        <translation>%1: ide ment, %2°-os eltérés</translation>
+    </message>
+    <message>
+        <source>%1: went here</source>
+        <translation>%1: ide ment</translation>
+    </message>
+    <message>
+        <source>%1: stayed</source>
+        <translation>%1: helyben maradt</translation>
+    </message>
+    <message>
+        <source>Pink: your guess · green: where the ball went</source>
+        <translation>Rózsaszín: az Ön tippje · zöld: ahová a golyó ment</translation>
+    </message>
+    <message>
+        <source>Drag from each ball where it will go; click a ball that stays</source>
+        <translation>Húzzon minden golyótól arra, amerre menni fog; kattintson arra a golyóra, amely helyben marad</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::RecentFiles</name>
     <message>
         <source>&amp;Clear List</source>
@@ -5070,6 +5392,17 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>The impulse over mass changes the velocity (its vertical part goes into the cloth), its torque about the centre over I = 2/5 m R² the spin.</source>
         <translation>Az erőlökés osztva a tömeggel megváltoztatja a sebességet (függőleges része a posztóba megy), középpontra vett forgatónyomatéka osztva I = 2/5 m R²-tel a pörgést.</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::VideoExport</name>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>%1× slower</source>
+        <translation>%1× lassítva</translation>
     </message>
 </context>
 </TS>

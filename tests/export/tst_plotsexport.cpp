@@ -314,6 +314,9 @@ void TestPlotsExport::headlessDiagrams()
 void TestPlotsExport::viewPngFromTheCurrentCamera()
 {
     TableView* view = window_->tableView();
+    // Let the docks settle first: a late resize of the view refits its preset camera (the pose
+    // below would then not be the one exported).
+    QTest::qWait(500);
     window_->playback()->setTime(0.45);
     QCOMPARE(view->time(), 0.45);
     view->setOverlayVisible(Overlay::Trails, false);  // a switch the presets' default rendering keeps on

@@ -1,5 +1,7 @@
 #include "Document.h"
 
+#include "LessonIds.h"
+
 #include "LegalPlacement.h"
 #include "LegalSetup.h"
 #include "SetupFile.h"
@@ -210,24 +212,29 @@ bool Document::validate(const Setup& setup, QString* error, int ball) const
     return false;
 }
 
-bool Document::edit(const QString& text, const Setup& after, MergeKey merge)
+bool Document::edit(const QString& text, const Setup& edited, MergeKey merge)
 {
     QString error;
-    if (!validate(after, &error)) {
+    if (!validate(edited, &error)) {
         emit editRefused(error);
         return false;
     }
+    // The lesson's questions follow renamed balls and drop removed ones (core/lesson/LessonIds.h).
+    Setup after = edited;
+    lesson::followBallIds(setup_, after);
     undoStack_->push(new SetupCommand(this, text, setup_, after, merge, mergeSession_));
     return true;
 }
 
-bool Document::editBall(int index, const QString& text, const Setup& after, MergeKey merge)
+bool Document::editBall(int index, const QString& text, const Setup& edited, MergeKey merge)
 {
     QString error;
-    if (!validate(after, &error, index)) {
+    if (!validate(edited, &error, index)) {
         emit editRefused(error);
         return false;
     }
+    Setup after = edited;
+    lesson::followBallIds(setup_, after);
     undoStack_->push(new SetupCommand(this, text, setup_, after, merge, mergeSession_));
     return true;
 }

@@ -28,6 +28,11 @@ public:
     void setHighlightedEvent(int index) { highlightedEvent_ = index; }  // -1 = none
     void setPathScope(BallScope scope) { pathScope_ = scope; }
     void setLabelScope(BallScope scope) { labelScope_ = scope; }
+    std::bitset<kOverlayCount> overlays() const { return overlays_; }
+    int selectedBall() const { return selectedBall_; }
+    int highlightedEvent() const { return highlightedEvent_; }
+    BallScope pathScope() const { return pathScope_; }
+    BallScope labelScope() const { return labelScope_; }
 
     // Draws `scene` at `time` (s) from the camera preset into *out (size pixels). On failure returns
     // false and sets *error to a message a person can act on.
