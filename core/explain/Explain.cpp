@@ -264,10 +264,12 @@ void addMomentumStep(Explanation& e, const Text& law)
         std::vector<aim::FrameBody> frame;
         for (const Body& body : e.bodies) frame.push_back({body.mass, body.before.velocity, body.after.velocity});
         const aim::CentreOfMassFrame com = aim::centreOfMassFrame(frame);
-        b.step().law += " In the frame of the pair's centre of mass, which moves at V = P / (m_a + m_b), the "
-                        "momenta p* = m (v − V) are equal and opposite before and after; an elastic, frictionless "
-                        "collision only turns them.";
-        b.step().formula += ",   V = P / (m_a + m_b),   p*_a = m_a (v_a − V) = −p*_b";
+        b.step().law = Text::join({b.step().law,
+                                   Text::tr("In the frame of the pair's centre of mass, which moves at V = P / (m_a + m_b), "
+                                            "the momenta p* = m (v − V) are equal and opposite before and after; an "
+                                            "elastic, frictionless collision only turns them.")},
+                                  " ");
+        b.step().formula = Text("P = Σ m v,   ΔP = P′ − P,   V = P / (m_a + m_b),   p*_a = m_a (v_a − V) = −p*_b");
         b.out("V_cm", "V", com.velocity, "m/s")
             .out("p_cm_a", "p*_a", com.momentaBefore[0], "N s")
             .out("p_cm_b", "p*_b", com.momentaBefore[1], "N s")
