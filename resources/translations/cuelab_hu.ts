@@ -4684,6 +4684,17 @@ Kimaradt kérdés: %1</translation>
     </message>
 </context>
 <context>
+    <name>cuelab::VideoExport</name>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>%1× slower</source>
+        <translation>%1× lassítva</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::explain</name>
     <message>
         <source>Motion after</source>
@@ -4762,10 +4773,6 @@ Kimaradt kérdés: %1</translation>
         <translation>Tartós érintkezés (tolás)</translation>
     </message>
     <message>
-        <source>The law above leaves the balls parting slower than %1 m/s while the cloth&apos;s friction presses them together: they would only chatter, ever more weakly, into a lasting contact. The simulator drops that micro-bounce (a normal impulse takes the separation speed away, which only removes energy) and holds the pair: from here a contact force N ≥ 0 pushes along n, solved with the cloth&apos;s friction (Contact.h).</source>
-        <translation>A fenti törvény után a golyók %1 m/s-nál lassabban távolodnak, miközben a posztó súrlódása egymáshoz nyomja őket: csak egyre gyengülő pattogással jutnának tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a párt együtt tartja: innentől egy N ≥ 0 érintkezési erő nyom n mentén, a posztó súrlódásával együtt megoldva (Contact.h).</translation>
-    </message>
-    <message>
         <source>The collision turns some energy into sound and heat (restitution e &lt; 1, friction).</source>
         <translation>Az ütközés az energia egy részét hanggá és hővé alakítja (ütközési szám e &lt; 1, súrlódás).</translation>
     </message>
@@ -4812,10 +4819,6 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>N = (r − c)/|r − c|  (jaw),   r_c = r − R N,   v_n = −v·N</source>
         <translation>N = (r − c)/|r − c|  (pofa),   r_c = r − R N,   v_n = −v·N</translation>
-    </message>
-    <message>
-        <source>The law above leaves the ball leaving the cushion slower than %1 m/s while the cloth&apos;s friction drives it back in: it would only chatter into a lasting contact. The simulator drops that micro-bounce (a normal impulse takes the separation speed away, which only removes energy) and holds the ball against the cushion: from here the cushion&apos;s force N ≥ 0 pushes along N (Contact.h).</source>
-        <translation>A fenti törvény után a golyó %1 m/s-nál lassabban távolodik a mantineltől, miközben a posztó súrlódása visszahajtja: csak pattogva jutna tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a golyót a mantinelhez szorítva tartja: innentől a mantinel N ≥ 0 ereje nyom N mentén (Contact.h).</translation>
     </message>
     <message>
         <source>The cushion absorbs part of the energy (restitution e &lt; 1, friction at the contact).</source>
@@ -5393,16 +5396,25 @@ Kimaradt kérdés: %1</translation>
         <source>The impulse over mass changes the velocity (its vertical part goes into the cloth), its torque about the centre over I = 2/5 m R² the spin.</source>
         <translation>Az erőlökés osztva a tömeggel megváltoztatja a sebességet (függőleges része a posztóba megy), középpontra vett forgatónyomatéka osztva I = 2/5 m R²-tel a pörgést.</translation>
     </message>
-</context>
-<context>
-    <name>cuelab::VideoExport</name>
     <message>
-        <source>t = %1 s</source>
-        <translation>t = %1 s</translation>
+        <source>The cut angle φ lies between a&apos;s path d (its velocity) and n: 0° a full hit, 30° a half-ball hit; the ball fraction f = 1 − sin φ is the share of b that a covers, seen along its path (1 full, 0.5 half, 0 a graze).</source>
+        <translation>A φ vágási szög az a golyó d pályája (a sebessége) és n között mérhető: 0° telitalálat, 30° félgolyós találat; az f = 1 − sin φ golyóhányad azt adja meg, hogy a pályája mentén nézve a golyó b mekkora részét takarja (1 teli, 0,5 fél, 0 súrolás).</translation>
     </message>
     <message>
-        <source>%1× slower</source>
-        <translation>%1× lassítva</translation>
+        <source>The law above leaves the balls parting slower than %1 m/s while the contact forces press them together (the cloth&apos;s friction closes the gap faster than their turning about each other, |v_t|²/d, opens it): they would only chatter, ever more weakly, into a lasting contact. The simulator drops that micro-bounce (a normal impulse ΔP takes the separation speed away, which only removes energy) and holds the pair: from here a contact force N ≥ 0 pushes along n, solved with the cloth&apos;s friction (Contact.h). Each ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling; the cloth takes the rest), 0 at rest.</source>
+        <translation>A fenti törvény után a golyók %1 m/s-nál lassabban távolodnak, miközben az érintkezési erők egymáshoz nyomják őket (a posztó súrlódása gyorsabban zárja a rést, mint ahogy egymás körüli fordulásuk, |v_t|²/d, nyitja): csak egyre gyengülő pattogással jutnának tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú ΔP erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a párt együtt tartja: innentől egy N ≥ 0 érintkezési erő nyom n mentén, a posztó súrlódásával együtt megoldva (Contact.h). Az erőlökést minden golyó egyetlen szabály szerint veszi fel: c = 1 csúszva, 5/7 gurulva (tovább gurul; a többit a posztó veszi fel), 0 nyugalomban.</translation>
+    </message>
+    <message>
+        <source>The law above leaves the ball leaving the cushion slower than %1 m/s while the contact force presses it in: it would only chatter into a lasting contact. The simulator drops that micro-bounce (a normal impulse ΔP takes the separation speed away, which only removes energy) and holds the ball against the cushion: from here the cushion&apos;s force N ≥ 0 pushes along N (Contact.h). The ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling), 0 at rest.</source>
+        <translation>A fenti törvény után a golyó %1 m/s-nál lassabban távolodik a mantineltől, miközben az érintkezési erő visszanyomja: csak pattogva jutna tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú ΔP erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a golyót a mantinelhez szorítva tartja: innentől a mantinel N ≥ 0 ereje nyom N mentén (Contact.h). Az erőlökést a golyó egyetlen szabály szerint veszi fel: c = 1 csúszva, 5/7 gurulva (tovább gurul), 0 nyugalomban.</translation>
+    </message>
+    <message>
+        <source>In the frame of the pair&apos;s centre of mass, which moves at V = P / (m_a + m_b), the momenta p* = m (v − V) are equal and opposite before and after; an elastic, frictionless collision only turns them.</source>
+        <translation>A pár V = P / (m_a + m_b) sebességgel mozgó tömegközépponti rendszerében a p* = m (v − V) lendületek ütközés előtt és után is egyenlő nagyok és ellentétesek; egy rugalmas, súrlódásmentes ütközés csak elforgatja őket.</translation>
+    </message>
+    <message>
+        <source>The bodies were touching at the event (within 10^{−10} m) and pressed together, found when a group of held contacts was solved again then: the contact begins at that instant, not at a root of f (Detection.h, resting contact).</source>
+        <translation>A testek az eseménykor érintkeztek (10^{−10} m-en belül) és egymásnak nyomódtak; ez akkor derült ki, amikor a szimulátor egy tartott érintkezésekből álló csoportot újra megoldott: az érintkezés abban a pillanatban kezdődik, nem f egy gyökénél (Detection.h, nyugvó érintkezés).</translation>
     </message>
 </context>
 </TS>
