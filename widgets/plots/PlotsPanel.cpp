@@ -73,7 +73,7 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent)
     // Long choices are elided rather than widening the dock (Plots under the view at 800x600).
     for (QComboBox* box : {plotBox_, ballsBox_}) {
         box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-        box->setMinimumContentsLength(6);
+        box->setMinimumContentsLength(4);
     }
     hint_->setWordWrap(true);  // its words wrap rather than widening the dock
     // Alt+T reaches the choice from the keyboard (then the arrow keys pick a plot).
