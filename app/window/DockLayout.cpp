@@ -295,11 +295,11 @@ void DockLayout::applyShares(int attempts)
         int want = 0;
         for (int width : widths) want += width;
         const QWidget* central = window_->centralWidget();
-        const int room = window_->width() - (central ? central->minimumSizeHint().width() : 0);
+        const int space = window_->width() - (central ? central->minimumSizeHint().width() : 0);
         bool missed = false;
         for (qsizetype i = 0; i < docks.size(); ++i)
             if (docks[i]->isVisible() && std::abs(docks[i]->width() - widths[i]) > 2) missed = true;
-        if (missed && want <= room) applyShares(attempts - 1);
+        if (missed && want <= space) applyShares(attempts - 1);
     });
 }
 
