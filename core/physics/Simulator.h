@@ -107,7 +107,7 @@ private:
     // event with its hold and settles the group; false when the law's result stands alone (the
     // caller finishes the event as any other).
     bool holdCollision(const Event& e, const HeldContact& candidate, double separation);
-    double turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts) const;
+    double turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts) const;
 
     SimulationResult& r_;
     const Table& table_;
