@@ -105,23 +105,23 @@ double cushionTime(const Path& p, double radius, const CushionSegment& seg, doub
     const Quartic g = cushionGap(p, radius, seg);
     const double g0 = g[4], g1 = g[3], g2 = g[2];
     auto onSegment = [&](double s) { return onCushionSegment(p, seg, s); };
-    // A ball resting against the nose at an end of its segment (at the junction with the jaw, whose
-    // normal is the same there) rests against this cushion too, up to rounding of where its foot is.
+    // Touching: the gap within kContactTolerance and the foot on the segment, up to rounding of where
+    // it is (a ball at an end of the segment, the junction with the jaw whose normal is the same there,
+    // touches this cushion too, approaching or resting; as the held contacts' geometry).
     auto touchesSegment = [&] {
         const Vec2 along = seg.b - seg.a;
         const double L = along.norm();
         const double foot = (p.c0 - seg.a).dot(along / L);
         return foot >= -kContactTolerance && foot <= L + kContactTolerance;
     };
-    // Touching: a contact now if the ball approaches, or rests against the nose (normal speed below
-    // kRestingSpeed) while its acceleration presses it in.
-    if (std::abs(g0) <= kContactTolerance && ((g1 < -kRestingSpeed && onSegment(0.0)) || (g1 <= kRestingSpeed && g1 >= -kRestingSpeed && g2 < 0.0 && touchesSegment())))
-        return 0.0;
-    // Parting so slowly that it comes back before the gap has opened past kContactTolerance (its
-    // largest value g0 + g1^2 / (4 |g2|)): a resting contact, now (see circleContactTime).
-    if (std::abs(g0) <= kContactTolerance && g1 > 0.0 && g2 < 0.0 && g0 + g1 * g1 / (-4.0 * g2) <= kContactTolerance &&
-        touchesSegment())
-        return 0.0;
+    if (std::abs(g0) <= kContactTolerance && touchesSegment()) {
+        // A contact now if the ball approaches, or rests against the nose (normal speed below
+        // kRestingSpeed) while its acceleration presses it in, or parts so slowly that it comes back
+        // before the gap has opened past kContactTolerance (its largest value g0 + g1^2 / (4 |g2|)):
+        // a resting contact too (see circleContactTime).
+        if (g1 < -kRestingSpeed || (g1 <= kRestingSpeed && g2 < 0.0)) return 0.0;
+        if (g1 > 0.0 && g2 < 0.0 && g0 + g1 * g1 / (-4.0 * g2) <= kContactTolerance) return 0.0;
+    }
 
     // Roots of the quadratic, stably (no cancellation between -g1 and the square root).
     double roots[2];
