@@ -556,6 +556,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         }
         if (idle[m]) continue;
         start_[at(b)] = t;  // (beginSegment below logs it; the limit reads every member's path at t)
+        noteStop(state_[at(b)].motion, s.motion, t);
         state_[at(b)] = s;
         push_[at(b)] = push;
         path_[at(b)] = pathOf(s, radius(b), p_, push);
