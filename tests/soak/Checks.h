@@ -83,7 +83,9 @@ Vec2 clothCorrectedMomentum(const BallState& s, double radius, double mass);
 // before and after for n balls, plus m kSpeedEpsilon per ball for the snap of a label, + 1e-15 N s):
 // re-seating a rolling ball gives the cloth a share (5/7 of the impulse moves the ball), and the
 // correction takes it out. Not checked where the group shares its impulses otherwise: a member at
-// rest or slower than kRollOffSpeed (the cloth holds it whole, seatContacts), a member touching a
+// rest or slower than kRollOffSpeed (the cloth holds it whole, seatContacts) just before or after the
+// instant or at any solve within it (a cascade of events at one instant solves the group once per
+// event: a segment of the member that begins there, an event's before-state or its law's result), a member touching a
 // cushion or jaw, another kind of event of a member at that instant, or the frictional ball-ball
 // law (its impulse off the centres turns the spins too). Returns "" or what broke; *worst (if given) receives the
 // largest change checked.
