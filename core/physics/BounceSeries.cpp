@@ -158,7 +158,8 @@ BounceSeries bounceSeries(const AirState& landing, double radius, double mass, c
     b.end.z = 0.0;
     b.end.vz = 0.0;
     b.end.motion = classify(b.end, radius);
-    b.frictionEnergyLost = kineticEnergy(b.landing, radius, mass) - kineticEnergy(b.end, radius, mass);
+    // (kineticEnergy counts the landing's vertical velocity, which normalEnergyLost holds.)
+    b.frictionEnergyLost = kineticEnergy(b.landing, radius, mass) - b.normalEnergyLost - kineticEnergy(b.end, radius, mass);
     return b;
 }
 
