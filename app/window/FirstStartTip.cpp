@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QSettings>
 #include <QToolButton>
@@ -64,6 +65,13 @@ void FirstStartTip::showAgain()
 bool FirstStartTip::eventFilter(QObject* watched, QEvent* event)
 {
     if (watched == parent() && event->type() == QEvent::Resize) place();
+    // Escape over the table view closes the tip first (a new user's first reflex), before the view
+    // sees the key.
+    if (watched == parent() && event->type() == QEvent::KeyPress && !isHidden() &&
+        static_cast<QKeyEvent*>(event)->key() == Qt::Key_Escape) {
+        dismiss();
+        return true;
+    }
     return QFrame::eventFilter(watched, event);
 }
 

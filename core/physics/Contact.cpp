@@ -143,6 +143,20 @@ bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::vec
             }
         }
         const Eigen::VectorXd g = b + A * N;
+        // The active rows' equations may have no exact solution: contacts whose normals are dependent
+        // (a ball at the junction of a cushion and its jaw, whose normals agree there) with different
+        // accelerations (the jaw's curvature). The solve is then a least-squares one, and leaves some
+        // active rows approaching (g < 0) and others parting (g > 0). A row the others' forces already
+        // part carries no force in a solution: the one parted most leaves the set.
+        Eigen::Index leave = -1;
+        for (Eigen::Index k = 0; k < m; ++k)
+            if (active[static_cast<std::size_t>(k)] && !bilateral[static_cast<std::size_t>(k)] && g(k) > tolG &&
+                (leave < 0 || g(k) > g(leave)))
+                leave = k;
+        if (leave >= 0) {
+            active[static_cast<std::size_t>(leave)] = 0;
+            continue;
+        }
         Eigen::Index join = -1;
         for (Eigen::Index k = 0; k < m; ++k)
             if (!active[static_cast<std::size_t>(k)] && g(k) < -tolG && (join < 0 || g(k) < g(join))) join = k;

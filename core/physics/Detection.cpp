@@ -2,6 +2,7 @@
 
 #include "Quartic.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cuelab {
@@ -53,6 +54,28 @@ double circleContactTime(const Vec2& d0, const Vec2& d1, const Vec2& d2, double 
     return firstFallingRoot(distanceQuartic(d0, d1, d2, reach), horizon);
 }
 
+// The real roots of c0 + c1 s + c2 s^2 in increasing order (how many), computed stably: no
+// cancellation between -c1 and the square root.
+int quadraticRoots(double c0, double c1, double c2, double roots[2])
+{
+    if (c2 == 0.0) {
+        if (c1 == 0.0) return 0;
+        roots[0] = -c0 / c1;
+        return 1;
+    }
+    const double disc = c1 * c1 - 4.0 * c2 * c0;
+    if (disc < 0.0) return 0;
+    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+    if (q == 0.0) {  // c0 = c1 = 0
+        roots[0] = 0.0;
+        return 1;
+    }
+    const double r1 = q / c2, r2 = c0 / q;
+    roots[0] = std::min(r1, r2);
+    roots[1] = std::max(r1, r2);
+    return 2;
+}
+
 }  // namespace
 
 Quartic ballBallGap(const Path& a, double ra, const Path& b, double rb)
@@ -101,52 +124,57 @@ double pocketTime(const Path& p, const Pocket& pocket, double horizon)
 
 double cushionTime(const Path& p, double radius, const CushionSegment& seg, double horizon)
 {
-    // g(s) = (p(s) - a) . N - R = g0 + g1 s + g2 s^2.
+    // g(s) = (p(s) - a) . N - R = g0 + g1 s + g2 s^2, and the foot of the perpendicular
+    // f(s) = (p(s) - a) . T = f0 + f1 s + f2 s^2 (m from a along the segment, of length L).
     const Quartic g = cushionGap(p, radius, seg);
     const double g0 = g[4], g1 = g[3], g2 = g[2];
-    auto onSegment = [&](double s) { return onCushionSegment(p, seg, s); };
-    // A ball resting against the nose at an end of its segment (at the junction with the jaw, whose
-    // normal is the same there) rests against this cushion too, up to rounding of where its foot is.
-    auto touchesSegment = [&] {
-        const Vec2 along = seg.b - seg.a;
-        const double L = along.norm();
-        const double foot = (p.c0 - seg.a).dot(along / L);
-        return foot >= -kContactTolerance && foot <= L + kContactTolerance;
+    const Vec2 along = seg.b - seg.a;
+    const double L = along.norm();
+    const Vec2 tangent = along / L;
+    const double f0 = (p.c0 - seg.a).dot(tangent), f1 = p.c1.dot(tangent), f2 = p.c2.dot(tangent);
+    // Touching at s: the gap within kContactTolerance and the foot on the segment, up to rounding of
+    // where it is (a ball at an end of the segment, the junction with the jaw whose normal is the same
+    // there, touches this cushion too; as the held contacts' geometry). A contact then if the ball
+    // approaches, or rests against the nose (normal speed below kRestingSpeed) while its acceleration
+    // presses it in, or parts so slowly that it comes back before the gap has opened past
+    // kContactTolerance (its largest value g + g'^2 / (4 |g2|)): a resting contact too (see
+    // circleContactTime).
+    auto contactAt = [&](double s) {
+        const double gap = g0 + (g1 + g2 * s) * s;
+        const double foot = f0 + (f1 + f2 * s) * s;
+        if (std::abs(gap) > kContactTolerance || foot < -kContactTolerance || foot > L + kContactTolerance) return false;
+        const double speed = g1 + 2.0 * g2 * s;
+        if (speed < -kRestingSpeed || (speed <= kRestingSpeed && g2 < 0.0)) return true;
+        return speed > 0.0 && g2 < 0.0 && gap + speed * speed / (-4.0 * g2) <= kContactTolerance;
     };
-    // Touching: a contact now if the ball approaches, or rests against the nose (normal speed below
-    // kRestingSpeed) while its acceleration presses it in.
-    if (std::abs(g0) <= kContactTolerance && ((g1 < -kRestingSpeed && onSegment(0.0)) || (g1 <= kRestingSpeed && g1 >= -kRestingSpeed && g2 < 0.0 && touchesSegment())))
-        return 0.0;
-    // Parting so slowly that it comes back before the gap has opened past kContactTolerance (its
-    // largest value g0 + g1^2 / (4 |g2|)): a resting contact, now (see circleContactTime).
-    if (std::abs(g0) <= kContactTolerance && g1 > 0.0 && g2 < 0.0 && g0 + g1 * g1 / (-4.0 * g2) <= kContactTolerance &&
-        touchesSegment())
-        return 0.0;
+    if (contactAt(0.0)) return 0.0;
 
-    // Roots of the quadratic, stably (no cancellation between -g1 and the square root).
+    // Where the gap closes with the foot on the segment.
+    double best = kNever;
     double roots[2];
-    int n = 0;
-    if (g2 == 0.0) {
-        if (g1 != 0.0) roots[n++] = -g0 / g1;
-    } else {
-        const double disc = g1 * g1 - 4.0 * g2 * g0;
-        if (disc >= 0.0) {
-            const double q = -0.5 * (g1 + std::copysign(std::sqrt(disc), g1));
-            if (q != 0.0) {
-                const double r1 = q / g2, r2 = g0 / q;
-                roots[n++] = std::min(r1, r2);
-                roots[n++] = std::max(r1, r2);
-            } else {
-                roots[n++] = 0.0;  // g0 = g1 = 0
+    for (int i = 0, n = quadraticRoots(g0, g1, g2, roots); i < n; ++i) {
+        const double s = roots[i];
+        if (s <= 0.0 || s > horizon) continue;
+        if (g1 + 2.0 * g2 * s < 0.0 && onCushionSegment(p, seg, s)) {
+            best = s;
+            break;
+        }
+    }
+    // Where the foot enters the segment through an end with the ball touching the line, closing in:
+    // a ball that follows the jaw at the junction (held against it) passes onto the cushion there, and
+    // the gap never crosses zero on the segment (it is zero at the end and falls past it).
+    for (const double end : {0.0, L}) {
+        const double inward = end == 0.0 ? 1.0 : -1.0;
+        for (int i = 0, n = quadraticRoots(f0 - end, f1, f2, roots); i < n; ++i) {
+            const double s = roots[i];
+            if (s <= 0.0 || s > horizon || s >= best) continue;
+            if (inward * (f1 + 2.0 * f2 * s) > 0.0 && contactAt(s)) {
+                best = s;
+                break;
             }
         }
     }
-    for (int i = 0; i < n; ++i) {
-        const double s = roots[i];
-        if (s <= 0.0 || s > horizon) continue;
-        if (g1 + 2.0 * g2 * s < 0.0 && onSegment(s)) return s;
-    }
-    return kNever;
+    return best;
 }
 
 }  // namespace cuelab

@@ -55,7 +55,8 @@ bool onCushionSegment(const Path& p, const CushionSegment& seg, double s);
 double ballBallTime(const Path& a, double ra, const Path& b, double rb, double horizon);
 
 // A ball and a straight cushion nose: (p(s) - seg.a) . N = R, a quadratic, and the foot of the
-// perpendicular must lie on the segment.
+// perpendicular must lie on the segment; or the foot enters the segment through an end (a root of its
+// own quadratic) with the ball touching the line and closing in (past a jaw at the junction).
 double cushionTime(const Path& p, double radius, const CushionSegment& seg, double horizon);
 
 // A ball and a jaw tip: |p(s) - c| = R + rj, a quartic.

@@ -98,7 +98,7 @@ CircleLimits circleLimits(const Vec2& rel0, const Vec2& rel1, const Vec2& rel2, 
 
 }  // namespace
 
-double Simulator::turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts) const
+double Simulator::turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts) const
 {
     double limit = kMaxHeldSegment;
     const double g = p_.gravity;
@@ -134,8 +134,10 @@ double Simulator::turnLimit(const std::vector<int>& members, const std::vector<H
         }
         limit = std::min(limit, turn);
     }
+    // The contacts' geometry from now on: a ball that keeps its segment (idle in settle) has its path
+    // from that segment's start, not from t.
     for (const HeldContact& h : contacts) {
-        const Path pa = path_[at(h.a)];
+        const Path pa = pathNow(h.a, t);
         if (h.body == ContactBody::Cushion) {
             const CushionSegment& seg = table_.cushions[at(h.other)];
             const Vec2 d = seg.b - seg.a;
@@ -148,7 +150,7 @@ double Simulator::turnLimit(const std::vector<int>& members, const std::vector<H
         Vec2 rel0, rel1, rel2;
         double D;
         if (h.body == ContactBody::Ball) {
-            const Path& pb = path_[at(h.other)];
+            const Path pb = pathNow(h.other, t);
             rel0 = pb.c0 - pa.c0;
             rel1 = pb.c1 - pa.c1;
             rel2 = pb.c2 - pa.c2;
@@ -553,6 +555,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             idle[m] = now.motion == s.motion && now.position == s.position && now.velocity == s.velocity && now.spin == s.spin;
         }
         if (idle[m]) continue;
+        start_[at(b)] = t;  // (beginSegment below logs it; the limit reads every member's path at t)
+        noteStop(state_[at(b)].motion, s.motion, t);
         state_[at(b)] = s;
         push_[at(b)] = push;
         path_[at(b)] = pathOf(s, radius(b), p_, push);
@@ -560,7 +564,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     bool pushed = false;
     for (int b : members) pushed = pushed || !push_[at(b)].isZero(0.0);
     // (Held contacts without force still turn their normals: the segment is bounded for them too.)
-    const double limit = pushed || !kept.empty() ? t + turnLimit(members, kept) : kNever;
+    const double limit = pushed || !kept.empty() ? t + turnLimit(t, members, kept) : kNever;
     for (std::size_t m = 0; m < members.size(); ++m) {
         const int b = members[m];
         regroupAt_[at(b)] = heldCount_[at(b)] > 0 ? limit : kNever;

@@ -24,6 +24,12 @@ bool Simulator::atRest(int i) const
     return m == MotionState::Stationary || isOutOfPlay(m);
 }
 
+void Simulator::noteStop(MotionState was, MotionState is, double t)
+{
+    if ((was == MotionState::Sliding || was == MotionState::Rolling) && (is == MotionState::Stationary || is == MotionState::Spinning))
+        lastStop_ = std::max(lastStop_, t);
+}
+
 void Simulator::beginSegment(int i, double t, const BallState& s, const Vec2& push)
 {
     BallState st = s;
@@ -36,6 +42,7 @@ void Simulator::beginSegment(int i, double t, const BallState& s, const Vec2& pu
         st.vz = 0.0;
     }
     series_[at(i)] = 0;
+    noteStop(state_[at(i)].motion, st.motion, t);
     start_[at(i)] = t;
     state_[at(i)] = st;
     push_[at(i)] = push;
@@ -431,14 +438,18 @@ void Simulator::run(const std::optional<CueStrike>& shot)
             r_.error = msg.str();
             return;
         }
+        const std::size_t logged = r_.events.size();
         process(c);
-        if (c.agent != Agent::Refresh) lastEvent = c.time;
+        // (A group solved again may log a member's transition or stop: an event too.)
+        if (c.agent != Agent::Refresh || r_.events.size() > logged) lastEvent = c.time;
     }
     bool rest = true;
     for (int i = 0; i < n_; ++i) rest = rest && atRest(i);
     if (rest) {
         r_.status = SimulationStatus::AllAtRest;
-        r_.endTime = r_.events.empty() ? 0.0 : lastEvent;
+        // When the last ball came to rest: the last event, or a later solve of a held group that
+        // found a ball still (its stop was due a rounding later, and takes no event of its own).
+        r_.endTime = r_.events.empty() ? 0.0 : std::max(lastEvent, lastStop_);
     } else {
         r_.status = SimulationStatus::ReachedUntil;
         r_.endTime = limit_;

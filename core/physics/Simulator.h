@@ -85,6 +85,9 @@ private:
     }
     Path pathNow(int i, double t) const;
     void beginSegment(int i, double t, const BallState& s, const Vec2& push = Vec2::Zero());
+    // A ball's new segment at t finds it at rest after moving: it came to rest then (at an event, or
+    // at a group's solve that finds it still).
+    void noteStop(MotionState was, MotionState is, double t);
     void predictOwn(int i, double now);
     void predictPairs(int i, double now);
     void rescanRow(int j);
@@ -140,7 +143,7 @@ private:
     // event with its hold and settles the group; false when the law's result stands alone (the
     // caller finishes the event as any other).
     bool holdCollision(const Event& e, const HeldContact& candidate, double separation);
-    double turnLimit(const std::vector<int>& members, const std::vector<HeldContact>& contacts) const;
+    double turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts) const;
 
     SimulationResult& r_;
     const Table& table_;
@@ -170,6 +173,7 @@ private:
     std::vector<HeldContact> held_;   // the contacts held now, in the order they were formed
     std::vector<int> heldCount_;      // per ball, how many of held_ involve it
     std::vector<double> regroupAt_;   // s, when a held group is solved again (kNever if none)
+    double lastStop_ = 0.0;           // s, the last time a ball's new segment found it at rest after moving
     std::size_t lastGroupSize_ = 0;   // how many contacts the last settle() solved
     // Airborne balls: the ball's segment is a bounce series (seriesOf_ holds it), the contact with the
     // cushion its own prediction found (kind and normal), and how many bounces in a row it took as

@@ -2314,6 +2314,14 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <source>The time-of-impact polynomial f(τ) over the prediction window: its roots are marked, the root that gave the event in red. τ in seconds from t₀.</source>
         <translation>Az ütközési idő f(τ) polinomja az előrejelzési ablakban: a gyökei megjelölve, az eseményt adó gyök pirossal. τ másodpercben, t₀-tól.</translation>
     </message>
+    <message>
+        <source>Time of impact</source>
+        <translation>Az ütközés időpontja</translation>
+    </message>
+    <message>
+        <source>Momenta and energy</source>
+        <translation>Lendületek és energia</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::FirstStartTip</name>

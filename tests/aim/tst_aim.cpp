@@ -5,6 +5,7 @@
 #include "Aim.h"
 #include "Explain.h"
 #include "SetupFile.h"
+#include "ExampleSetup.h"
 
 #include <QtTest>
 
@@ -19,13 +20,7 @@ namespace {
 constexpr double R = 0.028575;  // m, a pool ball
 constexpr double D = 2 * R;     // m, centres at contact
 
-Setup example(const QString& name)
-{
-    QString error;
-    const auto s = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + name, &error);
-    if (!s) qFatal("%s", qPrintable(error));
-    return *s;
-}
+Setup example(const QString& name) { return loadExample(name); }
 
 double rad(double deg) { return deg * std::numbers::pi / 180.0; }
 

@@ -5,6 +5,7 @@
 #include "Explain.h"
 #include "Frames.h"
 #include "SetupFile.h"
+#include "ExampleSetup.h"
 
 #include <QDir>
 #include <QtTest>
@@ -15,13 +16,7 @@ using namespace cuelab;
 
 namespace {
 
-Setup example(const QString& name)
-{
-    QString error;
-    const auto s = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + name, &error);
-    if (!s) qFatal("%s", qPrintable(error));
-    return *s;
-}
+Setup example(const QString& name) { return loadExample(name); }
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include "analysis/OutcomeMap.h"
 #include "analysis/ToleranceBar.h"
 #include "editor/Document.h"
+#include "ExamplePath.h"
 
 #include <QComboBox>
 #include <QTableWidget>
@@ -23,8 +24,6 @@ using namespace cuelab;
 using analysis::ShotClass;
 
 namespace {
-
-QString examplePath(const char* name) { return QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
 
 bool waitForJob(AnalysisPanel& panel, int ms = 120000)
 {

@@ -11,6 +11,7 @@
 #include "editor/Document.h"
 
 #include "ShotOdds.h"
+#include "ExamplePath.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -27,8 +28,6 @@ using namespace cuelab;
 using analysis::StrikeKey;
 
 namespace {
-
-QString examplePath(const char* name) { return QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
 
 bool waitForJob(OddsSection& section, int ms = 120000)
 {

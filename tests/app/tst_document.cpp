@@ -6,6 +6,7 @@
 
 #include "LegalSetup.h"
 #include "SetupFile.h"
+#include "ExamplePath.h"
 
 #include <QDir>
 #include <QSignalSpy>
@@ -23,8 +24,6 @@ Q_DECLARE_METATYPE(Edit)
 namespace {
 
 QByteArray text(const Setup& s) { return io::serializeSetup(s); }
-
-QString examplePath(const char* name) { return QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
 
 Ball ballAt(const Document& d, int i) { return d.setup().balls[static_cast<std::size_t>(i)]; }
 

@@ -7,6 +7,7 @@
 #include "editor/EventTreeModel.h"
 #include "editor/EventsPanel.h"
 #include "editor/Playback.h"
+#include "ExamplePath.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -22,7 +23,7 @@ std::shared_ptr<const SimulationResult> simulateExample(const char* name)
 {
     Document d;
     QString error;
-    if (!d.load(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name), &error)) {
+    if (!d.load(examplePath(name), &error)) {
         qWarning("%s", qPrintable(error));
         return nullptr;
     }

@@ -16,6 +16,7 @@
 #include "view/TableView.h"
 
 #include "SetupFile.h"
+#include "ExamplePath.h"
 
 #include <QAbstractButton>
 #include <QDockWidget>
@@ -40,8 +41,6 @@ using namespace cuelab;
 namespace {
 
 constexpr double kTimeTolerance = 1e-12;  // s
-
-QString examplePath(const char* name) { return QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
 
 // Answers the next modal message box with `button` and hands back its text.
 class MessageBoxAnswer : public QObject {

@@ -12,6 +12,7 @@
 #include "NumberParse.h"
 #include "SetupFile.h"
 #include "Simulation.h"
+#include "ExamplePath.h"
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -30,8 +31,6 @@ namespace {
 const QString kCli = QStringLiteral(CUELAB_BINARY_DIR "/bin/cuelab-cli");
 const QString kWindow = QStringLiteral(CUELAB_BINARY_DIR "/bin/cuelab");
 constexpr int kTimeLimitMs = 20000;  // far above any refusal; a hang ends here and fails the row
-
-QString examplePath(const char* name) { return QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + name; }
 
 const QStringList& badNumbers()
 {

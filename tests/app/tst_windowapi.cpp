@@ -451,6 +451,21 @@ private slots:
         QVERIFY(!second.findChild<QWidget*>(QStringLiteral("firstStartTip"))->isVisibleTo(&second));
     }
 
+    void escapeOverTheViewClosesTheFirstStartTip()
+    {
+        QSettings().remove(QStringLiteral("help/firstStartTipSeen"));
+        MainWindow window;
+        auto* tip = window.findChild<QWidget*>(QStringLiteral("firstStartTip"));
+        QVERIFY(tip && tip->isVisibleTo(&window));
+        QWidget* view = tip->parentWidget();
+        QVERIFY(view);
+        QTest::keyClick(view, Qt::Key_Escape);
+        QVERIFY(!tip->isVisibleTo(&window));
+        // Hidden, the tip lets Escape through to the view again.
+        QKeyEvent again(QEvent::KeyPress, Qt::Key_Escape, Qt::NoModifier);
+        QVERIFY(!tip->eventFilter(view, &again));
+    }
+
     void selectionRules()
     {
         Selection s;

@@ -2,6 +2,7 @@
 // naming the option, byte-identical repeated runs.
 
 #include "Cli.h"
+#include "ExamplePath.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -24,7 +25,7 @@ Result run(const QStringList& args)
     return r;
 }
 
-QString example(const char* name) { return QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
+QString example(const char* name) { return examplePath(name); }
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 // values, run in-process through the Cli library.
 
 #include "Cli.h"
+#include "ExamplePath.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -11,7 +12,7 @@
 
 namespace {
 
-QString example(const char* name) { return QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
+QString example(const char* name) { return examplePath(name); }
 
 QJsonObject simulate(const QString& file, QByteArray* text = nullptr)
 {

@@ -13,6 +13,7 @@
 #include "view/TableView.h"
 
 #include "SetupFile.h"
+#include "ExampleSetup.h"
 
 #include <QCheckBox>
 #include <QDockWidget>
@@ -29,13 +30,7 @@ using compare::EngineKind;
 
 namespace {
 
-Setup example(const char* name)
-{
-    QString error;
-    const auto s = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name), &error);
-    if (!s) qFatal("%s", qPrintable(error));
-    return *s;
-}
+Setup example(const char* name) { return loadExample(name); }
 
 QDockWidget* compareDock(MainWindow& w)
 {

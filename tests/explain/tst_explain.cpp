@@ -13,6 +13,7 @@
 #include "models/ModelRegistry.h"
 #include "resolve/CushionModel.h"
 #include "resolve/StrongeCushion.h"
+#include "ExampleSetup.h"
 
 #include <QDir>
 #include <QtTest>
@@ -143,13 +144,7 @@ QStringList checkRun(const Setup& setup, std::map<EventKind, int>* kinds = nullp
     return problems;
 }
 
-Setup example(const QString& name)
-{
-    QString error;
-    const auto s = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + name, &error);
-    if (!s) qFatal("%s", qPrintable(error));
-    return *s;
-}
+Setup example(const QString& name) { return loadExample(name); }
 
 }  // namespace
 

@@ -28,6 +28,7 @@
 #include <QMenu>
 #include <QPlainTextEdit>
 #include <QScrollArea>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -155,6 +156,34 @@ private slots:
         QTRY_VERIFY2(text->height() >= 0.3 * panel->height(),
                      qPrintable(QStringLiteral("text %1 of %2").arg(text->height()).arg(panel->height())));
         QVERIFY(conservation->height() >= 260);
+        QCOMPARE(panel->figureLayout(), ExplainPanel::FigureLayout::Stacked);
+        // Shorter still (Teach at 1024x700, a dock of about 640 px): both figures would leave the
+        // derivation a line or two; one at a time, in tabs, it keeps a third again, and the
+        // momenta and energy get their full height (no legend over the bars).
+        area.resize(350, 640);
+        QTRY_COMPARE(panel->figureLayout(), ExplainPanel::FigureLayout::Tabbed);
+        QTRY_VERIFY2(text->height() >= 0.3 * panel->height(),
+                     qPrintable(QStringLiteral("text %1 of %2").arg(text->height()).arg(panel->height())));
+        auto* tabs = panel->findChild<QTabWidget*>(QStringLiteral("explainFigureTabs"));
+        QVERIFY(tabs);
+        QCOMPARE(tabs->count(), 2);
+        tabs->setCurrentIndex(1);
+        QTRY_VERIFY(conservation->isVisible());
+        QVERIFY(conservation->height() >= 380);
+        // The cue strike's time is closed-form: no chart, so no tab for it, and the other is shown.
+        const auto strike = firstEvent(*r, EventKind::CueStrike);
+        QVERIFY(strike >= 0);
+        panel->showEvent(strike);
+        QCOMPARE(tabs->isTabVisible(0), false);
+        QCOMPARE(tabs->isTabVisible(1), true);
+        QTRY_VERIFY(conservation->isVisible());
+        panel->showEvent(firstEvent(*r, EventKind::BallBall));
+        QCOMPARE(tabs->isTabVisible(0), true);
+        // Taller again, both figures come back, stacked.
+        area.resize(350, 900);
+        QTRY_COMPARE(panel->figureLayout(), ExplainPanel::FigureLayout::Stacked);
+        QCOMPARE(tabs->count(), 0);
+        QTRY_VERIFY(conservation->isVisible());
     }
 
     void followsTransport()

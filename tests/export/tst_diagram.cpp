@@ -7,6 +7,7 @@
 #include "export/DiagramFiles.h"
 #include "export/LessonReport.h"
 #include "export/ShotDiagram.h"
+#include "ExampleSetup.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -29,11 +30,9 @@ struct Loaded {
 
 Loaded load(const QString& file)
 {
-    QString error;
-    const std::optional<Setup> setup = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + file, &error);
-    if (!setup) qFatal("%s", qPrintable(error));
-    return {std::make_shared<const SimulationResult>(simulate(*setup)),
-            {QString::fromStdString(setup->name), QString::fromStdString(setup->notes)}};
+    const Setup setup = loadExample(file);
+    return {std::make_shared<const SimulationResult>(simulate(setup)),
+            {QString::fromStdString(setup.name), QString::fromStdString(setup.notes)}};
 }
 
 struct Circle {

@@ -16,6 +16,7 @@
 #include "lesson/LessonPanel.h"
 #include "outcome/OutcomeLine.h"
 #include "resolve/CushionModel.h"
+#include "ExampleSetup.h"
 
 #include <QFile>
 #include <QLabel>
@@ -28,13 +29,7 @@ using namespace cuelab;
 
 namespace {
 
-Setup example(const char* name)
-{
-    QString error;
-    const std::optional<Setup> setup = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name), &error);
-    if (!setup) qFatal("%s", qPrintable(error));
-    return *setup;
-}
+Setup example(const char* name) { return loadExample(name); }
 
 QString value(const QList<Fact>& facts, const QString& name)
 {

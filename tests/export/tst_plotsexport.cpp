@@ -15,6 +15,7 @@
 #include "view/TableView.h"
 
 #include "Curves.h"
+#include "ExamplePath.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -35,7 +36,6 @@ using namespace cuelab;
 
 namespace {
 
-QString examplePath(const char* name) { return QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name); }
 QString binary(const char* name) { return QStringLiteral(CUELAB_BINARY_DIR "/bin/") + QLatin1String(name); }
 
 QByteArray run(const QString& program, const QStringList& arguments, int* status = nullptr, QByteArray* err = nullptr)

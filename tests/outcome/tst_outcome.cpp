@@ -4,6 +4,7 @@
 #include "SetupFile.h"
 #include "ShotOutcome.h"
 #include "Simulation.h"
+#include "ExampleSetup.h"
 
 #include <QDir>
 #include <QTest>
@@ -21,11 +22,7 @@ struct Run {
 
 Run run(const QString& file)
 {
-    QString error;
-    const std::optional<Setup> setup =
-        io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + file, &error);
-    if (!setup) qFatal("%s", qPrintable(error));
-    Run r{simulate(*setup), {}};
+    Run r{simulate(loadExample(file)), {}};
     r.outcome = shotOutcome(r.result);
     return r;
 }

@@ -5,6 +5,7 @@
 #include "Curves.h"
 #include "SetupFile.h"
 #include "Simulation.h"
+#include "ExampleSetup.h"
 
 #include <QTest>
 
@@ -15,14 +16,7 @@ using namespace cuelab::plots;
 
 namespace {
 
-SimulationResult run(const QString& file)
-{
-    QString error;
-    const std::optional<Setup> setup =
-        io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + file, &error);
-    if (!setup) qFatal("%s", qPrintable(error));
-    return simulate(*setup);
-}
+SimulationResult run(const QString& file) { return simulate(loadExample(file)); }
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include "view/BallPlacement.h"
 #include "view/CuePlacement.h"
 #include "view/CueStickMesh.h"
+#include "ExampleSetup.h"
 
 #include <QtTest>
 
@@ -20,11 +21,7 @@ namespace {
 
 Setup example(const char* name)
 {
-    QString error;
-    const std::optional<Setup> setup =
-        io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/") + QLatin1String(name), &error);
-    if (!setup) qFatal("%s", qPrintable(error));
-    return *setup;
+    return loadExample(name);
 }
 
 // The nearest legal spot by brute force: a fine grid around `wanted`, then the best point refined.

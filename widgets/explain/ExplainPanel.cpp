@@ -11,6 +11,8 @@
 
 #include <QLabel>
 #include <QSplitter>
+#include <QStackedWidget>
+#include <QTabWidget>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
@@ -36,9 +38,20 @@ ExplainPanel::ExplainPanel(Document* document, Selection* selection, Playback* p
     lower->setChildrenCollapsible(false);
     lower->addWidget(chart_);
     lower->addWidget(conservation_);
+    figureTabs_ = new QTabWidget(this);
+    figureTabs_->setObjectName(QStringLiteral("explainFigureTabs"));
+    figureTabs_->setDocumentMode(true);
+    // Never wider than the narrowest dock: the tab names elide, and scroll, rather than widen it.
+    figureTabs_->setElideMode(Qt::ElideRight);
+    figureTabs_->setUsesScrollButtons(true);
+    // Its tab bar's width is no minimum for the dock (the figures in it have their own).
+    figureTabs_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    figureHolder_ = new QStackedWidget(this);
+    figureHolder_->addWidget(lower);
+    figureHolder_->addWidget(figureTabs_);
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(text_);
-    split->addWidget(lower);
+    split->addWidget(figureHolder_);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
     auto* layout = new QVBoxLayout(this);
@@ -60,7 +73,46 @@ ExplainPanel::ExplainPanel(Document* document, Selection* selection, Playback* p
 
 QString ExplainPanel::html() const { return text_->toHtml(); }
 
-bool ExplainPanel::figuresSideBySide() const { return figures_->orientation() == Qt::Horizontal; }
+ExplainPanel::FigureLayout ExplainPanel::figureLayout() const
+{
+    if (figureHolder_->currentWidget() == figureTabs_) return FigureLayout::Tabbed;
+    return figures_->orientation() == Qt::Horizontal ? FigureLayout::SideBySide : FigureLayout::Stacked;
+}
+
+void ExplainPanel::setFiguresTabbed(bool tabbed)
+{
+    if (tabbed == (figureHolder_->currentWidget() == figureTabs_)) return;
+    // The same two figure widgets move between the splitter and the tabs (reparented, not copied).
+    if (tabbed) {
+        figureTabs_->addTab(chart_, tr("Time of impact"));
+        figureTabs_->addTab(conservation_, tr("Momenta and energy"));
+        figureHolder_->setCurrentWidget(figureTabs_);
+    } else {
+        figureTabs_->clear();
+        figures_->addWidget(chart_);
+        figures_->addWidget(conservation_);
+        figureHolder_->setCurrentWidget(figures_);
+    }
+    showFigures();
+}
+
+void ExplainPanel::showFigures()
+{
+    // A figure with nothing to show gives its room to the derivation: no chart for an event whose
+    // time is closed-form (a transition, the cue strike), no momenta without bodies. With no event
+    // at all only the placeholder stays: the dock then asks for no height of its own, and the
+    // table view beside it keeps the window's height. In tabs, such a figure loses its tab.
+    if (figureHolder_->currentWidget() == figureTabs_) {
+        chart_->setVisible(true);
+        conservation_->setVisible(true);
+        figureTabs_->setTabVisible(figureTabs_->indexOf(chart_), chartShown_);
+        figureTabs_->setTabVisible(figureTabs_->indexOf(conservation_), conservationShown_);
+    } else {
+        chart_->setVisible(chartShown_);
+        conservation_->setVisible(conservationShown_);
+    }
+    figureHolder_->setVisible(chartShown_ || conservationShown_);
+}
 
 void ExplainPanel::resizeEvent(QResizeEvent* event)
 {
@@ -72,12 +124,16 @@ void ExplainPanel::reflow()
 {
     const bool wide = width() >= kFiguresSideBySideWidth;
     figures_->setOrientation(wide ? Qt::Horizontal : Qt::Vertical);
+    setFiguresTabbed(!wide && height() < kTabbedHeight);
     // Narrow, the momenta stand above the energy: the figure needs more height. In a short dock (a
     // window of 800 px or less in height) the figures give some of it up, so that the derivation
     // keeps a third of the dock.
     const bool tall = height() >= kTallHeight;
     const int conservationWidth = wide ? width() / 2 : width();
-    conservation_->setMinimumHeight(conservationWidth < ConservationWidget::kSideBySideWidth ? (tall ? 380 : 260) : 230);
+    // In tabs a figure has the figures' whole room: the momenta above the energy take their full
+    // height there (below 380 px the energy's legend runs into its bars).
+    const bool roomy = tall || figureLayout() == FigureLayout::Tabbed;
+    conservation_->setMinimumHeight(conservationWidth < ConservationWidget::kSideBySideWidth ? (roomy ? 380 : 260) : 230);
     chart_->setMinimumHeight(230);  // lower, Qt Charts elides the axes' numbers
 }
 
@@ -119,13 +175,9 @@ void ExplainPanel::showEvent(int index)
     }
     chart_->setExplanation(explanation_ ? &*explanation_ : nullptr);
     conservation_->setExplanation(explanation_ ? &*explanation_ : nullptr);
-    // A figure with nothing to show gives its room to the derivation: no chart for an event whose
-    // time is closed-form (a transition, the cue strike), no momenta without bodies. With no event
-    // at all only the placeholder stays: the dock then asks for no height of its own, and the
-    // table view beside it keeps the window's height.
-    chart_->setVisible(explanation_ && explanation_->toi.has_value());
-    conservation_->setVisible(explanation_ && !explanation_->bodies.empty());
-    figures_->setVisible(!chart_->isHidden() || !conservation_->isHidden());
+    chartShown_ = explanation_ && explanation_->toi.has_value();
+    conservationShown_ = explanation_ && !explanation_->bodies.empty();
+    showFigures();
     text_->setVisible(explanation_.has_value());
     emit explanationChanged();
 }

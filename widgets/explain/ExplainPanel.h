@@ -13,6 +13,8 @@
 class QTextBrowser;
 class QLabel;
 class QSplitter;
+class QStackedWidget;
+class QTabWidget;
 
 namespace cuelab {
 
@@ -40,16 +42,23 @@ signals:
 
 public:
     // The figures reflow with the dock: the chart beside the momenta and energy when the panel is
-    // at least this wide, above them otherwise.
+    // at least kFiguresSideBySideWidth wide; narrower, the chart above them; narrower and shorter
+    // than kTabbedHeight, one figure at a time in tabs, so that the derivation keeps a third of the
+    // dock (the stacked figures alone need about 500 px).
     static constexpr int kTallHeight = 850;  // px: shorter, the figures shrink for the derivation
+    static constexpr int kTabbedHeight = 720;  // px
     static constexpr int kFiguresSideBySideWidth = 760;
-    bool figuresSideBySide() const;
+    enum class FigureLayout { SideBySide, Stacked, Tabbed };
+    FigureLayout figureLayout() const;
+    bool figuresSideBySide() const { return figureLayout() == FigureLayout::SideBySide; }
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
     void reflow();
+    void setFiguresTabbed(bool tabbed);
+    void showFigures();
     void followTime(double t);
     void refresh();
 
@@ -60,7 +69,10 @@ private:
     QTextBrowser* text_;
     ToiChart* chart_;
     ConservationWidget* conservation_;
-    QSplitter* figures_ = nullptr;
+    QSplitter* figures_ = nullptr;       // the figures side by side or stacked
+    QTabWidget* figureTabs_ = nullptr;   // or one at a time
+    QStackedWidget* figureHolder_ = nullptr;  // shows one of the two
+    bool chartShown_ = false, conservationShown_ = false;  // whether the event has each figure
     int event_ = -1;
     std::optional<explain::Explanation> explanation_;
 };

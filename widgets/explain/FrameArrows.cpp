@@ -35,8 +35,10 @@ ViewLayer momentumChangeLayer(const explain::Explanation& e, ArrowFrame frame)
         const Vec3 to = lifted(b.before.position + kArrowMetresPerNewtonSecond * q, z);
         const QString id = QString::fromStdString(b.id);
         const QString value = QString::number(change.norm(), 'f', 3);
+        // Labelled halfway: its head is the tip of p′, whose own label stands there.
         layer.arrows.push_back({from, to, kChangeColours[k % 2], 2.5f,
-                                k == 0 ? tr("Δp %1 = J = %2 N·s").arg(id, value) : tr("Δp %1 = −J = %2 N·s").arg(id, value)});
+                                k == 0 ? tr("Δp %1 = J = %2 N·s").arg(id, value) : tr("Δp %1 = −J = %2 N·s").arg(id, value),
+                                0.5f});
     }
     return layer;
 }

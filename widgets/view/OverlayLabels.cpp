@@ -204,7 +204,7 @@ void collectLayerLabels(const LabelFrame& frame, LabelCache& cache, std::vector<
             add(ghostName, g.colour, QVector3D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(2.0 * g.radius)));
             break;
         }
-        for (const LayerArrow& a : layer.arrows) add(a.label, a.colour, v3(a.to));
+        for (const LayerArrow& a : layer.arrows) add(a.label, a.colour, v3(a.from + a.labelAt * (a.to - a.from)));
         for (const LayerPolyline& l : layer.polylines)
             if (!l.points.empty()) add(l.label, l.colour, v3(l.points.back()));
         for (const LayerMarker& m : layer.markers) add(m.label, m.colour, v3(m.position));

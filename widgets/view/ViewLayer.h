@@ -52,6 +52,7 @@ struct LayerArrow {
     QColor colour{255, 255, 255};
     float width = 3.0f;        // logical pixels
     QString label;             // drawn next to the head ("" = none)
+    float labelAt = 1.0f;      // where along the arrow the label belongs: 1 at the head, 0.5 halfway
 };
 
 // Line segments through `points` in order (closed: back to the first one).

@@ -1,10 +1,9 @@
 // Ball-cushion, Stronge's compliant frictional impact (core/physics/resolve/StrongeCushion.h; pooltool's
 // stronge_compliant): the contact at the equator meets the cushion through a normal spring (unloading
 // stiffer by 1/e²) and a tangential one (ω_t/ω_n = omega_ratio). The tangential contact sticks while
-// its spring force stays below μ F_n and slips otherwise. The phases below are the simulator's
-// (strongeTangentialVelocity), operation for operation (the resolver has no trace to ask), with the
-// switch times recorded; tst_explain checks that the result equals the simulator's event to 1e-12,
-// and the final tangential velocity here equals strongeTangentialVelocity's own bit for bit.
+// its spring force stays below μ F_n and slips otherwise. The phases are the simulator's own: Explain
+// asks strongeTangentialVelocity for its trace, so the derivation and the event cannot disagree
+// (tst_explain checks the result against the simulator's event to 1e-12).
 #include "ModelRegistry.h"
 #include "StepBuilder.h"
 
@@ -18,118 +17,6 @@
 #include <numbers>
 
 namespace cuelab::explain {
-
-namespace {
-
-struct NormalSpring {
-    double A = 0.0, e = 1.0;
-    static constexpr double tc = std::numbers::pi / 2.0;
-    double end() const { return tc * (1.0 + e); }
-    double force(double t) const
-    {
-        if (t <= tc) return A * std::sin(t);
-        return e > 0.0 ? A * std::cos((t - tc) / e) : 0.0;
-    }
-    double rate(double t) const
-    {
-        if (t <= tc) return A * std::cos(t);
-        return e > 0.0 ? -(A / e) * std::sin((t - tc) / e) : 0.0;
-    }
-    double impulse(double t) const
-    {
-        if (t <= tc) return A * (1.0 - std::cos(t));
-        return e > 0.0 ? A * (1.0 + e * std::sin((t - tc) / e)) : A;
-    }
-};
-
-struct Mode {
-    bool stick = false;
-    int s = 1;
-    double start = 0.0;
-    double v0 = 0.0;
-    double u0 = 0.0;
-};
-
-struct Phase {
-    bool stick = false;
-    double start = 0.0;  // in 1/ω_n
-    double v0 = 0.0;     // tangential contact velocity at its start, m/s
-};
-
-// strongeTangentialVelocity with its phases recorded.
-double tangentialVelocity(double vn0, double vt0, double mu, double e, double omegaRatio, double betaT,
-                          std::vector<Phase>& phases, bool& chattered)
-{
-    chattered = false;
-    if (!(vn0 < 0.0) || !(vt0 > 0.0) || !(mu > 0.0)) return vt0;
-    const double betaN = 1.0;
-    const NormalSpring F{-vn0 / betaN, e};
-    const double r = omegaRatio;
-    const double kappa = r * r / betaT;
-    const double tEnd = F.end();
-    const auto velocity = [&](const Mode& m, double t) {
-        if (m.stick) {
-            const double tau = t - m.start;
-            return m.v0 * std::cos(r * tau) - m.u0 * r * std::sin(r * tau);
-        }
-        return m.v0 - m.s * mu * betaT * (F.impulse(t) - F.impulse(m.start));
-    };
-    const auto deflection = [&](const Mode& m, double t) {
-        if (m.stick) {
-            const double tau = t - m.start;
-            return m.u0 * std::cos(r * tau) + (m.v0 / r) * std::sin(r * tau);
-        }
-        return m.s * mu * F.force(t) / kappa;
-    };
-    const auto holds = [&](const Mode& m, double t) {
-        if (m.stick) return mu * F.force(t) - kappa * std::abs(deflection(m, t));
-        return m.s * (velocity(m, t) - m.s * mu * F.rate(t) / kappa);
-    };
-    Mode mode;
-    mode.v0 = vt0;
-    mode.stick = !(vt0 > mu * F.rate(0.0) / kappa);
-    phases.push_back({mode.stick, 0.0, vt0});
-    constexpr int kSamples = 256;
-    constexpr int kMaxSwitches = 64;
-    for (int switches = 0; switches < kMaxSwitches; ++switches) {
-        const double h = (tEnd - mode.start) / kSamples;
-        double lo = mode.start, hi = -1.0;
-        for (int k = 1; k <= kSamples; ++k) {
-            const double t = k == kSamples ? tEnd : mode.start + k * h;
-            if (holds(mode, t) < 0.0) {
-                hi = t;
-                break;
-            }
-            lo = t;
-        }
-        if (hi < 0.0) return velocity(mode, tEnd);
-        for (int it = 0; it < 200; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            (holds(mode, mid) < 0.0 ? hi : lo) = mid;
-        }
-        const double t = lo;
-        Mode next;
-        next.start = t;
-        next.v0 = velocity(mode, t);
-        if (mode.stick) {
-            next.stick = false;
-            next.s = deflection(mode, t) >= 0.0 ? 1 : -1;
-        } else {
-            next.stick = true;
-            next.u0 = deflection(mode, t);
-        }
-        mode = next;
-        phases.push_back({mode.stick, mode.start, mode.v0});
-    }
-    chattered = true;
-    mode.stick = false;
-    mode.s = mode.v0 >= 0.0 ? 1 : -1;
-    const double v = velocity(mode, tEnd);
-    return mode.s * v < 0.0 ? 0.0 : v;
-}
-
-}  // namespace
 
 CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
 {
@@ -179,11 +66,11 @@ CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
         .in("mu", "μ", mu)
         .out("A", "A", A, "m/s")
         .out("kappa", "κ", kappa)
-        .out("t_end", "t_{end}", NormalSpring{A, e}.end());
+        .out("t_end", "t_{end}", (1.0 + e) * std::numbers::pi / 2.0);
 
-    std::vector<Phase> phases;
-    bool chattered = false;
-    const double vtRaw = tangentialVelocity(vn0, vt0, mu, e, ratio, betaT, phases, chattered);
+    StrongeTrace trace;
+    const double vtRaw = strongeTangentialVelocity(vn0, vt0, mu, e, ratio, betaT, 1.0, &trace);
+    const std::vector<StrongePhase>& phases = trace.phases;
     {
         StepBuilder phaseStep(steps, Text::tr("Stick and slip"),
                               Text::tr("At t = 0 the contact slips if its slip outruns what the growing friction limit can hold "
@@ -200,7 +87,7 @@ CushionResult explainStronge(const CushionInput& in, std::vector<Step>& steps)
             phaseStep.out("phase" + i + "_start", "t_{" + i + "}", phases[k].start);
             phaseStep.out("phase" + i + "_v", "v_{t," + i + "}", phases[k].v0, "m/s");
         }
-        phaseStep.out("chattered", Text::tr("chattering"), chattered ? 1.0 : 0.0);
+        phaseStep.out("chattered", Text::tr("chattering"), trace.chattered ? 1.0 : 0.0);
         phaseStep.out("v_t_end", "v_t′", vtRaw, "m/s");
     }
     const double vtf = std::clamp(vtRaw, -vt0, vt0);

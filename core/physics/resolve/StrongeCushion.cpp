@@ -49,7 +49,7 @@ struct Mode {
 }  // namespace
 
 double strongeTangentialVelocity(double vn0, double vt0, double mu, double e, double omegaRatio, double betaT,
-                                 double betaN)
+                                 double betaN, StrongeTrace* trace)
 {
     if (!(vn0 < 0.0) || !(vt0 > 0.0) || !(mu > 0.0)) return vt0;
     const NormalSpring F{-vn0 / betaN, e};
@@ -82,6 +82,7 @@ double strongeTangentialVelocity(double vn0, double vt0, double mu, double e, do
     Mode mode;
     mode.v0 = vt0;
     mode.stick = !(vt0 > mu * F.rate(0.0) / kappa);
+    if (trace) trace->phases.push_back({mode.stick, 0.0, vt0});
     constexpr int kSamples = 256;
     constexpr int kMaxSwitches = 64;
     for (int switches = 0; switches < kMaxSwitches; ++switches) {
@@ -114,8 +115,10 @@ double strongeTangentialVelocity(double vn0, double vt0, double mu, double e, do
             next.u0 = deflection(mode, t);
         }
         mode = next;
+        if (trace) trace->phases.push_back({mode.stick, mode.start, mode.v0});
     }
     // Too many switches (a chattering contact): finish slipping, which only dissipates.
+    if (trace) trace->chattered = true;
     mode.stick = false;
     mode.s = mode.v0 >= 0.0 ? 1 : -1;
     const double v = velocity(mode, tEnd);

@@ -23,14 +23,32 @@
 
 #include "resolve/CushionModel.h"
 
+#include <vector>
+
 namespace cuelab {
 
 CushionResult strongeCushion(const CushionContact& contact, const PhysicsParams& p);
 
+// One phase of the tangential contact: sticking or slipping from `start` (in 1/omega_n), with the
+// contact's tangential velocity v0 (m/s) then.
+struct StrongePhase {
+    bool stick = false;
+    double start = 0.0;
+    double v0 = 0.0;
+};
+
+// What happened inside one impact, for Explain: every phase in order, and whether the contact
+// chattered past the switch limit (it then finishes slipping).
+struct StrongeTrace {
+    std::vector<StrongePhase> phases;
+    bool chattered = false;
+};
+
 // The one-dimensional problem underneath, in units of the contact's velocities: approach vn0 < 0
 // (normal velocity of the contact point, positive away from the cushion), initial tangential slip
 // vt0 >= 0. Returns the final tangential velocity of the contact point (the normal one is -e vn0).
+// With `trace`, records the phases too (the arithmetic is the same with or without it).
 double strongeTangentialVelocity(double vn0, double vt0, double mu, double e, double omegaRatio,
-                                 double betaT = 3.5, double betaN = 1.0);
+                                 double betaT = 3.5, double betaN = 1.0, StrongeTrace* trace = nullptr);
 
 }  // namespace cuelab
