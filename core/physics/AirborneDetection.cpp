@@ -1,5 +1,7 @@
 #include "AirborneDetection.h"
 
+#include "Quartic.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -53,27 +55,6 @@ bool touchingContactNow(const V& d0, const V& d1, const V& d2, double reach)
     if (normalSpeed <= kRestingSpeed && press < 0.0) return true;
     const double curvature = (press - normalSpeed * normalSpeed) / dist;
     return curvature < 0.0 && (dist - reach) + normalSpeed * normalSpeed / (-2.0 * curvature) <= kContactTolerance;
-}
-
-// Real roots of g2 s^2 + g1 s + g0, ascending, without cancellation; returns their count.
-int quadraticRoots(double g2, double g1, double g0, double roots[2])
-{
-    if (g2 == 0.0) {
-        if (g1 == 0.0) return 0;
-        roots[0] = -g0 / g1;
-        return 1;
-    }
-    const double disc = g1 * g1 - 4.0 * g2 * g0;
-    if (disc < 0.0) return 0;
-    const double q = -0.5 * (g1 + std::copysign(std::sqrt(disc), g1));
-    if (q == 0.0) {
-        roots[0] = 0.0;
-        return 1;
-    }
-    const double r1 = q / g2, r2 = g0 / q;
-    roots[0] = std::min(r1, r2);
-    roots[1] = std::max(r1, r2);
-    return 2;
 }
 
 // The horizontal normal distance n(s) = (c(s) - a) . N and the height above the nose w(s) = z_c(s) - h
@@ -152,10 +133,10 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
             (g1 < -kRestingSpeed || (g1 <= kRestingSpeed && g2 < 0.0) ||
              (g1 > 0.0 && g2 < 0.0 && g0 + g1 * g1 / (-4.0 * g2) <= kContactTolerance)))
             offer(0.0, CushionContactKind::Face);
-        double roots[2];
-        const int count = quadraticRoots(g2, g1, g0, roots);
+        std::array<double, 2> roots;
+        const int count = solveQuadratic(g2, g1, g0, roots);
         for (int i = 0; i < count; ++i) {
-            const double s = roots[i];
+            const double s = roots[static_cast<std::size_t>(i)];
             if (s > 0.0 && s <= horizon && g1 + 2.0 * g2 * s < 0.0 && f.wAt(s) <= kBoundaryTolerance && onSegment(s)) {
                 offer(s, CushionContactKind::Face);
                 break;
@@ -179,10 +160,10 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
     // being no contact before; near its ends a ball can pass the face's end and cross the line lower
     // down, into the jaws' and pockets' domain, which is not this cushion's business.
     {
-        double roots[2];
-        const int count = quadraticRoots(f.n[2], f.n[1], f.n[0], roots);
+        std::array<double, 2> roots;
+        const int count = solveQuadratic(f.n[2], f.n[1], f.n[0], roots);
         for (int i = 0; i < count; ++i) {
-            const double s = roots[i];
+            const double s = roots[static_cast<std::size_t>(i)];
             if (s >= 0.0 && s <= horizon && f.n[1] + 2.0 * f.n[2] * s < 0.0 && onSegment(s) &&
                 f.wAt(s) >= radius - kContactTolerance) {
                 offer(s, CushionContactKind::OffTable);
@@ -216,10 +197,10 @@ double spaceLandingTime(const SpacePath& p, double radius, double horizon)
     // z_c(s) - R = g0 + g1 s + g2 s^2, descending through 0.
     const double g0 = p.c0.z() - radius, g1 = p.c1.z(), g2 = p.c2.z();
     if (g1 == 0.0 && g2 == 0.0) return kNever;  // on the cloth (or floating): no landing
-    double roots[2];
-    const int count = quadraticRoots(g2, g1, g0, roots);
+    std::array<double, 2> roots;
+    const int count = solveQuadratic(g2, g1, g0, roots);
     for (int i = 0; i < count; ++i) {
-        const double s = roots[i];
+        const double s = roots[static_cast<std::size_t>(i)];
         if (s >= 0.0 && s <= horizon && g1 + 2.0 * g2 * s < 0.0) return s;
     }
     return kNever;

@@ -54,28 +54,6 @@ double circleContactTime(const Vec2& d0, const Vec2& d1, const Vec2& d2, double 
     return firstFallingRoot(distanceQuartic(d0, d1, d2, reach), horizon);
 }
 
-// The real roots of c0 + c1 s + c2 s^2 in increasing order (how many), computed stably: no
-// cancellation between -c1 and the square root.
-int quadraticRoots(double c0, double c1, double c2, double roots[2])
-{
-    if (c2 == 0.0) {
-        if (c1 == 0.0) return 0;
-        roots[0] = -c0 / c1;
-        return 1;
-    }
-    const double disc = c1 * c1 - 4.0 * c2 * c0;
-    if (disc < 0.0) return 0;
-    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-    if (q == 0.0) {  // c0 = c1 = 0
-        roots[0] = 0.0;
-        return 1;
-    }
-    const double r1 = q / c2, r2 = c0 / q;
-    roots[0] = std::min(r1, r2);
-    roots[1] = std::max(r1, r2);
-    return 2;
-}
-
 }  // namespace
 
 Quartic ballBallGap(const Path& a, double ra, const Path& b, double rb)
@@ -151,9 +129,9 @@ double cushionTime(const Path& p, double radius, const CushionSegment& seg, doub
 
     // Where the gap closes with the foot on the segment.
     double best = kNever;
-    double roots[2];
-    for (int i = 0, n = quadraticRoots(g0, g1, g2, roots); i < n; ++i) {
-        const double s = roots[i];
+    std::array<double, 2> roots;
+    for (int i = 0, n = solveQuadratic(g2, g1, g0, roots); i < n; ++i) {
+        const double s = roots[static_cast<std::size_t>(i)];
         if (s <= 0.0 || s > horizon) continue;
         if (g1 + 2.0 * g2 * s < 0.0 && onCushionSegment(p, seg, s)) {
             best = s;
@@ -165,8 +143,8 @@ double cushionTime(const Path& p, double radius, const CushionSegment& seg, doub
     // the gap never crosses zero on the segment (it is zero at the end and falls past it).
     for (const double end : {0.0, L}) {
         const double inward = end == 0.0 ? 1.0 : -1.0;
-        for (int i = 0, n = quadraticRoots(f0 - end, f1, f2, roots); i < n; ++i) {
-            const double s = roots[i];
+        for (int i = 0, n = solveQuadratic(f2, f1, f0 - end, roots); i < n; ++i) {
+            const double s = roots[static_cast<std::size_t>(i)];
             if (s <= 0.0 || s > horizon || s >= best) continue;
             if (inward * (f1 + 2.0 * f2 * s) > 0.0 && contactAt(s)) {
                 best = s;

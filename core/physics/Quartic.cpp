@@ -427,4 +427,24 @@ double smallestRootInInterval(const Quartic& c, double lo, double hi)
     return smallest;
 }
 
+int solveQuadratic(double c2, double c1, double c0, std::array<double, 2>& roots)
+{
+    if (c2 == 0.0) {
+        if (c1 == 0.0) return 0;
+        roots[0] = -c0 / c1;
+        return 1;
+    }
+    const double disc = c1 * c1 - 4.0 * c2 * c0;
+    if (disc < 0.0) return 0;
+    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+    if (q == 0.0) {  // c0 = c1 = 0
+        roots[0] = 0.0;
+        return 1;
+    }
+    const double r1 = q / c2, r2 = c0 / q;
+    roots[0] = std::min(r1, r2);
+    roots[1] = std::max(r1, r2);
+    return 2;
+}
+
 }  // namespace cuelab

@@ -18,6 +18,10 @@ using Quartic = std::array<double, 5>;
 // or zero polynomial, or one with a NaN or infinite coefficient, has no roots here.
 int solveQuartic(const Quartic& c, std::array<double, 4>& roots);
 
+// The real roots of c2 s^2 + c1 s + c0, ascending, written to roots; returns their count (0..2). No
+// cancellation between -c1 and the square root; a vanishing c2 gives the linear root.
+int solveQuadratic(double c2, double c1, double c0, std::array<double, 2>& roots);
+
 // The smallest root t of the quartic with lo < t <= hi, or +infinity if there is none.
 // lo and hi may be infinite. A root within rounding of lo counts as lying at lo, so it is excluded:
 // calling again with lo set to the root just found gives the next one. This is what event detection

@@ -1332,8 +1332,8 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>A cél beállítása arra, amit az aktuális ütés tesz (a golyó, amelyet lyukba juttat, és a fehér nem esik be)</translation>
     </message>
     <message>
-        <source>Tolerance around the current shot</source>
-        <translation>Tűrés az aktuális ütés körül</translation>
+        <source>Tolerance of this shot</source>
+        <translation>Az ütés tűrése</translation>
     </message>
     <message>
         <source>Scan</source>

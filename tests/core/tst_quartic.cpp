@@ -190,6 +190,7 @@ private slots:
     void randomQuartics_data();
     void randomQuartics();
     void nonFiniteInput();
+    void quadratics();
 
 private:
     void checkGivenCoefficients();
@@ -667,6 +668,30 @@ void TestQuartic::nonFiniteInput()
     QCOMPARE(solveQuartic({1, 0, kInfinity, 0, -1}, roots), 0);
     QCOMPARE(smallestRootInInterval({1, 0, 0, 0, nan}, 0.0, 10.0), kInfinity);
     QCOMPARE(smallestRootInInterval({1, -10, 35, -50, 24}, 0.0, nan), kInfinity);
+}
+
+// solveQuadratic, which the cushion and flight detection share: ascending roots, the linear and
+// empty cases, and a small root kept exact where the textbook formula cancels.
+void TestQuartic::quadratics()
+{
+    std::array<double, 2> r{};
+    QCOMPARE(solveQuadratic(1.0, -3.0, 2.0, r), 2);
+    QCOMPARE(r[0], 1.0);
+    QCOMPARE(r[1], 2.0);
+    QCOMPARE(solveQuadratic(-2.0, 0.0, 8.0, r), 2);  // descending parabola: still ascending roots
+    QCOMPARE(r[0], -2.0);
+    QCOMPARE(r[1], 2.0);
+    QCOMPARE(solveQuadratic(0.0, 2.0, -1.0, r), 1);  // linear
+    QCOMPARE(r[0], 0.5);
+    QCOMPARE(solveQuadratic(1.0, 0.0, 1.0, r), 0);   // no real root
+    QCOMPARE(solveQuadratic(0.0, 0.0, 1.0, r), 0);   // a constant
+    QCOMPARE(solveQuadratic(3.0, 0.0, 0.0, r), 1);   // c0 = c1 = 0: the double root at 0
+    QCOMPARE(r[0], 0.0);
+    // s^2 - 1e8 s + 1 = 0: roots about 1e-8 and 1e8; -b - sqrt(disc) style cancellation would lose
+    // the small one entirely.
+    QCOMPARE(solveQuadratic(1.0, -1e8, 1.0, r), 2);
+    QVERIFY(std::abs(r[0] - 1e-8) <= 1e-22);
+    QVERIFY(std::abs(r[1] - 1e8) <= 1e-6);
 }
 
 QTEST_APPLESS_MAIN(TestQuartic)

@@ -121,7 +121,7 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     goalFromShot_ = new QPushButton(tr("From shot"), this);
     goalFromShot_->setToolTip(tr("Set the goal to what the current shot does (the ball it pots, and no scratch)"));
 
-    auto* tolerance = new QGroupBox(tr("Tolerance around the current shot"), this);
+    auto* tolerance = new QGroupBox(tr("Tolerance of this shot"), this);  // short: the title sets the group's least width
     auto* toleranceLayout = new QVBoxLayout(tolerance);
     scan_ = new QPushButton(tr("Scan"), tolerance);
     scan_->setToolTip(tr("Scan heading (±2°), speed (±50%), elevation (±10°) and the tip offsets (±0.5 R) one at a "
@@ -180,9 +180,9 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
         return row;
     };
     mapForm->addRow(tr("x"), xKey_);
-    mapForm->addRow(QString(), range(xFrom_, xTo_));
+    mapForm->addRow(range(xFrom_, xTo_));  // across the label column too: two values fit a 234-px column
     mapForm->addRow(tr("y"), yKey_);
-    mapForm->addRow(QString(), range(yFrom_, yTo_));
+    mapForm->addRow(range(yFrom_, yTo_));
     cells_ = new QSpinBox(mapBox);
     cells_->setRange(3, 301);
     cells_->setValue(41);

@@ -178,9 +178,9 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
         return row;
     };
     form->addRow(tr("x"), xKey_);
-    form->addRow(QString(), range(range_[0], range_[1]));
+    form->addRow(range(range_[0], range_[1]));  // across the label column too: two values fit a 234-px column
     form->addRow(tr("y"), yKey_);
-    form->addRow(QString(), range(range_[2], range_[3]));
+    form->addRow(range(range_[2], range_[3]));
     form->addRow(tr("Cells"), cells_);
     form->addRow(tr("strikes per cell"), cellSamples_);
     form->addRow(QString(), mapButton_);
