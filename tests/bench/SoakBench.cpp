@@ -29,7 +29,9 @@ int usage(const char* why)
 {
     std::fprintf(stderr,
                  "cuelab-bench: %s\nusage: cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] "
-                 "[--class NAME] [--max-events N] [--first K]\n       cuelab-bench --check [--set KEY=VALUE]... FILE...\n",
+                 "[--class NAME] [--max-events N] [--first K] [--elevation]\n"
+                 "       cuelab-bench --check [--elevation] [--set KEY=VALUE]... FILE...\n"
+                 "--elevation: the strike keeps its vertical part (SimulationOptions::strikeKeepsElevation)\n",
                  why);
     return 2;
 }
@@ -51,6 +53,7 @@ int soakCommand(int argc, char** argv)
         else if (a == "--max-events" && k + 1 < argc && parseCount(argv[k + 1], n) && n >= 1) o.maxEvents = n, ++k;
         else if (a == "--out" && k + 1 < argc) o.outDir = argv[++k];
         else if (a == "--no-determinism") o.checks.determinism = false;
+        else if (a == "--elevation") o.strikeKeepsElevation = true;
         else if (a == "--class" && k + 1 < argc && soak::parseShotClass(argv[k + 1])) o.onlyClass = soak::parseShotClass(argv[++k]);
         else return usage(("unknown or incomplete option " + a).c_str());
     }
@@ -68,8 +71,11 @@ int checkCommand(int argc, char** argv)
 {
     std::vector<std::pair<std::string, std::string>> overrides;
     std::vector<std::string> files;
+    SimulationOptions simulation;
     for (int k = 0; k < argc; ++k) {
-        if (std::strcmp(argv[k], "--set") == 0 && k + 1 < argc) {
+        if (std::strcmp(argv[k], "--elevation") == 0) {
+            simulation.strikeKeepsElevation = true;
+        } else if (std::strcmp(argv[k], "--set") == 0 && k + 1 < argc) {
             const std::optional<analysis::Assignment> a = analysis::parseAssignment(argv[++k]);
             if (!a) return usage("--set needs KEY=VALUE");
             overrides.emplace_back(a->key, a->value);
@@ -94,8 +100,8 @@ int checkCommand(int argc, char** argv)
             ++failed;
             continue;
         }
-        const SimulationResult r = simulate(*setup);
-        const std::vector<soak::Failure> failures = soak::checkRun(*setup, r);
+        const SimulationResult r = simulate(*setup, simulation);
+        const std::vector<soak::Failure> failures = soak::checkRun(*setup, r, {}, nullptr, simulation);
         std::printf("%s: %zu events, %s\n", file.c_str(), r.events.size(), failures.empty() ? "passes" : "FAILS");
         for (const soak::Failure& f : failures) std::printf("  %s: %s\n", std::string(soak::toString(f.kind)).c_str(), f.message.c_str());
         failed += failures.empty() ? 0 : 1;
