@@ -171,6 +171,21 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
             }
         }
     }
+    // Coming down onto the rail's top: the ball's bottom descends to the top (z_c - h = R) with the
+    // centre behind the nose line over the segment. It got there without crossing the nose line over
+    // the segment (that is the case above): past the segment's end, from over a pocket's mouth or a
+    // jaw. It is over the rail, off the playing area: it leaves the table there.
+    {
+        std::array<double, 2> roots;
+        const int count = solveQuadratic(f.w[2], f.w[1], f.w[0] - radius, roots);
+        for (int i = 0; i < count; ++i) {
+            const double s = roots[static_cast<std::size_t>(i)];
+            if (s >= 0.0 && s <= horizon && f.w[1] + 2.0 * f.w[2] * s < 0.0 && f.nAt(s) < 0.0 && onSegment(s)) {
+                offer(s, CushionContactKind::OffTable);
+                break;
+            }
+        }
+    }
 
     if (best.kind == CushionContactKind::Face) {
         best.normal = faceNormal;

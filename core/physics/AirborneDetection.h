@@ -20,7 +20,9 @@
 //   its nose    (the edge, a line at height h): n^2 + (z_c - h)^2 = R^2 while n >= 0 and z_c >= h, a
 //               quartic; the contact normal then points from the edge to the centre, tilted up;
 //   or clears it: the centre crosses the nose line (n = 0, going out) with the ball's bottom above the
-//               rail top (z_c - R >= h): the ball leaves the table (`ball-off-table`, state `off-table`).
+//               rail top (z_c - R >= h): the ball leaves the table (`ball-off-table`, state `off-table`);
+//               so does a ball whose bottom comes down to the rail top (z_c - R = h, descending) with
+//               its centre behind the nose line (it came there past the segment's end).
 // In each case the foot of the perpendicular must lie on the segment, as on the cloth.
 
 #include "Detection.h"
