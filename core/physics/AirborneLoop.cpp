@@ -261,8 +261,13 @@ void Simulator::land(int i, double t)
     const BounceSeries b = bounceSeriesOf(landing, R, p_);
     // The whole rest of the series in one segment when nothing can meet the ball before it ends;
     // otherwise this bounce alone, and the next landing decides again (each bounce shrinks the rest).
-    const bool whole = b.duration > 0.0 && b.duration != kNever && seriesIsolated(i, b, t);
-    e.after[0] = whole ? seriesStateAt(b, 0.0) : resolveTableImpact(landing, R, m, p_).after;
+    const BallState one = resolveTableImpact(landing, R, m, p_).after;
+    // A rebound whose flight would last less than a picosecond is below the clock's resolution: the
+    // ball lands for good at the series' end now, as a flight's continuation does (Motion.cpp's
+    // applyTransition, which the results' states past a segment's end follow).
+    const bool settles = 2.0 * one.vz < 1e-12 * p_.gravity && b.duration != kNever;
+    const bool whole = !settles && b.duration > 0.0 && b.duration != kNever && seriesIsolated(i, b, t);
+    e.after[0] = settles ? b.end : whole ? seriesStateAt(b, 0.0) : one;
     e.after[0].motion = classify(e.after[0], R);
     e.impulse = m * (velocity3(e.after[0]) - velocity3(landing));
     r_.events.push_back(e);
