@@ -106,10 +106,14 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     for (std::size_t k = 0; k < table_.jaws.size(); ++k) {
         const JawTip& jaw = table_.jaws[k];
         if (!boxNearCircle(box, R + jaw.radius, jaw.centre)) continue;
-        const double ds = airJawSideTime(sp, R, jaw, table_.cushionHeight, horizon);
-        if (ds == kNever) continue;
-        const Candidate cand{now + ds, 1, i, Agent::Jaw, static_cast<int>(k)};
-        if (earlier(cand, best)) best = cand;
+        // Its side, its top or its rim (airJawContact).
+        const AirCushionContact c = airJawContact(sp, R, jaw, table_.cushionHeight, horizon);
+        if (c.kind == CushionContactKind::None || c.time == kNever) continue;
+        const Candidate cand{now + c.time, 1, i, Agent::Jaw, static_cast<int>(k)};
+        if (earlier(cand, best)) {
+            best = cand;
+            airContact_[at(i)] = c;
+        }
     }
     (void)p;
 }
@@ -333,11 +337,10 @@ void Simulator::airCushion(const Candidate& c, Event& e)
         e.kind = EventKind::BallCushion;
         normal = contact.kind == CushionContactKind::Nose ? contact.normal : Vec3(seg.normal.x(), seg.normal.y(), 0.0);
     } else {
-        const JawTip& jaw = table_.jaws[at(c.index)];
-        const Vec2 n = (before.position - jaw.centre).normalized();
+        // Its side, top or rim, along the normal its prediction found.
         e.kind = EventKind::BallJaw;
         e.jaw = c.index;
-        normal = Vec3(n.x(), n.y(), 0.0);
+        normal = airContact_[at(i)].normal;
     }
     // A flying ball meets the cushion along the 3-D normal (a nose edge's is tilted up), with the
     // cushion's restitution and friction (AirImpacts.h). The cushion models of the cloth assume a ball
