@@ -186,6 +186,29 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
             }
         }
     }
+    // Into the rail's body through the end of the segment (lambda = 0 or its length, crossed into
+    // the segment's range) behind the nose line with the bottom below the rail's top: it came from
+    // over a pocket (or the mouth past a jaw) low enough to meet the rail's end, which is not a
+    // surface of the model either: it leaves the table there (the simulator drops it into a pocket
+    // it is over).
+    {
+        const Vec2 along = seg.b - seg.a;
+        const double L2 = along.squaredNorm();
+        const double l0 = (p.c0.head<2>() - seg.a).dot(along), l1 = p.c1.head<2>().dot(along), l2 = p.c2.head<2>().dot(along);
+        for (const double end : {0.0, L2}) {
+            std::array<double, 2> roots;
+            const int count = solveQuadratic(l2, l1, l0 - end, roots);
+            for (int i = 0; i < count; ++i) {
+                const double s = roots[static_cast<std::size_t>(i)];
+                const double rate = l1 + 2.0 * l2 * s;  // d lambda / ds, into the range at this end
+                if (s >= 0.0 && s <= horizon && (end == 0.0 ? rate > 0.0 : rate < 0.0) && f.nAt(s) < 0.0 &&
+                    f.wAt(s) < radius) {
+                    offer(s, CushionContactKind::OffTable);
+                    break;
+                }
+            }
+        }
+    }
 
     if (best.kind == CushionContactKind::Face) {
         best.normal = faceNormal;

@@ -226,9 +226,14 @@ void Simulator::beginSeries(int i, double t, const BallState& landing, const Bou
 bool Simulator::overCloth(const Vec2& c) const
 {
     if (c.x() >= 0.0 && c.x() <= table_.length && c.y() >= 0.0 && c.y() <= table_.width) return true;
-    // Beyond a nose line: still over the cloth of a pocket's mouth near the pocket.
-    for (const Pocket& pk : table_.pockets)
-        if ((c - pk.centre).norm() <= pk.radius + table_.ballRadius) return true;
+    // Beyond a nose line: still over the cloth of a pocket's mouth near the pocket, on the table's side
+    // of the pocket (its centre no farther from the playing area than the pocket's centre; past the
+    // pocket there is no cloth).
+    for (const Pocket& pk : table_.pockets) {
+        if ((c - pk.centre).norm() > pk.radius + table_.ballRadius) continue;
+        const Vec2 nearest(std::clamp(pk.centre.x(), 0.0, table_.length), std::clamp(pk.centre.y(), 0.0, table_.width));
+        if ((c - pk.centre).dot(nearest - pk.centre) >= 0.0) return true;
+    }
     return false;
 }
 
@@ -323,6 +328,22 @@ void Simulator::airCushion(const Candidate& c, Event& e)
         const AirCushionContact& contact = airContact_[at(i)];
         e.cushion = c.index;
         if (contact.kind == CushionContactKind::OffTable) {
+            // Over a pocket's circle it met the rail's end inside the pocket, below the rail's top:
+            // it drops in.
+            for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+                const Pocket& pk = table_.pockets[k];
+                if ((before.position - pk.centre).squaredNorm() > pk.radius * pk.radius) continue;
+                e.kind = EventKind::BallPocket;
+                e.cushion = -1;
+                e.pocket = static_cast<int>(k);
+                e.after[0] = BallState{};
+                e.after[0].position = pk.centre;
+                e.after[0].motion = MotionState::Pocketed;
+                e.after[0].pocket = static_cast<int>(k);
+                e.contactPoint = before.position;
+                finishEvent(e.time, e);
+                return;
+            }
             // It clears the rail: out of play where it crossed the nose line, like a pocketed ball.
             e.kind = EventKind::BallOffTable;
             e.after[0] = BallState{};
