@@ -32,6 +32,26 @@ bool boxesWithin(const Box& a, const Box& b, double distance)
 
 Vec3 velocity3(const BallState& s) { return Vec3(s.velocity.x(), s.velocity.y(), s.vz); }
 
+// Whether the box comes within `reach` of a cushion's slab: the region behind its nose line (and up
+// to reach in front of it) over the segment's length (and reach past its ends). A flying ball can
+// meet the slab anywhere behind the line (its top, its ends: airCushionContact), not only near the
+// segment itself. n and the position along the segment are linear: their ranges over the box are
+// those over its corners.
+bool boxNearSlab(const Box& box, double reach, const CushionSegment& seg)
+{
+    const Vec2 along = seg.b - seg.a;
+    const double length = along.norm();
+    const Vec2 t = along / length;
+    double nLow = kNever, tLow = kNever, tHigh = -kNever;
+    for (const Vec2& c : {box.lo, box.hi, Vec2(box.lo.x(), box.hi.y()), Vec2(box.hi.x(), box.lo.y())}) {
+        nLow = std::min(nLow, (c - seg.a).dot(seg.normal));
+        tLow = std::min(tLow, (c - seg.a).dot(t));
+        tHigh = std::max(tHigh, (c - seg.a).dot(t));
+    }
+    const double r = reach + kSeriesSlack;
+    return nLow <= r && tLow <= length + r && tHigh >= -r;
+}
+
 }  // namespace
 
 void Simulator::strike(int i, const CueStrike& shot)
@@ -94,7 +114,7 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     }
     const double horizon = landing - now;
     for (std::size_t k = 0; k < table_.cushions.size(); ++k) {
-        if (!boxNearSegment(box, R, table_.cushions[k])) continue;
+        if (!boxNearSlab(box, R, table_.cushions[k])) continue;
         const AirCushionContact c = airCushionContact(sp, R, table_.cushions[k], table_.cushionHeight, horizon);
         if (c.kind == CushionContactKind::None || c.time == kNever) continue;
         const Candidate cand{now + c.time, 1, i, Agent::Cushion, static_cast<int>(k)};
