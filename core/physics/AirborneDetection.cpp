@@ -190,8 +190,9 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
     // the segment's range) behind the nose line with the bottom below the rail's top: it came from
     // over a pocket (or the mouth past a jaw) low enough to meet the rail's end, which is not a
     // surface of the model either: it leaves the table there (the simulator drops it into a pocket
-    // it is over).
-    {
+    // it is over). A path on the cloth (no vertical motion) meets a segment's end at its jaw, which is
+    // Detection.h's (and the face is then exactly cushionTime's).
+    if (p.c1.z() != 0.0 || p.c2.z() != 0.0) {
         const Vec2 along = seg.b - seg.a;
         const double L2 = along.squaredNorm();
         const double l0 = (p.c0.head<2>() - seg.a).dot(along), l1 = p.c1.head<2>().dot(along), l2 = p.c2.head<2>().dot(along);

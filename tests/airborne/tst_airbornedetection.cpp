@@ -68,6 +68,7 @@ private slots:
     void cushionByHand();
     void cushionOnTheClothIsDetectionsFace();
     void cushionMissesNothing();
+    void railTopAndEndByHand();
     void pocketsByHand();
     void jawSideByHand();
     void jawTopAndRimByHand();
@@ -331,6 +332,27 @@ void TestAirborneDetection::cushionMissesNothing()
     QVERIFY2(counts[1] > 100 && counts[2] > 100 && counts[3] > 100,
              qPrintable(QString("%1 %2 %3 %4").arg(counts[0]).arg(counts[1]).arg(counts[2]).arg(counts[3])));
     qInfo("flights at a rail: %d face, %d nose, %d off the table, %d landing first", counts[1], counts[2], counts[3], counts[0]);
+}
+
+void TestAirborneDetection::railTopAndEndByHand()
+{
+    // The rail y = 0 from x = 0 to 1 (normal +y, the table above it); flights behind its nose line.
+    const CushionSegment rail{"rail-short", Vec2(0.0, 0.0), Vec2(1.0, 0.0), Vec2(0.0, 1.0)};
+    // From over the rail's end (x = -0.1, behind the line at y = -0.1) at x' = 1 m/s, the bottom 1 cm
+    // below the rail's top and rising 0.95 mm by s = 0.1: it enters the rail's body through its end then.
+    const SpacePath low{Vec3(-0.1, -0.1, kR + kNose - 0.01), Vec3(1.0, 0.0, 0.5), Vec3(0.0, 0.0, -0.5 * kG)};
+    const AirCushionContact end = airCushionContact(low, kR, rail, kNose, 10.0);
+    QCOMPARE(end.kind, CushionContactKind::OffTable);
+    QVERIFY(std::abs(end.time - 0.1) <= 1e-15);
+    // The same 1 cm above the top: nothing at the end; it comes down onto the top when its bottom
+    // reaches it, falling 1 cm from rest (s = sqrt(2 * 0.01 / g)), over the rail by then (x > 0).
+    const SpacePath high{Vec3(-0.01, -0.1, kR + kNose + 0.01), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.0, -0.5 * kG)};
+    const AirCushionContact top = airCushionContact(high, kR, rail, kNose, 10.0);
+    QCOMPARE(top.kind, CushionContactKind::OffTable);
+    QVERIFY(std::abs(top.time - std::sqrt(0.02 / kG)) <= 1e-15);
+    // Coming down past the rail's far end (x > 1 by then): not this rail's business.
+    const SpacePath past{Vec3(0.99, -0.1, kR + kNose + 0.01), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.0, -0.5 * kG)};
+    QCOMPARE(airCushionContact(past, kR, rail, kNose, 10.0).kind, CushionContactKind::None);
 }
 
 void TestAirborneDetection::pocketsByHand()
