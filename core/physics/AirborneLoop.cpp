@@ -348,9 +348,9 @@ void Simulator::airCushion(const Candidate& c, Event& e)
         const AirCushionContact& contact = airContact_[at(i)];
         e.cushion = c.index;
         if (contact.kind == CushionContactKind::OffTable) {
-            // Over a pocket's circle it met the rail's end inside the pocket, below the rail's top:
-            // it drops in.
-            for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
+            // Over a pocket's circle with its bottom below the rail's top it met the rail's end (or
+            // top) inside the pocket: it drops in. (Higher up it clears the rail, as below.)
+            for (std::size_t k = 0; k < table_.pockets.size() && before.z < table_.cushionHeight; ++k) {
                 const Pocket& pk = table_.pockets[k];
                 if ((before.position - pk.centre).squaredNorm() > pk.radius * pk.radius) continue;
                 e.kind = EventKind::BallPocket;
