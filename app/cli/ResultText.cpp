@@ -35,6 +35,12 @@ void writeBallState(JsonWriter& w, const SimulationResult& result, int ball, con
     w.numbers(s.velocity.data(), 2);
     w.key("spin");
     w.numbers(s.spin.data(), 3);
+    // CONTRACT.md "Airborne balls": the centre's height above its resting height and its vertical
+    // velocity (0 and 0 on the cloth).
+    w.key("z");
+    w.value(s.z);
+    w.key("vz");
+    w.value(s.vz);
     w.endObject();
 }
 
@@ -193,6 +199,16 @@ void appendStateFields(std::string& out, const BallState& s)
     }
 }
 
+// The trajectory's and the event table's last columns (CONTRACT.md "Airborne balls": added at the
+// end of each row, so a reader of the older columns reads them as before).
+void appendHeight(std::string& out, const BallState& s)
+{
+    out += ',';
+    out += io::roundTripNumber(s.z);
+    out += ',';
+    out += io::roundTripNumber(s.vz);
+}
+
 // How often a long export asks whether to go on: every this many frames.
 constexpr std::size_t kProgressEvery = 256;
 
@@ -209,7 +225,7 @@ std::optional<std::string> trajectoryCsv(const SimulationResult& result, double 
     std::vector<std::string> ids;
     for (const Ball& b : result.balls) ids.push_back(csvField(b.id));
 
-    std::string out = "time,ball,state,x,y,vx,vy,wx,wy,wz\n";
+    std::string out = "time,ball,state,x,y,vx,vy,wx,wy,wz,z,vz\n";
     for (std::size_t k = 0; k < times.size(); ++k) {
         if (progress && k % kProgressEvery == 0 && !progress(static_cast<double>(k) / static_cast<double>(times.size())))
             return std::nullopt;
@@ -222,6 +238,7 @@ std::optional<std::string> trajectoryCsv(const SimulationResult& result, double 
             out += ids[i];
             out += ',';
             appendStateFields(out, states[i]);
+            appendHeight(out, states[i]);
             out += '\n';
         }
     }
@@ -259,7 +276,8 @@ std::string eventsCsv(const SimulationResult& result)
 {
     std::string out = "index,time,type,ball,other,cushion,pocket,"
                       "state_before,x_before,y_before,vx_before,vy_before,wx_before,wy_before,wz_before,"
-                      "state_after,x_after,y_after,vx_after,vy_after,wx_after,wy_after,wz_after\n";
+                      "state_after,x_after,y_after,vx_after,vy_after,wx_after,wy_after,wz_after,"
+                      "z_before,vz_before,z_after,vz_after\n";
     for (std::size_t n = 0; n < result.events.size(); ++n) {
         const Event& e = result.events[n];
         const int agents = e.kind == EventKind::BallBall ? 2 : 1;
@@ -275,6 +293,8 @@ std::string eventsCsv(const SimulationResult& result)
             appendStateFields(out, e.before[a]);
             out += ',';
             appendStateFields(out, e.after[a]);
+            appendHeight(out, e.before[a]);
+            appendHeight(out, e.after[a]);
             out += '\n';
         }
     }

@@ -27,7 +27,7 @@ void writeOutcome(io::JsonWriter& w, const SimulationResult& result, const ShotO
 // `state --at T`: { "time": T, "balls": [...] } with the exact state of every ball at t.
 std::string stateJson(const SimulationResult& result, double t);
 
-// `trajectory`: the header time,ball,state,x,y,vx,vy,wx,wy,wz, then one row per ball at every
+// `trajectory`: the header time,ball,state,x,y,vx,vy,wx,wy,wz,z,vz, then one row per ball at every
 // frame time in [0, endTime] and at every event time (the state just after the event).
 std::string trajectoryCsv(const SimulationResult& result, double frameDt);
 
@@ -41,7 +41,7 @@ std::optional<std::string> trajectoryCsv(const SimulationResult& result, double 
 std::optional<std::string> trajectoryJson(const SimulationResult& result, double frameDt, const Progress& progress = {});
 
 // The event log as CSV, one row per event and agent: index,time,type,ball,other,cushion,pocket, then
-// the agent's state before and after (state,x,y,vx,vy,wx,wy,wz each).
+// the agent's state before and after (state,x,y,vx,vy,wx,wy,wz each), then z,vz before and after.
 std::string eventsCsv(const SimulationResult& result);
 
 }  // namespace cuelab::cli

@@ -9,6 +9,7 @@
 #include "SetupFile.h"
 #include "SetupProblem.h"
 #include "resolve/CushionModel.h"
+#include "resolve/TableModel.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -242,10 +243,31 @@ void parseBallCushion(const QJsonValue& value, const QString& path, PhysicsParam
     }
 }
 
+// CONTRACT.md "Airborne balls": physics.ball_table {restitution, friction} (optional), and a model
+// by the registry's name (resolve/TableModel.h), an additive key.
+void parseBallTable(const QJsonValue& value, const QString& path, PhysicsParams& p)
+{
+    const ObjectReader in(value, path, {"model", "restitution", "friction"});
+    if (in.has("model")) {
+        const QJsonValue v = in.value("model");
+        if (!v.isString()) wrongType(child(path, "model"), "a string", v);
+        const TableModelEntry* model = findTableModel(v.toString().toStdString());
+        if (!model) {
+            QStringList names;
+            for (const TableModelEntry& e : tableModels()) names << QString::fromUtf8(e.name.data(), qsizetype(e.name.size()));
+            refuse(child(path, "model"), QStringLiteral("unknown model \"%1\" (expected one of: %2)")
+                                             .arg(v.toString(), names.join(QStringLiteral(", "))));
+        }
+        p.ballTableModel = model->model;
+    }
+    if (const auto e = in.optionalNumber("restitution")) p.tableRestitution = *e;
+    if (const auto mu = in.optionalNumber("friction")) p.tableFriction = *mu;
+}
+
 PhysicsParams parsePhysics(const QJsonValue& value)
 {
     const ObjectReader in(value, QStringLiteral("physics"),
-                          {"gravity", "mu_slide", "mu_roll", "mu_spin", "ball_ball", "ball_cushion"});
+                          {"gravity", "mu_slide", "mu_roll", "mu_spin", "ball_ball", "ball_cushion", "ball_table"});
     PhysicsParams p;
     if (const auto g = in.optionalNumber("gravity")) p.gravity = *g;
     if (const auto mu = in.optionalNumber("mu_slide")) p.muSlide = *mu;
@@ -253,6 +275,7 @@ PhysicsParams parsePhysics(const QJsonValue& value)
     if (const auto mu = in.optionalNumber("mu_spin")) p.muSpin = *mu;
     if (in.has("ball_ball")) parseBallBall(in.value("ball_ball"), in.pathOf("ball_ball"), p);
     if (in.has("ball_cushion")) parseBallCushion(in.value("ball_cushion"), in.pathOf("ball_cushion"), p);
+    if (in.has("ball_table")) parseBallTable(in.value("ball_table"), in.pathOf("ball_table"), p);
     return p;
 }
 
@@ -264,12 +287,15 @@ std::vector<Ball> parseBalls(const QJsonValue& value, const Table& preset)
     const QJsonArray array = value.toArray();
     std::vector<Ball> balls;
     for (qsizetype i = 0; i < array.size(); ++i) {
-        const ObjectReader in(array[i], element(path, i), {"id", "position", "velocity", "spin", "radius", "mass"});
+        const ObjectReader in(array[i], element(path, i), {"id", "position", "velocity", "spin", "radius", "mass", "z", "vz"});
         Ball ball;
         ball.id = in.string("id").toStdString();
         ball.state.position = vector<2>(in.required("position"), in.pathOf("position"));
         if (in.has("velocity")) ball.state.velocity = vector<2>(in.value("velocity"), in.pathOf("velocity"));
         if (in.has("spin")) ball.state.spin = vector<3>(in.value("spin"), in.pathOf("spin"));
+        // A ball may start in the air (CONTRACT.md "Airborne balls"); the validator refuses z < 0.
+        if (const auto z = in.optionalNumber("z")) ball.state.z = *z;
+        if (const auto vz = in.optionalNumber("vz")) ball.state.vz = *vz;
         ball.radius = in.optionalNumber("radius").value_or(preset.ballRadius);
         ball.mass = in.optionalNumber("mass").value_or(preset.ballMass);
         ball.state.motion = classify(ball.state, ball.radius);

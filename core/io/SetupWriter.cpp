@@ -5,6 +5,7 @@
 #include "JsonText.h"
 #include "SetupFile.h"
 #include "resolve/CushionModel.h"
+#include "resolve/TableModel.h"
 
 #include <bit>
 #include <cstdint>
@@ -83,6 +84,23 @@ void writePhysics(JsonWriter& w, const PhysicsParams& p)
         w.value(p.*(q.field));
     }
     w.endObject();
+    // The ball-table impact only matters once a ball flies; written when it differs from the
+    // defaults, so that the file of a shot on the cloth stays what it was before balls could fly.
+    const PhysicsParams d;
+    if (p.ballTableModel != d.ballTableModel || !sameBits(p.tableRestitution, d.tableRestitution)
+        || !sameBits(p.tableFriction, d.tableFriction)) {
+        w.key("ball_table");
+        w.beginObject(Layout::Line);
+        if (p.ballTableModel != d.ballTableModel) {
+            w.key("model");
+            w.value(toString(p.ballTableModel));
+        }
+        w.key("restitution");
+        w.value(p.tableRestitution);
+        w.key("friction");
+        w.value(p.tableFriction);
+        w.endObject();
+    }
     w.endObject();
 }
 
@@ -102,6 +120,14 @@ void writeBall(JsonWriter& w, const Ball& ball, const Table& table)
     if (!isPlusZero(s.spin.x()) || !isPlusZero(s.spin.y()) || !isPlusZero(s.spin.z())) {
         w.key("spin");
         w.numbers(s.spin.data(), 3);
+    }
+    if (!isPlusZero(s.z)) {
+        w.key("z");
+        w.value(s.z);
+    }
+    if (!isPlusZero(s.vz)) {
+        w.key("vz");
+        w.value(s.vz);
     }
     if (!sameBits(ball.radius, table.ballRadius)) {
         w.key("radius");

@@ -101,6 +101,7 @@ std::optional<double> actualHeading(const SimulationResult& result, int event, i
         case EventKind::BallCushion:
         case EventKind::BallJaw:
         case EventKind::BallPocket:
+        case EventKind::BallOffTable:
             // Rolling begins, or the next collision: the direction the ball is going now.
             end = before.position;
             velocity = before.velocity;
@@ -115,6 +116,7 @@ std::optional<double> actualHeading(const SimulationResult& result, int event, i
             break;
         case EventKind::RollToSpin:
         case EventKind::CueStrike:
+        case EventKind::BallTable:  // a bounce: the ball goes on
             break;
         }
     }

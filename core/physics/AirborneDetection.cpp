@@ -171,6 +171,45 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
             }
         }
     }
+    // Coming down onto the rail's top: the ball's bottom descends to the top (z_c - h = R) with the
+    // centre behind the nose line over the segment. It got there without crossing the nose line over
+    // the segment (that is the case above): past the segment's end, from over a pocket's mouth or a
+    // jaw. It is over the rail, off the playing area: it leaves the table there.
+    {
+        std::array<double, 2> roots;
+        const int count = solveQuadratic(f.w[2], f.w[1], f.w[0] - radius, roots);
+        for (int i = 0; i < count; ++i) {
+            const double s = roots[static_cast<std::size_t>(i)];
+            if (s >= 0.0 && s <= horizon && f.w[1] + 2.0 * f.w[2] * s < 0.0 && f.nAt(s) < 0.0 && onSegment(s)) {
+                offer(s, CushionContactKind::OffTable);
+                break;
+            }
+        }
+    }
+    // Into the rail's body through the end of the segment (lambda = 0 or its length, crossed into
+    // the segment's range) behind the nose line with the bottom below the rail's top: it came from
+    // over a pocket (or the mouth past a jaw) low enough to meet the rail's end, which is not a
+    // surface of the model either: it leaves the table there (the simulator drops it into a pocket
+    // it is over). A path on the cloth (no vertical motion) meets a segment's end at its jaw, which is
+    // Detection.h's (and the face is then exactly cushionTime's).
+    if (p.c1.z() != 0.0 || p.c2.z() != 0.0) {
+        const Vec2 along = seg.b - seg.a;
+        const double L2 = along.squaredNorm();
+        const double l0 = (p.c0.head<2>() - seg.a).dot(along), l1 = p.c1.head<2>().dot(along), l2 = p.c2.head<2>().dot(along);
+        for (const double end : {0.0, L2}) {
+            std::array<double, 2> roots;
+            const int count = solveQuadratic(l2, l1, l0 - end, roots);
+            for (int i = 0; i < count; ++i) {
+                const double s = roots[static_cast<std::size_t>(i)];
+                const double rate = l1 + 2.0 * l2 * s;  // d lambda / ds, into the range at this end
+                if (s >= 0.0 && s <= horizon && (end == 0.0 ? rate > 0.0 : rate < 0.0) && f.nAt(s) < 0.0 &&
+                    f.wAt(s) < radius) {
+                    offer(s, CushionContactKind::OffTable);
+                    break;
+                }
+            }
+        }
+    }
 
     if (best.kind == CushionContactKind::Face) {
         best.normal = faceNormal;
@@ -190,6 +229,85 @@ double airJawSideTime(const SpacePath& p, double radius, const JawTip& jaw, doub
     auto below = [&](double s) { return p.at(s).z() - noseHeight <= kBoundaryTolerance; };
     if (below(0.0) && touchingContactNow<Vec2>(d0, d1, d2, reach)) return 0.0;
     return firstFallingRootWhere(distanceQuartic<Vec2>(d0, d1, d2, reach), horizon, below);
+}
+
+AirCushionContact airJawContact(const SpacePath& p, double radius, const JawTip& jaw, double noseHeight, double horizon)
+{
+    AirCushionContact best;
+    auto offer = [&](double s, CushionContactKind kind) {
+        if (!(s >= 0.0 && s <= horizon) || s >= best.time) return;
+        best.time = s;
+        best.kind = kind;
+    };
+    offer(airJawSideTime(p, radius, jaw, noseHeight, horizon), CushionContactKind::Face);
+    // Horizontally from the axis d(s) = d0 + d1 s + d2 s^2, rho^2 = |d|^2 = P(s); w(s) = z_c(s) - h.
+    const Vec2 d0 = p.c0.head<2>() - jaw.centre, d1 = p.c1.head<2>(), d2 = p.c2.head<2>();
+    const double rj = jaw.radius;
+    const double w0 = p.c0.z() - noseHeight, w1 = p.c1.z(), w2 = p.c2.z();
+    auto rho = [&](double s) { return (d0 + s * (d1 + s * d2)).norm(); };
+    auto wAt = [&](double s) { return w0 + s * (w1 + s * w2); };
+    // The top: w = R coming down, with the centre over the disc.
+    {
+        if (std::abs(w0 - radius) <= kContactTolerance && d0.norm() <= rj &&
+            (w1 < -kRestingSpeed || (w1 <= kRestingSpeed && w2 < 0.0)))
+            offer(0.0, CushionContactKind::Nose);
+        std::array<double, 2> roots;
+        const int count = solveQuadratic(w2, w1, w0 - radius, roots);
+        for (int i = 0; i < count; ++i) {
+            const double s = roots[static_cast<std::size_t>(i)];
+            if (s > 0.0 && s <= horizon && w1 + 2.0 * w2 * s < 0.0 && rho(s) <= rj) {
+                offer(s, CushionContactKind::Nose);
+                break;
+            }
+        }
+    }
+    // The rim.
+    {
+        const double r0 = d0.norm();
+        const double dist = std::hypot(r0 - rj, w0);
+        if (std::abs(dist - radius) <= kContactTolerance && r0 >= rj && w0 >= 0.0 && r0 > 0.0) {
+            // The normal speed: the rate of the distance, ((rho - rj) rho' + w w') / dist.
+            const double rate = ((r0 - rj) * d0.dot(d1) / r0 + w0 * w1) / dist;
+            if (rate < -kRestingSpeed) offer(0.0, CushionContactKind::Nose);
+        }
+        // P = |d|^2 and Q = P + rj^2 + w^2 - R^2, quartics (highest degree first).
+        const Quartic P{d2.squaredNorm(), 2.0 * d1.dot(d2), d1.squaredNorm() + 2.0 * d0.dot(d2), 2.0 * d0.dot(d1),
+                        d0.squaredNorm()};
+        Quartic Q{w2 * w2 + P[0], 2.0 * w1 * w2 + P[1], w1 * w1 + 2.0 * w0 * w2 + P[2], 2.0 * w0 * w1 + P[3],
+                  w0 * w0 + P[4] + rj * rj - radius * radius};
+        Octic F{};
+        for (std::size_t a = 0; a < 5; ++a)
+            for (std::size_t b = 0; b < 5; ++b) F[a + b] += Q[a] * Q[b];
+        for (std::size_t a = 0; a < 5; ++a) F[4 + a] -= 4.0 * rj * rj * P[a];
+        auto slopeOf = [&](double s) {  // F'(s)
+            double v = 0.0;
+            for (std::size_t a = 0; a < 8; ++a) v = v * s + static_cast<double>(8 - a) * F[a];
+            return v;
+        };
+        double lo = 0.0;
+        for (int k = 0; k < 8; ++k) {
+            const double s = smallestOcticRootInInterval(F, lo, horizon);
+            if (s == kNever || s >= best.time) break;
+            // Falling through the root, on the rim's branch: at or outside the cylinder and at or
+            // above the top.
+            if (slopeOf(s) < 0.0 && rho(s) >= rj && wAt(s) >= 0.0) {
+                offer(s, CushionContactKind::Nose);
+                break;
+            }
+            lo = s;
+        }
+    }
+    if (best.kind == CushionContactKind::Face) {
+        const Vec2 n = (d0 + best.time * (d1 + best.time * d2)).normalized();
+        best.normal = Vec3(n.x(), n.y(), 0.0);
+    } else if (best.kind == CushionContactKind::Nose) {
+        const Vec2 d = d0 + best.time * (d1 + best.time * d2);
+        const double r = d.norm();
+        const double out = std::max(0.0, r - rj);  // over the top: straight up
+        const Vec3 v = r > 0.0 ? Vec3(out * d.x() / r, out * d.y() / r, std::max(0.0, wAt(best.time))) : Vec3(0.0, 0.0, 1.0);
+        best.normal = v.norm() > 0.0 ? Vec3(v / v.norm()) : Vec3(0.0, 0.0, 1.0);
+    }
+    return best;
 }
 
 double spaceLandingTime(const SpacePath& p, double radius, double horizon)

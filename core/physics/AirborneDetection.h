@@ -20,7 +20,9 @@
 //   its nose    (the edge, a line at height h): n^2 + (z_c - h)^2 = R^2 while n >= 0 and z_c >= h, a
 //               quartic; the contact normal then points from the edge to the centre, tilted up;
 //   or clears it: the centre crosses the nose line (n = 0, going out) with the ball's bottom above the
-//               rail top (z_c - R >= h): the ball leaves the table (`ball-off-table`, state `off-table`).
+//               rail top (z_c - R >= h): the ball leaves the table (`ball-off-table`, state `off-table`);
+//               so does a ball whose bottom comes down to the rail top (z_c - R = h, descending) with
+//               its centre behind the nose line (it came there past the segment's end).
 // In each case the foot of the perpendicular must lie on the segment, as on the cloth.
 
 #include "Detection.h"
@@ -62,6 +64,16 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
 // the horizontal distance is R + rj and its centre is at or below h (Detection.h's quartic, with the
 // height condition). The jaw's top rim (a torus: degree 8 in s) is not handled: docs/airborne.md.
 double airJawSideTime(const SpacePath& p, double radius, const JawTip& jaw, double noseHeight, double horizon);
+
+// The whole jaw tip, a solid cylinder of radius rj from the cloth up to h: its side (above), its flat
+// top (the centre at R above it, horizontally within rj of the axis: a quadratic) and its rim, the
+// circle of radius rj at height h (the centre at distance R from it while at least rj from the axis
+// and at or above h). With rho the horizontal distance from the axis and w = z_c - h,
+// (rho - rj)^2 + w^2 = R^2 is 2 rj rho = Q, Q = rho^2 + rj^2 + w^2 - R^2, so Q^2 - 4 rj^2 rho^2 = 0, of
+// degree 8 in s (degree 4 in Q); its roots with Q >= 0 are the rim's (the other factor,
+// (rho + rj)^2 + w^2 - R^2 = 4 rj rho at a contact, is positive, so the gap falls where it falls).
+// Kind Face is the side, Nose the top or the rim; the normal points from the jaw to the centre.
+AirCushionContact airJawContact(const SpacePath& p, double radius, const JawTip& jaw, double noseHeight, double horizon);
 
 // A flying ball comes down to the cloth's level (z_c = R, descending) with its centre inside the
 // pocket's circle: there is no cloth there, so it drops in (`ball-pocket`) at that time. kNever if it

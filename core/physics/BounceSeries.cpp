@@ -158,7 +158,8 @@ BounceSeries bounceSeries(const AirState& landing, double radius, double mass, c
     b.end.z = 0.0;
     b.end.vz = 0.0;
     b.end.motion = classify(b.end, radius);
-    b.frictionEnergyLost = kineticEnergy(b.landing, radius, mass) - kineticEnergy(b.end, radius, mass);
+    // (kineticEnergy counts the landing's vertical velocity, which normalEnergyLost holds.)
+    b.frictionEnergyLost = kineticEnergy(b.landing, radius, mass) - b.normalEnergyLost - kineticEnergy(b.end, radius, mass);
     return b;
 }
 
@@ -216,7 +217,11 @@ AirState seriesStateAt(const BounceSeries& b, double t)
     // and never past that flight's own landing 2 vz / g: so z >= 0 however the times round.
     double since = b.restitution < 1.0 ? timeLeftAfter(b, j) - (b.duration - t) : t - bounceTime(b, j);
     since = std::clamp(since, 0.0, 2.0 * after.vz / b.gravity);
-    return fly(after, b.gravity, since);
+    const AirState s = fly(after, b.gravity, since);
+    // On the cloth and coming down is the instant of the next bounce (t fell on it, or rounded onto
+    // it): the state at an impact's instant is the one after it, as for every event.
+    if (s.z <= 0.0 && s.vz < 0.0) return afterBounce(b, j + 1);
+    return s;
 }
 
 SeriesTail seriesTail(const BounceSeries& b, std::int64_t j)

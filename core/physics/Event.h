@@ -23,10 +23,14 @@ enum class EventKind : std::uint8_t {
     RollToSpin,
     RollToStop,
     SpinToStop,
+    BallTable,     // a ball meets the cloth: a landing, a bounce, or the end of a bounce series
+    BallOffTable,  // a ball leaves the table over a cushion (state OffTable)
 };
 
 // CONTRACT.md names: "cue-strike", "ball-ball", "ball-cushion" (BallCushion and BallJaw),
-// "ball-pocket", "slide-to-roll", ...
+// "ball-pocket", "slide-to-roll", ..., "ball-table", "ball-off-table"
+// A ball-table event is not a transition (the motion changes by an impulse) nor a collision between
+// two bodies (isCollision is false): it has its own kind everywhere.
 std::string_view toString(EventKind k);
 bool isTransition(EventKind k);
 bool isCollision(EventKind k);  // BallBall, BallCushion, BallJaw

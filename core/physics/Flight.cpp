@@ -7,8 +7,7 @@ namespace cuelab {
 
 AirState lifted(const BallState& s, double z, double vz)
 {
-    AirState out;
-    static_cast<BallState&>(out) = s;
+    AirState out = s;
     out.z = z;
     out.vz = vz;
     return out;
@@ -74,7 +73,9 @@ double apexHeight(const AirState& s, double gravity)
 
 double mechanicalEnergy(const AirState& s, double radius, double mass, double gravity)
 {
-    return kineticEnergy(s, radius, mass) + 0.5 * mass * s.vz * s.vz + mass * gravity * s.z;
+        // kineticEnergy counts the vertical velocity too; the height adds m g z.
+    if (isOutOfPlay(s.motion)) return 0.0;
+    return kineticEnergy(s, radius, mass) + mass * gravity * s.z;
 }
 
 }  // namespace cuelab

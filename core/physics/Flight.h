@@ -6,9 +6,7 @@
 // and its spin is constant (no cloth, so no sliding, rolling or spin friction). Every coordinate is a
 // polynomial of degree two or less, so every time of impact stays a polynomial root.
 //
-// The simulator does not use this module yet: docs/airborne.md gives the plan to wire it into the
-// event loop. AirState carries exactly the two members BallState will gain (`z`, `vz`), so that
-// wiring it in turns AirState into BallState.
+// The simulator flies an airborne ball with these functions (Motion.cpp, AirborneLoop.cpp).
 
 #include "Ball.h"
 #include "Motion.h"
@@ -16,18 +14,10 @@
 
 namespace cuelab {
 
-// m: a height within this of the cloth counts as on it, and a ball is never evaluated below -this
-// (the flight's own closed forms keep z >= 0 to rounding; tst_airborne checks 1e-12).
-inline constexpr double kHeightTolerance = 1e-12;
-
-// A ball's state with its height. `z` is the height of the centre above its resting height R
-// (CONTRACT.md: 0 on the cloth), `vz` its vertical velocity (+ up). The inherited horizontal position,
-// velocity and spin mean what they mean on the cloth; `motion` labels the horizontal numbers only
-// (what the ball would do on the cloth), isAirborne() says whether it flies.
-struct AirState : BallState {
-    double z = 0.0;   // m, >= 0
-    double vz = 0.0;  // m/s
-};
+// A ball's state with its height: BallState carries z (the centre above its resting height R,
+// CONTRACT.md: 0 on the cloth) and vz (+ up) since the simulator flies balls; the name stays for the
+// building blocks that speak of flight.
+using AirState = BallState;
 
 // The state `s` at height z with vertical velocity vz.
 AirState lifted(const BallState& s, double z = 0.0, double vz = 0.0);

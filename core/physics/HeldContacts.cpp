@@ -215,7 +215,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     // give (a slip that has as good as ended rolls out), as beginSegment gives a free one.
     auto relabel = [](ContactBall& cb) {
         BallState& st = cb.state;
-        if (st.motion == MotionState::Pocketed) return;
+        if (isOutOfPlay(st.motion)) return;
         if (st.motion == MotionState::Sliding && slipHasEnded(st, cb.radius)) rollOut(st, cb.radius);
         st.motion = classify(st, cb.radius);
     };
@@ -256,12 +256,12 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     // left its segment.
     auto geometry = [&](const HeldContact& h, ContactLink& link, double& gap, double& vn) {
         const BallState& sa = balls[at(local(h.a))].state;
-        if (sa.motion == MotionState::Pocketed) return false;
+        if (isOutOfPlay(sa.motion)) return false;
         link.a = local(h.a);
         link.b = -1;
         if (h.body == ContactBody::Ball) {
             const BallState& sb = balls[at(local(h.other))].state;
-            if (sb.motion == MotionState::Pocketed) return false;
+            if (isOutOfPlay(sb.motion)) return false;
             const Vec2 d = sb.position - sa.position;
             const Vec2 v = sb.velocity - sa.velocity;
             link.b = local(h.other);
@@ -293,7 +293,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         double gap = 0.0, vn = 0.0;
         const bool valid = geometry(h, link, gap, vn);
         if (!isCandidate && (!valid || gap > kHeldGap || gap < -1e-9 || std::abs(vn) > kHoldSpeed)) return;  // parted, or struck
-        if (isCandidate && balls[at(link.a)].state.motion == MotionState::Pocketed) return;
+        if (isCandidate && isOutOfPlay(balls[at(link.a)].state.motion)) return;
         contacts.push_back(h);
         links.push_back(link);
         normalSpeeds.push_back(vn);
@@ -368,7 +368,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             }
         }
         for (ContactBall& cb : balls)  // (as beginSegment labels a free segment)
-            if (cb.state.motion != MotionState::Pocketed) cb.state.motion = classify(cb.state, cb.radius);
+            if (!isOutOfPlay(cb.state.motion)) cb.state.motion = classify(cb.state, cb.radius);
         for (std::size_t k = 0; k < links.size(); ++k) parting[k] = !heldMask[k] && seating.after[k] > kRestingSpeed;
         if (candidateLink < links.size()) lastCandidateImpulse_ = seating.impulse[candidateLink];
     }
@@ -431,7 +431,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         for (std::size_t m = 0; m < members.size(); ++m) {
             BallState st = balls[m].state;
             Vec2 push = Vec2::Zero();
-            if (st.motion != MotionState::Pocketed) {
+            if (!isOutOfPlay(st.motion)) {
                 push = sol.push[m];
                 st.motion = sol.label[m];
                 if (push.isZero(0.0)) st.motion = classify(st, balls[m].radius);
@@ -475,11 +475,11 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             const std::size_t q = at(m);
             BallState st = balls[q].state;
             Vec2 push = Vec2::Zero();
-            if (!keptLinks.empty() && st.motion != MotionState::Pocketed) {
+            if (!keptLinks.empty() && !isOutOfPlay(st.motion)) {
                 push = sol.push[q];
                 st.motion = sol.label[q];
             }
-            if (push.isZero(0.0) && st.motion != MotionState::Pocketed) st.motion = classify(st, balls[q].radius);
+            if (push.isZero(0.0) && !isOutOfPlay(st.motion)) st.motion = classify(st, balls[q].radius);
             return pathOf(st, balls[q].radius, p_, push);
         };
         bool joined = false;
@@ -545,7 +545,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         const int b = members[m];
         BallState s = balls[m].state;
         Vec2 push = Vec2::Zero();
-        if (!keptLinks.empty() && heldCount_[at(b)] > 0 && s.motion != MotionState::Pocketed) {
+        if (!keptLinks.empty() && heldCount_[at(b)] > 0 && !isOutOfPlay(s.motion)) {
             push = sol.push[m];
             s.motion = sol.label[m];
         }

@@ -1,6 +1,9 @@
 #include "Motion.h"
 
 #include "Contact.h"
+#include "BounceSeries.h"
+#include "Flight.h"
+#include "resolve/TableModel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,9 +76,13 @@ Path pathOf(const BallState& s, double radius, const PhysicsParams& p)
         path.c1 = s.velocity;
         path.c2 = -0.5 * p.muRoll * p.gravity * s.velocity.normalized();
         break;
+    case MotionState::Airborne:  // flight: the horizontal motion is uniform (Flight.h)
+        path.c1 = s.velocity;
+        break;
     case MotionState::Stationary:
     case MotionState::Spinning:
-    case MotionState::Pocketed: break;
+    case MotionState::Pocketed:
+    case MotionState::OffTable: break;
     }
     return path;
 }
@@ -105,8 +112,14 @@ Transition nextTransition(const BallState& s, double radius, const PhysicsParams
         if (tsp == kNever) return {};
         return {tsp, EventKind::SpinToStop};
     }
+    case MotionState::Airborne: {
+        const double tl = landingTime(s, p.gravity);
+        if (tl == kNever) return {};
+        return {tl, EventKind::BallTable};
+    }
     case MotionState::Stationary:
-    case MotionState::Pocketed: break;
+    case MotionState::Pocketed:
+    case MotionState::OffTable: break;
     }
     return {};
 }
@@ -145,8 +158,17 @@ BallState evolve(const BallState& s, double radius, const PhysicsParams& p, doub
     case MotionState::Spinning:
         out.spin.z() = decayedSpin(s.spin.z(), alpha, std::min(dt, spinDuration(s, radius, p)));
         break;
+    case MotionState::Airborne: {
+        // Held at the landing, as every state is held at its end; never below the cloth.
+        const double tl = landingTime(s, p.gravity);
+        out = fly(s, p.gravity, std::min(dt, tl));
+        if (dt >= tl) out.z = 0.0;
+        out.z = std::max(0.0, out.z);
+        break;
+    }
     case MotionState::Stationary:
-    case MotionState::Pocketed: break;
+    case MotionState::Pocketed:
+    case MotionState::OffTable: break;
     }
     return out;
 }
@@ -156,6 +178,17 @@ BallState applyTransition(const BallState& s, double radius, const PhysicsParams
     const Transition t = nextTransition(s, radius, p);
     if (t.after == kNever) return s;
     BallState out = evolve(s, radius, p, t.after);
+    if (t.kind == EventKind::BallTable) {
+        // A landing: the cloth answers with the registry's model (one bounce; the simulator sums
+        // the rest of the series when nothing can meet the ball, AirborneLoop.cpp).
+        out.z = 0.0;
+        const BallState bounced = resolveTableImpact(out, radius, 1.0, p).after;
+        // A rebound whose flight lasts less than a picosecond is below the clock's resolution at any
+        // time of a run: the rest of the series is taken in its closed form (it moves the ball less
+        // than its speed times 4 ps), so that a continuation never walks a thousand such bounces.
+        if (2.0 * bounced.vz < 1e-12 * p.gravity) return bounceSeries(out, radius, 1.0, p).end;
+        return bounced;
+    }
     switch (t.kind) {
     case EventKind::SlideToRoll:
         out.spin.x() = -out.velocity.y() / radius;
@@ -317,13 +350,14 @@ void rollOut(BallState& s, double radius)
 
 double translationalEnergy(const BallState& s, double mass)
 {
-    if (s.motion == MotionState::Pocketed) return 0.0;
-    return 0.5 * mass * s.velocity.squaredNorm();
+    if (isOutOfPlay(s.motion)) return 0.0;
+    // (vz is exactly 0 on the cloth, so a ball that never flies gets the same number as before.)
+    return 0.5 * mass * (s.velocity.squaredNorm() + s.vz * s.vz);
 }
 
 double rotationalEnergy(const BallState& s, double radius, double mass)
 {
-    if (s.motion == MotionState::Pocketed) return 0.0;
+    if (isOutOfPlay(s.motion)) return 0.0;
     return 0.5 * ballInertia(mass, radius) * s.spin.squaredNorm();
 }
 

@@ -17,6 +17,8 @@ std::string_view toString(MotionState s)
     case MotionState::Sliding: return "sliding";
     case MotionState::Rolling: return "rolling";
     case MotionState::Pocketed: return "pocketed";
+    case MotionState::Airborne: return "airborne";
+    case MotionState::OffTable: return "off-table";
     }
     return "stationary";
 }
@@ -24,7 +26,7 @@ std::string_view toString(MotionState s)
 bool parseMotionState(std::string_view text, MotionState& out)
 {
     for (MotionState s : {MotionState::Stationary, MotionState::Spinning, MotionState::Sliding,
-                          MotionState::Rolling, MotionState::Pocketed}) {
+                          MotionState::Rolling, MotionState::Pocketed, MotionState::Airborne, MotionState::OffTable}) {
         if (toString(s) == text) {
             out = s;
             return true;
@@ -54,6 +56,8 @@ std::string_view toString(EventKind k)
     case EventKind::RollToSpin: return "roll-to-spin";
     case EventKind::RollToStop: return "roll-to-stop";
     case EventKind::SpinToStop: return "spin-to-stop";
+    case EventKind::BallTable: return "ball-table";
+    case EventKind::BallOffTable: return "ball-off-table";
     }
     return "cue-strike";
 }
@@ -78,7 +82,8 @@ bool isCollision(EventKind k)
 
 MotionState classify(const BallState& s, double radius)
 {
-    if (s.motion == MotionState::Pocketed) return MotionState::Pocketed;
+    if (isOutOfPlay(s.motion)) return s.motion;
+    if (s.z > kHeightTolerance || s.vz > 0.0) return MotionState::Airborne;
     const bool moving = s.velocity.norm() > kSpeedEpsilon;
     const bool slipping = slipVelocity(s, radius).norm() > kSpeedEpsilon;
     if (slipping) return MotionState::Sliding;

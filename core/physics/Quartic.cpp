@@ -79,11 +79,13 @@ double estrin(const double* a, double x, double x2)
         return a[0] * x2 + (a[1] * x + a[2]);
     else if constexpr (D == 3)
         return (a[0] * x + a[1]) * x2 + (a[2] * x + a[3]);
-    else
+    else if constexpr (D == 4)
         return (a[0] * x2 + (a[1] * x + a[2])) * x2 + (a[3] * x + a[4]);
+    else  // (degrees 5 to 8: Horner's rule, Higham 5.1)
+        return estrin<D - 1>(a, x, x2) * x + a[D];
 }
 
-// A polynomial of degree N (3 or 4) and its Taylor coefficient polynomials d1 = p', d2 = p'' / 2 and
+// A polynomial of degree N (3 to 8) and its Taylor coefficient polynomials d1 = p', d2 = p'' / 2 and
 // d3 = p''' / 6, so that p(x + h) = p(x) + d1(x) h + d2(x) h^2 + d3(x) h^3 + ...
 template <int N>
 struct Expansion {
@@ -424,6 +426,45 @@ double smallestRootInInterval(const Quartic& c, double lo, double hi)
         smallest = root;
         return false;
     });
+    return smallest;
+}
+
+double smallestOcticRootInInterval(const Octic& input, double lo, double hi)
+{
+    // As normalise(): an eighth of sum |c_i| decides which leading coefficients are negligible,
+    // scaling by a power of two keeps the values finite, and the Cauchy-type bound limits the walk.
+    double total = 0.0;
+    for (double v : input) total += 0.125 * std::abs(v);
+    if (!(total > 0.0 && total <= std::numeric_limits<double>::max())) return kInfinity;
+    int first = 0;
+    while (std::abs(input[static_cast<std::size_t>(first)]) <= kNegligibleLeading * total) ++first;
+    const int degree = 8 - first;
+    if (degree <= 4) {
+        Quartic q{};
+        for (int i = 0; i <= degree; ++i) q[static_cast<std::size_t>(4 - degree + i)] = input[static_cast<std::size_t>(first + i)];
+        return smallestRootInInterval(q, lo, hi);
+    }
+    double c[9] = {};
+    const bool scale = total > 0x1p300 || total < 0x1p-300;
+    const int exponent = scale ? std::ilogb(total) : 0;
+    for (int i = 0; i <= degree; ++i) c[i] = std::ldexp(input[static_cast<std::size_t>(first + i)], -exponent);
+    double rest = 0.0;
+    for (int i = 1; i <= degree; ++i) rest += std::abs(c[i]);
+    const double bound = 1.0 + 2.0 * rest / std::abs(c[0]);
+    lo = std::max(lo, -bound);
+    hi = std::min(hi, bound);
+    if (!(lo < hi)) return kInfinity;
+    double smallest = kInfinity;
+    auto take = [&](double root) {
+        smallest = root;
+        return false;
+    };
+    switch (degree) {
+    case 8: visitRoots<8>(c, lo, hi, take); break;
+    case 7: visitRoots<7>(c, lo, hi, take); break;
+    case 6: visitRoots<6>(c, lo, hi, take); break;
+    default: visitRoots<5>(c, lo, hi, take); break;
+    }
     return smallest;
 }
 

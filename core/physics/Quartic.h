@@ -1,5 +1,6 @@
 #pragma once
-// Real roots of polynomials up to degree four, for times of impact.
+// Real roots of polynomials up to degree four (and the first root of one up to degree eight), for
+// times of impact.
 // Pure, deterministic functions of their arguments; standard library only. Method and references in
 // Quartic.cpp.
 
@@ -27,5 +28,11 @@ int solveQuadratic(double c2, double c1, double c0, std::array<double, 2>& roots
 // calling again with lo set to the root just found gives the next one. This is what event detection
 // needs; it computes only what precedes the first root, so it is faster than solving for every root.
 double smallestRootInInterval(const Quartic& c, double lo, double hi);
+
+// The same for a polynomial of degree up to eight (the same bracketing on the critical points, one
+// derivative deeper per degree), highest degree first: a sphere against a circle (a jaw's rim) whose
+// centre's height is quadratic in t.
+using Octic = std::array<double, 9>;
+double smallestOcticRootInInterval(const Octic& c, double lo, double hi);
 
 }  // namespace cuelab

@@ -3,6 +3,7 @@
 
 #include "Simulation.h"
 
+#include "BounceSeries.h"
 #include "Motion.h"
 #include "Simulator.h"
 
@@ -26,6 +27,12 @@ BallState SimulationResult::stateAt(int index, double t) const
     if (!it->push.isZero(0.0)) return segmentState(*it, R, physics, t - it->start);  // a held push
     BallState s = it->state;
     double start = it->start;
+    if (it->bounces) {  // a bounce series, then the cloth's motion from its end
+        const BounceSeries b = bounceSeriesOf(it->state, R, physics);
+        if (t - it->start < b.duration) return seriesStateAt(b, t - it->start);
+        s = b.end;
+        start = it->start + b.duration;
+    }
     // Past the run's end (a time limit) the ball carries on through its transitions, collision-free.
     for (;;) {
         const Transition tr = nextTransition(s, R, physics);
@@ -36,8 +43,14 @@ BallState SimulationResult::stateAt(int index, double t) const
     return evolve(s, R, physics, t - start);
 }
 
+BounceSeries bounceSeriesOf(const BallState& landing, double radius, const PhysicsParams& p)
+{
+    return bounceSeries(landing, radius, 1.0, p);
+}
+
 BallState segmentState(const MotionSegment& seg, double radius, const PhysicsParams& p, double dt)
 {
+    if (seg.bounces) return seriesStateAt(bounceSeriesOf(seg.state, radius, p), std::max(0.0, dt));
     return evolve(seg.state, radius, p, dt, seg.push);
 }
 
@@ -65,7 +78,7 @@ SimulationResult simulate(const Setup& setup, const SimulationOptions& options)
     const double limit = options.until >= 0.0 ? std::min(options.until, setup.simulation.maxTime)
                                               : setup.simulation.maxTime;
     r.events.reserve(64 + 16 * setup.balls.size());
-    detail::Simulator sim(r, limit, options.maxEvents);
+    detail::Simulator sim(r, limit, options.maxEvents, options.strikeKeepsElevation);
     sim.run(setup.shot);
     return r;
 }

@@ -21,7 +21,7 @@ Path Simulator::pathNow(int i, double t) const
 bool Simulator::atRest(int i) const
 {
     const MotionState m = state_[at(i)].motion;
-    return m == MotionState::Stationary || m == MotionState::Pocketed;
+    return m == MotionState::Stationary || isOutOfPlay(m);
 }
 
 void Simulator::noteStop(MotionState was, MotionState is, double t)
@@ -34,7 +34,14 @@ void Simulator::beginSegment(int i, double t, const BallState& s, const Vec2& pu
 {
     BallState st = s;
     const bool free = push.isZero(0.0);
-    if (free && st.motion != MotionState::Pocketed) st.motion = classify(st, radius(i));
+    if (free && !isOutOfPlay(st.motion)) st.motion = classify(st, radius(i));
+    if (st.motion != MotionState::Airborne && !isOutOfPlay(st.motion)) {
+        // On the cloth: exactly no height (a ball left a rounding above it, or about to be answered
+        // by it, is simply on it).
+        st.z = 0.0;
+        st.vz = 0.0;
+    }
+    series_[at(i)] = 0;
     noteStop(state_[at(i)].motion, st.motion, t);
     start_[at(i)] = t;
     state_[at(i)] = st;
@@ -54,15 +61,25 @@ void Simulator::predictOwn(int i, double now)
     const Path p = pathNow(i, now);
     window_[at(i)] = boxOf(p, 0.0);
     horizon_[at(i)] = end_[at(i)];
-    if (s.motion == MotionState::Pocketed) {
+    if (isOutOfPlay(s.motion)) {
         own_[at(i)] = best;
         grid_.remove(i);
+        return;
+    }
+    if (series_[at(i)]) {  // its only own event is its end; pairs near it split it (seriesPairTime)
+        best = Candidate{end_[at(i)], 0, i, Agent::Transition, 0};
+        own_[at(i)] = best;
+        window_[at(i)] = box_[at(i)];
+        Box grown = box_[at(i)];
+        grown.lo.array() -= radius(i);
+        grown.hi.array() += radius(i);
+        grid_.place(i, grown);
         return;
     }
     if (end_[at(i)] != kNever) best = Candidate{end_[at(i)], 0, i, Agent::Transition, 0};
     // A held group is solved again before a frozen direction turns too far (Refresh, index 1).
     if (regroupAt_[at(i)] < best.time) best = Candidate{regroupAt_[at(i)], 0, i, Agent::Refresh, 1};
-    const bool moving = s.motion == MotionState::Sliding || s.motion == MotionState::Rolling;
+    const bool moving = s.motion == MotionState::Sliding || s.motion == MotionState::Rolling || s.motion == MotionState::Airborne;
     if (moving) {
         const double horizon = end_[at(i)] - now;
         const double R = radius(i);
@@ -72,16 +89,20 @@ void Simulator::predictOwn(int i, double now)
             const Candidate c{now + ds, category, i, agent, index};
             if (earlier(c, best)) best = c;
         };
-        for (std::size_t k = 0; k < table_.pockets.size(); ++k)
-            if (boxNearCircle(box, table_.pockets[k].radius, table_.pockets[k].centre))
-                consider(pocketTime(p, table_.pockets[k], horizon), 0, Agent::Pocket, static_cast<int>(k));
-        const bool held = heldCount_[at(i)] > 0;
-        for (std::size_t k = 0; k < table_.cushions.size(); ++k)
-            if (boxNearSegment(box, R, table_.cushions[k]) && !(held && heldWall(i, ContactBody::Cushion, static_cast<int>(k))))
-                consider(cushionTime(p, R, table_.cushions[k], horizon), 1, Agent::Cushion, static_cast<int>(k));
-        for (std::size_t k = 0; k < table_.jaws.size(); ++k)
-            if (boxNearCircle(box, R + table_.jaws[k].radius, table_.jaws[k].centre) && !(held && heldWall(i, ContactBody::Jaw, static_cast<int>(k))))
-                consider(jawTime(p, R, table_.jaws[k], horizon), 1, Agent::Jaw, static_cast<int>(k));
+        if (s.motion == MotionState::Airborne) {
+            predictAirContacts(i, now, p, best);
+        } else {
+            for (std::size_t k = 0; k < table_.pockets.size(); ++k)
+                if (boxNearCircle(box, table_.pockets[k].radius, table_.pockets[k].centre))
+                    consider(pocketTime(p, table_.pockets[k], horizon), 0, Agent::Pocket, static_cast<int>(k));
+            const bool held = heldCount_[at(i)] > 0;
+            for (std::size_t k = 0; k < table_.cushions.size(); ++k)
+                if (boxNearSegment(box, R, table_.cushions[k]) && !(held && heldWall(i, ContactBody::Cushion, static_cast<int>(k))))
+                    consider(cushionTime(p, R, table_.cushions[k], horizon), 1, Agent::Cushion, static_cast<int>(k));
+            for (std::size_t k = 0; k < table_.jaws.size(); ++k)
+                if (boxNearCircle(box, R + table_.jaws[k].radius, table_.jaws[k].centre) && !(held && heldWall(i, ContactBody::Jaw, static_cast<int>(k))))
+                    consider(jawTime(p, R, table_.jaws[k], horizon), 1, Agent::Jaw, static_cast<int>(k));
+        }
         // The pair window ends at the ball's own next event (it is re-predicted there anyway) or after
         // kLookahead of travel, whichever comes first; |r(t) - r(now)| <= |v(now)| (t - now) while
         // the ball decelerates.
@@ -103,7 +124,9 @@ double Simulator::pairTime(int i, int j, double now) const
 {
     const BallState& a = state_[at(i)];
     const BallState& b = state_[at(j)];
-    if (a.motion == MotionState::Pocketed || b.motion == MotionState::Pocketed) return kNever;
+    if (isOutOfPlay(a.motion) || isOutOfPlay(b.motion)) return kNever;
+    if (series_[at(i)] || series_[at(j)]) return seriesPairTime(i, j, now);
+    if (a.motion == MotionState::Airborne || b.motion == MotionState::Airborne) return airPairTime(i, j, now);
     const bool aMoves = a.motion == MotionState::Sliding || a.motion == MotionState::Rolling;
     const bool bMoves = b.motion == MotionState::Sliding || b.motion == MotionState::Rolling;
     if (!aMoves && !bMoves) return kNever;
@@ -165,7 +188,7 @@ void Simulator::predictPairs(int i, double now)
 
     double best = kNever;
     int partner = -1;
-    if (state_[at(i)].motion != MotionState::Pocketed) {
+    if (!isOutOfPlay(state_[at(i)].motion)) {
         Box grown = window_[at(i)];
         grown.lo.array() -= radius(i);
         grown.hi.array() += radius(i);
@@ -240,10 +263,33 @@ void Simulator::process(const Candidate& c)
         predictPairs(i, t);
         return;
     }
+    if (c.agent == Agent::Ball && (series_[at(i)] || series_[at(c.index)])) {
+        // Another ball may come near a bounce series: it goes on one flight at a time, whose
+        // contacts are found exactly (no event: the motion goes on unchanged).
+        if (series_[at(i)]) splitSeries(i, t);
+        if (series_[at(c.index)]) splitSeries(c.index, t);
+        return;
+    }
+    if (c.agent == Agent::Transition && series_[at(i)]) {
+        endSeries(i, t);
+        return;
+    }
+    if (c.agent == Agent::Transition && flying(i)) {
+        land(i, t);
+        return;
+    }
     Event e;
     e.time = t;
     e.balls[0] = i;
     e.before[0] = stateNow(i, t);
+    if ((c.agent == Agent::Cushion || c.agent == Agent::Jaw) && flying(i)) {
+        airCushion(c, e);
+        return;
+    }
+    if (c.agent == Agent::Ball && (flying(i) || flying(c.index))) {
+        airBallBall(c, e);
+        return;
+    }
     switch (c.agent) {
     case Agent::Refresh:  // handled above
     case Agent::Transition: {
@@ -367,21 +413,7 @@ void Simulator::run(const std::optional<CueStrike>& shot)
 
     if (shot) {
         const int i = r_.ballIndex(shot->ball);
-        if (i >= 0 && state_[at(i)].motion != MotionState::Pocketed) {
-            const CueImpactResult strike = resolveCueStrike(state_[at(i)], radius(i), mass(i), *shot);
-            Event e;
-            e.kind = EventKind::CueStrike;
-            e.time = 0.0;
-            e.balls[0] = i;
-            e.before[0] = state_[at(i)];
-            e.after[0] = strike.after;
-            e.contactPoint = strike.contactPoint;
-            e.normal = strike.heading;
-            e.approachSpeed = shot->speed;
-            e.impulse = strike.impulse;
-            r_.events.push_back(e);
-            beginSegment(i, 0.0, strike.after);
-        }
+        if (i >= 0 && !isOutOfPlay(state_[at(i)].motion)) strike(i, *shot);
     }
     for (int i = 0; i < n_; ++i) predictOwn(i, 0.0);
     for (int i = 0; i < n_; ++i) predictPairs(i, 0.0);

@@ -5,6 +5,7 @@
 
 #include "Simulation.h"
 
+#include "AirborneDetection.h"
 #include "BallBallCollision.h"
 #include "BallContact.h"
 #include "BroadPhase.h"
@@ -13,6 +14,7 @@
 #include "CushionCollision.h"
 #include "Detection.h"
 #include "EventQueue.h"
+#include "BounceSeries.h"
 #include "Motion.h"
 
 #include <optional>
@@ -31,9 +33,9 @@ constexpr double kCellSize = 0.5;
 
 class Simulator {
 public:
-    Simulator(SimulationResult& result, double limit, long long maxEvents)
+    Simulator(SimulationResult& result, double limit, long long maxEvents, bool strikeKeepsElevation = false)
         : r_(result), table_(result.table), p_(result.physics), n_(static_cast<int>(result.balls.size())),
-          limit_(limit), maxEvents_(maxEvents)
+          limit_(limit), maxEvents_(maxEvents), strikeKeepsElevation_(strikeKeepsElevation)
     {
         const std::size_t n = static_cast<std::size_t>(n_);
         start_.assign(n, 0.0);
@@ -51,6 +53,10 @@ public:
         push_.assign(n, Vec2::Zero());
         heldCount_.assign(n, 0);
         regroupAt_.assign(n, kNever);
+        series_.assign(n, 0);
+        seriesOf_.resize(n);
+        airContact_.resize(n);
+        bounces_.assign(n, 0);
         queue_.reset(n_);
         double margin = 0.0;  // pockets and jaws lie beyond the cushion noses
         for (const Pocket& k : table_.pockets) margin = std::max(margin, k.radius);
@@ -74,6 +80,7 @@ private:
 
     BallState stateNow(int i, double t) const
     {
+        if (series_[at(i)]) return seriesStateAt(seriesOf_[at(i)], t - start_[at(i)]);
         return evolve(state_[at(i)], radius(i), p_, t - start_[at(i)], push_[at(i)]);
     }
     Path pathNow(int i, double t) const;
@@ -88,6 +95,32 @@ private:
     double pairTime(int i, int j, double now) const;
     void process(const Candidate& c);
     bool atRest(int i) const;
+
+    // Airborne balls (AirborneLoop.cpp; docs/airborne.md).
+    bool flying(int i) const { return state_[at(i)].motion == MotionState::Airborne; }
+    // A flying ball's own contacts before its landing: pockets it lands in, cushion faces and noses,
+    // the rail it clears, jaws. `best` holds the landing on entry.
+    void predictAirContacts(int i, double now, const Path& p, Candidate& best);
+    // A pair with a flying ball (neither in a bounce series): the first contact in space.
+    double airPairTime(int i, int j, double now) const;
+    // A pair with a ball in a bounce series: `now` when the other may come near the series (the series
+    // is then split into its flights, splitSeries), else kNever.
+    double seriesPairTime(int i, int j, double now) const;
+    // The box of what is left of ball i's bounce series: where its centre can be until it ends.
+    Box seriesBox(const SeriesTail& tail) const;
+    // Nothing can meet ball i during the series `b` begun now (conservative: cushions, jaws, pockets,
+    // every other ball as far as it can move until the series ends or its own next event).
+    bool seriesIsolated(int i, const BounceSeries& b, double now) const;
+    // Ball j cannot come near ball i's series tail (which ends at `end`) before j's next event.
+    bool seriesClear(int i, const SeriesTail& tail, double end, int j, double now) const;
+    void beginSeries(int i, double t, const BallState& landing, const BounceSeries& b);
+    void land(int i, double t);       // the landing of a flight: a bounce, or a whole series
+    bool overCloth(const Vec2& centre) const;  // a centre coming down here lands on the cloth
+    void endSeries(int i, double t);  // the series' closed-form end: on the cloth for good
+    void splitSeries(int i, double t);  // the series goes on as one flight at a time (no event)
+    void airCushion(const Candidate& c, Event& e);  // face, nose, jaw or off the table
+    void airBallBall(const Candidate& c, Event& e);
+    void strike(int i, const CueStrike& shot);
 
     // Sustained contact (Contact.h).
     bool heldPair(int i, int j) const;
@@ -118,6 +151,7 @@ private:
     int n_;
     double limit_;
     long long maxEvents_;
+    bool strikeKeepsElevation_ = false;  // SimulationOptions::strikeKeepsElevation
 
     // Flat per-ball arrays: the current motion segment and its predictions.
     std::vector<double> start_;      // s, when the segment began
@@ -141,6 +175,13 @@ private:
     std::vector<double> regroupAt_;   // s, when a held group is solved again (kNever if none)
     double lastStop_ = 0.0;           // s, the last time a ball's new segment found it at rest after moving
     std::size_t lastGroupSize_ = 0;   // how many contacts the last settle() solved
+    // Airborne balls: the ball's segment is a bounce series (seriesOf_ holds it), the contact with the
+    // cushion its own prediction found (kind and normal), and how many bounces in a row it took as
+    // single events.
+    std::vector<char> series_;
+    std::vector<BounceSeries> seriesOf_;
+    std::vector<AirCushionContact> airContact_;
+    std::vector<int> bounces_;
     double lastCandidateImpulse_ = 0.0;  // N s, the last settle()'s re-seating impulse at its candidate
                                          // (> 0 pushing apart, < 0 drawing together: the hold)
 };

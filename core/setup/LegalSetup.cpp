@@ -122,6 +122,8 @@ void checkPhysics(const PhysicsParams& p, Problems& out)
         out.nonNegativeUpTo(p.ballBallFriction, SetupBounds::friction, "", "physics.ball_ball.friction");
     out.unitInterval(p.cushionRestitution, "physics.ball_cushion.restitution");
     out.nonNegativeUpTo(p.cushionFriction, SetupBounds::friction, "", "physics.ball_cushion.friction");
+    out.unitInterval(p.tableRestitution, "physics.ball_table.restitution");
+    out.nonNegativeUpTo(p.tableFriction, SetupBounds::friction, "", "physics.ball_table.friction");
     // The chosen cushion model's own parameters, with the ranges its registry entry gives.
     for (const CushionModelParameter& q : cushionModel(p.ballCushionModel).parameters) {
         const std::string path = "physics.ball_cushion." + std::string(q.key);
@@ -156,6 +158,15 @@ bool checkBallValues(const Setup& setup, std::size_t i, Problems& out)
         out.atMost(std::hypot(ball.state.velocity.x(), ball.state.velocity.y()), SetupBounds::speed, " m/s", ballPath(index, "velocity"), &ball, index);
     if (out.finiteVector<3>(ball.state.spin, ballPath(index, "spin"), ball, index))
         out.atMost(std::hypot(ball.state.spin.x(), ball.state.spin.y(), ball.state.spin.z()), SetupBounds::spin, " rad/s", ballPath(index, "spin"), &ball, index);
+    // A ball may start in the air, never under the cloth (CONTRACT.md "Airborne balls").
+    if (out.finite(ball.state.z, ballPath(index, "z"), &ball, index)) {
+        if (ball.state.z < 0.0)
+            out.add(SetupProblem{ballPath(index, "z"), ball.id, index, "must not be negative (found " + describeNumber(ball.state.z) + ")"});
+        else
+            out.atMost(ball.state.z, SetupBounds::tableSize, " m", ballPath(index, "z"), &ball, index);
+    }
+    if (out.finite(ball.state.vz, ballPath(index, "vz"), &ball, index))
+        out.atMost(std::abs(ball.state.vz), SetupBounds::speed, " m/s", ballPath(index, "vz"), &ball, index);
     const bool sized = out.positiveUpTo(ball.radius, SetupBounds::radius, " m", ballPath(index, "radius"), &ball, index);
     out.positiveUpTo(ball.mass, SetupBounds::mass, " kg", ballPath(index, "mass"), &ball, index);
     return placed && sized;

@@ -1,7 +1,7 @@
 // Detection with flying balls (issue 23, AirborneDetection.h): the gap polynomials' degrees, agreement
 // with Detection.h on the cloth, a jump that clears a ball at a distance computed independently (the
 // envelope of the flight) and fails a little closer, the cushion as a slab (face, nose, clearing the
-// rail), pockets and jaws by hand, and randomized checks against dense sampling: no contact missed.
+// rail), pockets and jaws by hand (a jaw's side, top and rim), and randomized checks against dense sampling: no contact missed.
 
 #include "AirborneDetection.h"
 #include "ElevatedStrike.h"
@@ -68,8 +68,11 @@ private slots:
     void cushionByHand();
     void cushionOnTheClothIsDetectionsFace();
     void cushionMissesNothing();
+    void railTopAndEndByHand();
     void pocketsByHand();
     void jawSideByHand();
+    void jawTopAndRimByHand();
+    void jawMissesNothing();
     void deterministic();
 };
 
@@ -331,6 +334,27 @@ void TestAirborneDetection::cushionMissesNothing()
     qInfo("flights at a rail: %d face, %d nose, %d off the table, %d landing first", counts[1], counts[2], counts[3], counts[0]);
 }
 
+void TestAirborneDetection::railTopAndEndByHand()
+{
+    // The rail y = 0 from x = 0 to 1 (normal +y, the table above it); flights behind its nose line.
+    const CushionSegment rail{"rail-short", Vec2(0.0, 0.0), Vec2(1.0, 0.0), Vec2(0.0, 1.0)};
+    // From over the rail's end (x = -0.1, behind the line at y = -0.1) at x' = 1 m/s, the bottom 1 cm
+    // below the rail's top and rising 0.95 mm by s = 0.1: it enters the rail's body through its end then.
+    const SpacePath low{Vec3(-0.1, -0.1, kR + kNose - 0.01), Vec3(1.0, 0.0, 0.5), Vec3(0.0, 0.0, -0.5 * kG)};
+    const AirCushionContact end = airCushionContact(low, kR, rail, kNose, 10.0);
+    QCOMPARE(end.kind, CushionContactKind::OffTable);
+    QVERIFY(std::abs(end.time - 0.1) <= 1e-15);
+    // The same 1 cm above the top: nothing at the end; it comes down onto the top when its bottom
+    // reaches it, falling 1 cm from rest (s = sqrt(2 * 0.01 / g)), over the rail by then (x > 0).
+    const SpacePath high{Vec3(-0.01, -0.1, kR + kNose + 0.01), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.0, -0.5 * kG)};
+    const AirCushionContact top = airCushionContact(high, kR, rail, kNose, 10.0);
+    QCOMPARE(top.kind, CushionContactKind::OffTable);
+    QVERIFY(std::abs(top.time - std::sqrt(0.02 / kG)) <= 1e-15);
+    // Coming down past the rail's far end (x > 1 by then): not this rail's business.
+    const SpacePath past{Vec3(0.99, -0.1, kR + kNose + 0.01), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 0.0, -0.5 * kG)};
+    QCOMPARE(airCushionContact(past, kR, rail, kNose, 10.0).kind, CushionContactKind::None);
+}
+
 void TestAirborneDetection::pocketsByHand()
 {
     const Pocket pocket{"pocket-test", Vec2(2.0, 0.0), 0.06};
@@ -358,6 +382,71 @@ void TestAirborneDetection::jawSideByHand()
     QVERIFY(std::abs(airJawSideTime(low, kR, jaw, kNose, 10.0) - (0.3 - kR - 0.02)) <= 1e-15);
     const SpacePath high{Vec3(0.7, 0.0, kNose + 0.01), Vec3(1.0, 0.0, 0.0), Vec3::Zero()};
     QCOMPARE(airJawSideTime(high, kR, jaw, kNose, 10.0), kNever);
+}
+
+// Distance from a centre to a jaw tip: the solid cylinder of radius rj about `axis`, up to h.
+double jawDistance(const Vec3& c, const JawTip& jaw)
+{
+    const double rho = (c.head<2>() - jaw.centre).norm(), w = c.z() - kNose;
+    if (w <= 0.0) return std::max(0.0, rho - jaw.radius);
+    return std::hypot(std::max(0.0, rho - jaw.radius), w);
+}
+
+void TestAirborneDetection::jawTopAndRimByHand()
+{
+    const JawTip jaw{"jaw-test", Vec2(1.0, 0.0), 0.02};
+    // Straight down over the axis from 0.05 m above the top's contact height: the top at once,
+    // z_c = h + R after falling 0.05 m, s = sqrt(2 * 0.05 / g); the normal is straight up.
+    const SpacePath down{Vec3(1.0, 0.0, kNose + kR + 0.05), Vec3::Zero(), Vec3(0.0, 0.0, -0.5 * kG)};
+    const AirCushionContact top = airJawContact(down, kR, jaw, kNose, 10.0);
+    QCOMPARE(top.kind, CushionContactKind::Nose);
+    QVERIFY(std::abs(top.time - std::sqrt(0.1 / kG)) <= 1e-15);
+    QVERIFY((top.normal - Vec3(0.0, 0.0, 1.0)).norm() <= 1e-15);
+    // Straight down at 0.02 + 0.6 R from the axis: the rim, where (0.6 R)^2 + w^2 = R^2, w = 0.8 R.
+    const SpacePath rim{Vec3(1.02 + 0.6 * kR, 0.0, kNose + 0.8 * kR + 0.05), Vec3::Zero(), Vec3(0.0, 0.0, -0.5 * kG)};
+    const AirCushionContact edge = airJawContact(rim, kR, jaw, kNose, 10.0);
+    QCOMPARE(edge.kind, CushionContactKind::Nose);
+    QVERIFY2(std::abs(edge.time - std::sqrt(0.1 / kG)) <= 1e-12, qPrintable(QString::number(edge.time - std::sqrt(0.1 / kG))));
+    QVERIFY((edge.normal - Vec3(0.6, 0.0, 0.8)).norm() <= 1e-9);
+    // Level below the top: the side, as airJawSideTime.
+    const SpacePath low{Vec3(0.7, 0.0, kR), Vec3(1.0, 0.0, 0.0), Vec3::Zero()};
+    const AirCushionContact side = airJawContact(low, kR, jaw, kNose, 10.0);
+    QCOMPARE(side.kind, CushionContactKind::Face);
+    QCOMPARE(side.time, airJawSideTime(low, kR, jaw, kNose, 10.0));
+    // Level and clear above the top: nothing.
+    const SpacePath high{Vec3(0.7, 0.0, kNose + kR + 0.001), Vec3(1.0, 0.0, 0.0), Vec3::Zero()};
+    QCOMPARE(airJawContact(high, kR, jaw, kNose, 10.0).kind, CushionContactKind::None);
+}
+
+void TestAirborneDetection::jawMissesNothing()
+{
+    // Flights past and onto a jaw tip, against dense sampling of the distance to the solid tip: no
+    // overlap before the reported contact, and the distance R at it.
+    const JawTip jaw{"jaw-test", Vec2(0.0, 0.0), 0.02};
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int counts[4] = {0, 0, 0, 0};
+    int rims = 0;
+    double worstBefore = 0.0, worstAt = 0.0;
+    for (int i = 0; i < 4000; ++i) {
+        const AirState a = lifted(onCloth(Vec2(-0.15 + 0.05 * u(rng), 0.06 * u(rng)), Vec2(1.0 + 0.5 * u(rng), 0.3 * u(rng)), Vec3::Zero()),
+                                  0.05 * (0.5 + 0.5 * u(rng)), 0.5 * u(rng));
+        const double horizon = landingTime(a, kG);
+        const AirCushionContact c = airJawContact(flightPath(a, kR, kG), kR, jaw, kNose, horizon);
+        ++counts[static_cast<int>(c.kind)];
+        const double end = std::min(c.time, horizon);
+        for (int k = 0; k < 2000; ++k) worstBefore = std::max(worstBefore, kR - jawDistance(centreOf(a, end * k / 2000.0), jaw));
+        if (c.kind != CushionContactKind::None) {
+            const Vec3 at = centreOf(a, c.time);
+            worstAt = std::max(worstAt, std::abs(jawDistance(at, jaw) - kR));
+            rims += c.kind == CushionContactKind::Nose && (at.head<2>() - jaw.centre).norm() > jaw.radius ? 1 : 0;
+        }
+    }
+    QVERIFY2(worstBefore <= 1e-9, qPrintable(QString::number(worstBefore)));
+    QVERIFY2(worstAt <= 1e-9, qPrintable(QString::number(worstAt)));
+    QVERIFY2(counts[1] > 100 && counts[2] > 100 && rims > 50,
+             qPrintable(QString("%1 %2 %3 rims %4").arg(counts[0]).arg(counts[1]).arg(counts[2]).arg(rims)));
+    qInfo("flights at a jaw: %d side, %d top or rim (%d rim), %d none", counts[1], counts[2], rims, counts[0]);
 }
 
 void TestAirborneDetection::deterministic()

@@ -25,11 +25,43 @@ bool parseCount(const char* text, long long& out)
     return end && *end == '\0' && end != text;
 }
 
+void printState(const char* label, const BallState& s)
+{
+    std::printf("      %s %s p=(%.17g, %.17g) z=%.17g v=(%.17g, %.17g) vz=%.17g w=(%.6g, %.6g, %.6g)\n", label,
+                std::string(toString(s.motion)).c_str(), s.position.x(), s.position.y(), s.z, s.velocity.x(),
+                s.velocity.y(), s.vz, s.spin.x(), s.spin.y(), s.spin.z());
+}
+
+// --trace: every event with its states, then every ball's segments (full precision).
+void printTrace(const SimulationResult& r)
+{
+    for (std::size_t k = 0; k < r.events.size(); ++k) {
+        const Event& e = r.events[k];
+        std::printf("  #%zu t=%.17g %s balls %d %d%s%s\n", k, e.time, std::string(toString(e.kind)).c_str(), e.balls[0],
+                    e.balls[1], e.held ? " held" : "", e.grouped ? " grouped" : "");
+        for (std::size_t b = 0; b < 2; ++b) {
+            if (e.balls[b] < 0) continue;
+            printState("before", e.before[b]);
+            printState("after ", e.after[b]);
+        }
+    }
+    for (std::size_t i = 0; i < r.timelines.size(); ++i) {
+        std::printf("  ball %zu segments:\n", i);
+        for (const MotionSegment& m : r.timelines[i]) {
+            std::printf("    t0=%.17g%s%s push=(%.6g, %.6g)\n", m.start, m.bounces ? " bounces" : "", m.held ? " held" : "",
+                        m.push.x(), m.push.y());
+            printState("state", m.state);
+        }
+    }
+}
+
 int usage(const char* why)
 {
     std::fprintf(stderr,
                  "cuelab-bench: %s\nusage: cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] "
-                 "[--class NAME] [--max-events N] [--first K]\n       cuelab-bench --check [--set KEY=VALUE]... FILE...\n",
+                 "[--class NAME] [--max-events N] [--first K] [--elevation]\n"
+                 "       cuelab-bench --check [--elevation] [--trace] [--set KEY=VALUE]... FILE...\n"
+                 "--elevation: the strike keeps its vertical part (SimulationOptions::strikeKeepsElevation)\n",
                  why);
     return 2;
 }
@@ -51,6 +83,7 @@ int soakCommand(int argc, char** argv)
         else if (a == "--max-events" && k + 1 < argc && parseCount(argv[k + 1], n) && n >= 1) o.maxEvents = n, ++k;
         else if (a == "--out" && k + 1 < argc) o.outDir = argv[++k];
         else if (a == "--no-determinism") o.checks.determinism = false;
+        else if (a == "--elevation") o.strikeKeepsElevation = true;
         else if (a == "--class" && k + 1 < argc && soak::parseShotClass(argv[k + 1])) o.onlyClass = soak::parseShotClass(argv[++k]);
         else return usage(("unknown or incomplete option " + a).c_str());
     }
@@ -68,8 +101,14 @@ int checkCommand(int argc, char** argv)
 {
     std::vector<std::pair<std::string, std::string>> overrides;
     std::vector<std::string> files;
+    SimulationOptions simulation;
+    bool trace = false;
     for (int k = 0; k < argc; ++k) {
-        if (std::strcmp(argv[k], "--set") == 0 && k + 1 < argc) {
+        if (std::strcmp(argv[k], "--elevation") == 0) {
+            simulation.strikeKeepsElevation = true;
+        } else if (std::strcmp(argv[k], "--trace") == 0) {
+            trace = true;
+        } else if (std::strcmp(argv[k], "--set") == 0 && k + 1 < argc) {
             const std::optional<analysis::Assignment> a = analysis::parseAssignment(argv[++k]);
             if (!a) return usage("--set needs KEY=VALUE");
             overrides.emplace_back(a->key, a->value);
@@ -94,10 +133,11 @@ int checkCommand(int argc, char** argv)
             ++failed;
             continue;
         }
-        const SimulationResult r = simulate(*setup);
-        const std::vector<soak::Failure> failures = soak::checkRun(*setup, r);
+        const SimulationResult r = simulate(*setup, simulation);
+        const std::vector<soak::Failure> failures = soak::checkRun(*setup, r, {}, nullptr, simulation);
         std::printf("%s: %zu events, %s\n", file.c_str(), r.events.size(), failures.empty() ? "passes" : "FAILS");
         for (const soak::Failure& f : failures) std::printf("  %s: %s\n", std::string(soak::toString(f.kind)).c_str(), f.message.c_str());
+        if (trace) printTrace(r);
         failed += failures.empty() ? 0 : 1;
     }
     return failed ? 1 : 0;

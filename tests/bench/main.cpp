@@ -8,9 +8,10 @@
 //   cuelab-bench --cushions    the cost of one cushion hit per model, and of mathavan2010 per step count
 //                              with its rebound error against 10^6 steps (issue 20)
 //   cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] [--class NAME] [--max-events N]
-//                              [--first K]
-//                              the random-shot soak's summary (issue 19, docs/soak.md)
-//   cuelab-bench --check [--set KEY=VALUE]... FILE...
+//                              [--first K] [--elevation]
+//                              the random-shot soak's summary (issue 19, docs/soak.md); --elevation: the
+//                              strike keeps its vertical part (SimulationOptions::strikeKeepsElevation)
+//   cuelab-bench --check [--elevation] [--set KEY=VALUE]... FILE...
 //                              the soak's checks on setup files; exit 1 if any fails
 
 #include "AnalysisBench.h"

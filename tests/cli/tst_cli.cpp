@@ -50,7 +50,7 @@ QJsonObject parseObject(const QByteArray& text)
     return document.object();
 }
 
-const QSet<QString> kStates{"stationary", "spinning", "sliding", "rolling", "pocketed"};
+const QSet<QString> kStates{"stationary", "spinning", "sliding", "rolling", "pocketed", "airborne", "off-table"};
 const QSet<QString> kEventTypes{"cue-strike",   "ball-ball",    "ball-cushion", "ball-pocket",  "slide-to-roll",
                                 "roll-to-spin", "roll-to-stop", "spin-to-stop", "slide-to-spin", "slide-to-stop"};
 
@@ -66,7 +66,7 @@ bool isNumberArray(const QJsonValue& v, int size)
 QString checkBallState(const QJsonValue& value)
 {
     const QJsonObject o = value.toObject();
-    QStringList keys{"id", "state", "position", "velocity", "spin"};
+    QStringList keys{"id", "state", "position", "velocity", "spin", "z", "vz"};  // z, vz: CONTRACT.md "Airborne balls"
     if (o.value("state").toString() == QLatin1String("pocketed")) keys << "pocket";
     QStringList actual = o.keys();
     actual.sort();
@@ -76,6 +76,7 @@ QString checkBallState(const QJsonValue& value)
     if (!kStates.contains(o.value("state").toString())) return QStringLiteral("state");
     if (!isNumberArray(o.value("position"), 2) || !isNumberArray(o.value("velocity"), 2) || !isNumberArray(o.value("spin"), 3))
         return QStringLiteral("vectors");
+    if (!o.value("z").isDouble() || !o.value("vz").isDouble()) return QStringLiteral("height");
     return {};
 }
 
@@ -357,7 +358,7 @@ void TestCli::unfinished()
     // What was computed is still printed, complete and well-formed.
     QVERIFY(!r.out.isEmpty());
     if (arguments.first() == QLatin1String("simulate")) parseObject(r.out);
-    else QVERIFY(r.out.startsWith("time,ball,state,x,y,vx,vy,wx,wy,wz\n") && r.out.endsWith('\n'));
+    else QVERIFY(r.out.startsWith("time,ball,state,x,y,vx,vy,wx,wy,wz,z,vz\n") && r.out.endsWith('\n'));
 }
 
 void TestCli::stateMatchesEvents()
@@ -427,7 +428,7 @@ void TestCli::trajectoryCsv()
     QCOMPARE(r.status, 0);
     QVERIFY(r.err.isEmpty());
     const QList<QByteArray> lines = r.out.split('\n');
-    QCOMPARE(lines.first(), QByteArray("time,ball,state,x,y,vx,vy,wx,wy,wz"));
+    QCOMPARE(lines.first(), QByteArray("time,ball,state,x,y,vx,vy,wx,wy,wz,z,vz"));
     QVERIFY(lines.last().isEmpty());  // the text ends with a newline
 
     QList<double> times;  // distinct, in order
@@ -435,7 +436,7 @@ void TestCli::trajectoryCsv()
     QSet<QByteArray> pocketedBalls;
     for (qsizetype i = 1; i + 1 < lines.size(); ++i) {
         const QList<QByteArray> fields = lines[i].split(',');
-        QCOMPARE(fields.size(), 10);
+        QCOMPARE(fields.size(), 12);
         bool ok = false;
         const double t = fields[0].toDouble(&ok);
         QVERIFY(ok && t >= 0.0 && t <= endTime);

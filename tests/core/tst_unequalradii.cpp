@@ -103,16 +103,16 @@ double energyOf(const Event& e, const SimulationResult& r, bool after)
     return sum;
 }
 
-// The deepest 3-D overlap of two balls on the cloth in the states s (<= 0 when none): centres at
-// heights R, so the distance is sqrt(|dxy|^2 + (Ri - Rj)^2) and they overlap below Ri + Rj.
+// The deepest 3-D overlap of two balls in the states s (<= 0 when none): centres at heights R + z
+// (R on the cloth), so the distance is sqrt(|dxy|^2 + dz^2) and they overlap below Ri + Rj.
 double overlap3d(const SimulationResult& r, const std::vector<BallState>& s)
 {
     double worst = -1.0;
     for (std::size_t i = 0; i < s.size(); ++i)
         for (std::size_t j = i + 1; j < s.size(); ++j) {
-            if (s[i].motion == MotionState::Pocketed || s[j].motion == MotionState::Pocketed) continue;
+            if (isOutOfPlay(s[i].motion) || isOutOfPlay(s[j].motion)) continue;
             const double Ri = r.balls[i].radius, Rj = r.balls[j].radius;
-            const double dz = Ri - Rj;
+            const double dz = (Ri + s[i].z) - (Rj + s[j].z);
             const double dist = std::sqrt((s[j].position - s[i].position).squaredNorm() + dz * dz);
             worst = std::max(worst, Ri + Rj - dist);
         }

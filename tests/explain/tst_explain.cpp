@@ -87,7 +87,11 @@ Setup randomSetup(std::mt19937_64& rng, const Combination& c)
     shot.ball = "cue";
     shot.speed = 0.5 + 6.0 * u(rng);
     shot.headingDeg = 360.0 * u(rng);
-    shot.elevationDeg = u(rng) < 0.3 ? 20.0 * u(rng) : 0.0;
+    // Drawn as before (the other draws stay the same), but level: an elevated strike now jumps or hops
+    // (issue 23), and Explain does not derive the airborne events (ball-table, a flying ball's
+    // collisions) yet.
+    const double elevation = u(rng) < 0.3 ? 20.0 * u(rng) : 0.0;
+    shot.elevationDeg = 0.0 * elevation;
     shot.side = 0.8 * (u(rng) - 0.5);
     shot.height = 0.8 * (u(rng) - 0.5);
     s.shot = shot;

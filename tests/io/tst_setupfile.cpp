@@ -104,6 +104,7 @@ class TestSetupFile : public QObject {
     Q_OBJECT
 
 private slots:
+    void airborneKeys();
     void minimalFileGetsDefaults();
     void everyKeyIsRead();
     void ballDefaultsFollowTheTable();
@@ -362,6 +363,46 @@ void TestSetupFile::unreadableFileIsNamed()
     QString error;
     QVERIFY(!io::loadSetup(QStringLiteral("/nonexistent/rack.json"), &error));
     QVERIFY2(error.startsWith(QStringLiteral("rack.json: cannot read")), qPrintable(error));
+}
+
+void TestSetupFile::airborneKeys()
+{
+    // CONTRACT.md "Airborne balls": a ball's z and vz, physics.ball_table; written back only when not
+    // the defaults, so that a file without them is written as before.
+    const QByteArray text = R"({"format": "cuelab-setup", "version": 1, "name": "air",
+        "physics": {"ball_table": {"model": "frictionless", "restitution": 0.4, "friction": 0.3}},
+        "balls": [{"id": "cue", "position": [1, 0.6], "z": 0.1, "vz": -0.5}, {"id": "1", "position": [2, 0.6]}]})";
+    QString error;
+    const std::optional<Setup> s = io::parseSetup(text, QStringLiteral("air.json"), &error);
+    QVERIFY2(s, qPrintable(error));
+    QCOMPARE(s->balls[0].state.z, 0.1);
+    QCOMPARE(s->balls[0].state.vz, -0.5);
+    QVERIFY(s->balls[0].state.motion == MotionState::Airborne);
+    QCOMPARE(s->balls[1].state.z, 0.0);
+    QVERIFY(s->physics.ballTableModel == BallTableModel::Frictionless);
+    QCOMPARE(s->physics.tableRestitution, 0.4);
+    QCOMPARE(s->physics.tableFriction, 0.3);
+    const QByteArray written = io::serializeSetup(*s);
+    QVERIFY(written.contains("\"ball_table\""));
+    const std::optional<Setup> again = io::parseSetup(written, QStringLiteral("again.json"), &error);
+    QVERIFY2(again, qPrintable(error));
+    QCOMPARE(again->balls[0].state.z, 0.1);
+    QCOMPARE(again->balls[0].state.vz, -0.5);
+    QCOMPARE(again->physics.tableRestitution, 0.4);
+    // Without them: no new key is written.
+    Setup plain = *s;
+    plain.physics = PhysicsParams{};
+    plain.balls[0].state.z = 0.0;
+    plain.balls[0].state.vz = 0.0;
+    const QByteArray old = io::serializeSetup(plain);
+    QVERIFY(!old.contains("ball_table"));
+    QVERIFY(!old.contains("\"z\""));
+    QVERIFY(!old.contains("\"vz\""));
+    // Under the cloth is refused.
+    QByteArray under = text;
+    under.replace("\"z\": 0.1", "\"z\": -0.01");
+    QVERIFY(!io::parseSetup(under, QStringLiteral("under.json"), &error));
+    QVERIFY2(error.contains(QLatin1String("balls[0].z")), qPrintable(error));
 }
 
 QTEST_GUILESS_MAIN(TestSetupFile)

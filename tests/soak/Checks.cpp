@@ -2,6 +2,8 @@
 
 #include "BallBallCollision.h"
 #include "Contact.h"
+#include "BounceSeries.h"
+#include "Flight.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,22 +53,50 @@ double cushionOverlap(const Table& t, double x, double y, double R)
     return worst;
 }
 
+double cushionOverlap(const Table& t, const BallState& s, double R)
+{
+    if (s.z <= 0.0) return cushionOverlap(t, s.position.x(), s.position.y(), R);
+    // In the air the cushion is a slab up to its nose (AirborneDetection.h): below the nose its face,
+    // above it the nose edge; a jaw tip is a cylinder up to the nose (its rim is not handled, so a
+    // ball above it is not measured against it).
+    const double x = s.position.x(), y = s.position.y(), zc = R + s.z, h = t.cushionHeight;
+    double worst = -1.0;
+    for (const CushionSegment& c : t.cushions) {
+        const double ax = c.a.x(), ay = c.a.y(), bx = c.b.x() - ax, by = c.b.y() - ay;
+        const double lambda = ((x - ax) * bx + (y - ay) * by) / (bx * bx + by * by);
+        if (lambda < 0.0 || lambda > 1.0) continue;
+        const double d = (x - ax) * c.normal.x() + (y - ay) * c.normal.y();
+        if (zc <= h) worst = std::max(worst, R - d);
+        else if (d >= 0.0) worst = std::max(worst, R - std::hypot(d, zc - h));
+        else worst = std::max(worst, h - (zc - R));  // above the rail's top: overlaps only if below it
+    }
+    if (zc <= h)
+        for (const JawTip& j : t.jaws) worst = std::max(worst, R + j.radius - std::hypot(x - j.centre.x(), y - j.centre.y()));
+    return worst;
+}
+
 double maxOverlap(const SimulationResult& r, const std::vector<BallState>& s)
 {
     // Plain doubles rather than Eigen expressions: this runs at every event of thousands of runs,
     // also in unoptimised sanitizer builds.
     double worst = -1.0;
     for (std::size_t i = 0; i < s.size(); ++i) {
-        if (s[i].motion == MotionState::Pocketed) continue;
+        if (isOutOfPlay(s[i].motion)) continue;
         const double R = r.balls[i].radius;
         const double x = s[i].position.x(), y = s[i].position.y();
         for (std::size_t j = i + 1; j < s.size(); ++j) {
-            if (s[j].motion == MotionState::Pocketed) continue;
-            const double reach = touchDistance(R, r.balls[j].radius);  // 2 sqrt(Ri Rj): centres at Ri, Rj
+            if (isOutOfPlay(s[j].motion)) continue;
             const double dx = s[j].position.x() - x, dy = s[j].position.y() - y;
+            if (s[i].z != 0.0 || s[j].z != 0.0) {  // in space: the centres at heights R + z
+                const double Rj = r.balls[j].radius, reach = R + Rj, dz = (Rj + s[j].z) - (R + s[i].z);
+                const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+                if (d < reach) worst = std::max(worst, reach - d);
+                continue;
+            }
+            const double reach = touchDistance(R, r.balls[j].radius);  // 2 sqrt(Ri Rj): centres at Ri, Rj
             if (dx * dx + dy * dy < reach * reach) worst = std::max(worst, reach - std::sqrt(dx * dx + dy * dy));
         }
-        worst = std::max(worst, cushionOverlap(r.table, x, y, R));
+        worst = std::max(worst, cushionOverlap(r.table, s[i], R));
     }
     return worst;
 }
@@ -124,12 +154,20 @@ std::string placeProblem(const SimulationResult& r, const BallState& s, double R
         if (!s.velocity.isZero(0.0) || !s.spin.isZero(0.0)) return "pocketed and still moving";
         return {};
     }
+    if (s.motion == MotionState::OffTable) {
+        if (!s.velocity.isZero(0.0) || !s.spin.isZero(0.0) || s.vz != 0.0) return "off the table and still moving";
+        return {};
+    }
     if (s.pocket != -1) return "a pocket index on a ball on the table";
     const Vec2& p = s.position;
-    if (!p.allFinite()) return "not finite";
+    if (!p.allFinite() || !std::isfinite(s.z) || !std::isfinite(s.vz)) return "not finite";
+    if (s.z < -kHeightTolerance) return "under the cloth (z = " + number(s.z) + " m)";
+    if (s.z <= 0.0 && s.vz < 0.0) return "on the cloth and going into it";
+    if (cushionOverlap(r.table, s, R) > tol) return "overlaps a cushion or jaw";
+    // A flying ball may be over a pocket or a rail; it is judged where it lands.
+    if (s.z > 0.0) return {};
     for (const Pocket& k : r.table.pockets)
         if ((p - k.centre).norm() < k.radius - tol) return "inside " + k.id + " without dropping";
-    if (cushionOverlap(r.table, p.x(), p.y(), R) > tol) return "overlaps a cushion or jaw";
     const bool cloth = p.x() >= R - tol && p.x() <= r.table.length - R + tol && p.y() >= R - tol
                        && p.y() <= r.table.width - R + tol;
     if (cloth) return {};
@@ -150,14 +188,15 @@ std::string placeProblemAt(const SimulationResult& r, int index, double t, const
 double totalEnergy(const SimulationResult& r, const std::vector<BallState>& s)
 {
     double e = 0.0;
-    for (std::size_t i = 0; i < s.size(); ++i) e += kineticEnergy(s[i], r.balls[i].radius, r.balls[i].mass);
+    // With the height's potential energy m g z (0 on the cloth): constant in flight.
+    for (std::size_t i = 0; i < s.size(); ++i) e += mechanicalEnergy(s[i], r.balls[i].radius, r.balls[i].mass, r.physics.gravity);
     return e;
 }
 
 bool sameState(const BallState& a, const BallState& b)
 {
     return a.position == b.position && a.velocity == b.velocity && a.spin == b.spin && a.motion == b.motion
-           && a.pocket == b.pocket;
+           && a.pocket == b.pocket && a.z == b.z && a.vz == b.vz;
 }
 
 double momentumChange(const SimulationResult& r, const Event& e)
@@ -198,6 +237,12 @@ BallState continued(const SimulationResult& r, int index, const MotionSegment& s
     if (!seg.push.isZero(0.0)) return segmentState(seg, R, r.physics, t - seg.start);  // a held push
     BallState s = seg.state;
     double start = seg.start;
+    if (seg.bounces) {  // a bounce series, then the cloth's motion from its end
+        const BounceSeries b = bounceSeriesOf(seg.state, R, r.physics);
+        if (t - seg.start < b.duration) return seriesStateAt(b, t - seg.start);
+        s = b.end;
+        start = seg.start + b.duration;
+    }
     for (;;) {
         const Transition tr = nextTransition(s, R, r.physics);
         if (tr.after == kNever || start + tr.after > t) break;
@@ -429,7 +474,8 @@ std::string timelineProblem(const SimulationResult& r, double positionTol, doubl
                 for (auto it = range.first; it != range.second; ++it) {
                     const Event* here = mine[static_cast<std::size_t>(it - times.begin())];
                     e = e ? e : here;
-                    kick = kick || isCollision(here->kind) || here->kind == EventKind::CueStrike;
+                    kick = kick || isCollision(here->kind) || here->kind == EventKind::CueStrike
+                           || here->kind == EventKind::BallTable || here->kind == EventKind::BallOffTable;
                 }
             }
             ++segments;  // this ball's segments beginning at this instant, up to this one
@@ -442,10 +488,14 @@ std::string timelineProblem(const SimulationResult& r, double positionTol, doubl
             // A segment that only goes on with the same motion (the same push, label, velocity and
             // spin) changes nothing: the simulator may cut a timeline there when it solves a held
             // group at that instant (a ball it released a moment before, a few micrometres away).
-            const bool unchanged = solved.count(seg.start) && seg.push == tl[k].push && begin.motion == end.motion
-                                   && (end.velocity - begin.velocity).norm() <= velocityTol
-                                   && (end.spin - begin.spin).norm() * r.balls[i].radius <= velocityTol;
-            if (extra && !unchanged && !heldHere())
+            const bool same = (end.velocity - begin.velocity).norm() <= velocityTol && std::abs(end.vz - begin.vz) <= velocityTol
+                              && (end.spin - begin.spin).norm() * r.balls[i].radius <= velocityTol;
+            const bool unchanged = solved.count(seg.start) && seg.push == tl[k].push && begin.motion == end.motion && same;
+            // A bounce series the simulator goes on with one flight at a time (another ball may come
+            // near it) begins its flight where the series had the ball, with no event.
+            const bool split = tl[k].bounces && !seg.bounces && same && (end.position - begin.position).norm() <= positionTol
+                               && std::abs(end.z - begin.z) <= positionTol;
+            if (extra && !unchanged && !split && !heldHere())
                 return where() + (e ? "more segments than events of the ball at this instant"
                                   : "begins without an event of the ball and outside any held group of the ball");
             const double dp = (end.position - begin.position).norm();
@@ -459,6 +509,10 @@ std::string timelineProblem(const SimulationResult& r, double positionTol, doubl
             }
             if (end.motion == MotionState::Pocketed && begin.motion != MotionState::Pocketed)
                 return where() + "moves again after its pocketing";
+            if (end.motion == MotionState::OffTable && begin.motion != MotionState::OffTable)
+                return where() + "moves again after leaving the table";
+            const double dz = std::abs(end.z - begin.z);
+            if (dz > positionTol) return where() + "jumps " + number(dz) + " m in height";
             if (dp > positionTol) return where() + "jumps " + number(dp) + " m";
             // A held group's contacts are re-seated when it is solved (Contact.h): at most kHoldSpeed
             // per contact of this ball.

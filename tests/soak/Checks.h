@@ -23,6 +23,8 @@ Ball ballAt(const Table& table, const std::string& id, const Vec2& position, con
 // perpendicular lies on its segment, however far behind its nose the centre is: a ball that has
 // tunnelled through a rail is an overlap of more than R, not a ball "in a mouth".
 double cushionOverlap(const Table& t, double x, double y, double R);
+// The same for a ball that may fly: at its height against the slab of each cushion (3-D).
+double cushionOverlap(const Table& t, const BallState& s, double R);
 
 // The largest overlap (m) between two balls or a ball and a cushion nose or jaw in the states s;
 // <= 0 when nothing overlaps.

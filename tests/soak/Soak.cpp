@@ -48,6 +48,7 @@ void runShot(const SoakOptions& o, std::uint64_t index, SoakSummary& part)
     const RandomShot shot = o.onlyClass ? randomShot(o.seed, index, *o.onlyClass) : randomShot(o.seed, index);
     SimulationOptions simulation;
     simulation.maxEvents = o.maxEvents;
+    simulation.strikeKeepsElevation = o.strikeKeepsElevation;
     const double c0 = threadCpuSeconds();
     const SimulationResult r = simulate(shot.setup, simulation);
     const double cpu = threadCpuSeconds() - c0;
