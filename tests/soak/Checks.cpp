@@ -36,14 +36,22 @@ Ball ballAt(const Table& table, const std::string& id, const Vec2& position, con
     return b;
 }
 
+// The signed distance d of (x, y) from the cushion's line, when its foot falls on the segment.
+static bool distanceOverSegment(const CushionSegment& c, double x, double y, double& d)
+{
+    const double ax = c.a.x(), ay = c.a.y(), bx = c.b.x() - ax, by = c.b.y() - ay;
+    const double lambda = ((x - ax) * bx + (y - ay) * by) / (bx * bx + by * by);
+    if (lambda < 0.0 || lambda > 1.0) return false;
+    d = (x - ax) * c.normal.x() + (y - ay) * c.normal.y();
+    return true;
+}
+
 double cushionOverlap(const Table& t, double x, double y, double R)
 {
     double worst = -1.0;
     for (const CushionSegment& c : t.cushions) {
-        const double ax = c.a.x(), ay = c.a.y(), bx = c.b.x() - ax, by = c.b.y() - ay;
-        const double lambda = ((x - ax) * bx + (y - ay) * by) / (bx * bx + by * by);
-        if (lambda < 0.0 || lambda > 1.0) continue;
-        const double d = (x - ax) * c.normal.x() + (y - ay) * c.normal.y();
+        double d = 0.0;
+        if (!distanceOverSegment(c, x, y, d)) continue;
         worst = std::max(worst, R - d);
     }
     for (const JawTip& j : t.jaws) {
@@ -62,10 +70,8 @@ double cushionOverlap(const Table& t, const BallState& s, double R)
     const double x = s.position.x(), y = s.position.y(), zc = R + s.z, h = t.cushionHeight;
     double worst = -1.0;
     for (const CushionSegment& c : t.cushions) {
-        const double ax = c.a.x(), ay = c.a.y(), bx = c.b.x() - ax, by = c.b.y() - ay;
-        const double lambda = ((x - ax) * bx + (y - ay) * by) / (bx * bx + by * by);
-        if (lambda < 0.0 || lambda > 1.0) continue;
-        const double d = (x - ax) * c.normal.x() + (y - ay) * c.normal.y();
+        double d = 0.0;
+        if (!distanceOverSegment(c, x, y, d)) continue;
         if (zc <= h) worst = std::max(worst, R - d);
         else if (d >= 0.0) worst = std::max(worst, R - std::hypot(d, zc - h));
         else worst = std::max(worst, h - (zc - R));  // above the rail's top: overlaps only if below it
