@@ -160,13 +160,17 @@ std::vector<std::string> unsupportedFeatures(const Setup& setup, EngineKind kind
                           (shot.height < 0 ? "draw" : "follow") + " is lost" + speedNote);
         if (shot.elevationDeg != 0.0)
             out.push_back("shot.elevation " + number(shot.elevationDeg) + ": " + name +
-                          " takes the cue as level (no masse, no swerve)");
+                          " takes the cue as level (no jump, no masse, no swerve)");
     }
     bool moving = setup.shot.has_value();
     for (const Ball& b : setup.balls) {
         if (b.state.spin != Vec3::Zero())
             out.push_back("balls." + b.id + ".spin: " + name + " has no spin, it is ignored");
         if (b.state.velocity != Vec2::Zero()) moving = true;
+        // Both engines move discs in the table's plane: a height or a vertical speed has no place there.
+        if (b.state.z != 0.0 || b.state.vz != 0.0)
+            out.push_back("balls." + b.id + ".z " + number(b.state.z) + ", vz " + number(b.state.vz) + ": " + name +
+                          " cannot fly, the ball starts on the cloth (no flight, no bounce, no jump over a ball)");
     }
     const PhysicsParams& p = setup.physics;
     if (moving)

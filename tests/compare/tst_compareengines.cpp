@@ -57,6 +57,7 @@ private slots:
     void box2dKeepsMomentumHeadOn();
     void box2dLosesTheDraw();
     void box2dSpeedCapIsAWarning();
+    void flyingBallsAreAWarning();
     void cancelling();
 };
 
@@ -248,6 +249,28 @@ void TestCompareEngines::box2dSpeedCapIsAWarning()
     s.lengthScale = 100.0;
     QVERIFY(mentions(runEngine(setup, s).warnings, "above Box2D's limit"));
     QVERIFY(!mentions(runEngine(setup, engine(EngineKind::Box2D)).warnings, "above Box2D's limit"));
+}
+
+void TestCompareEngines::flyingBallsAreAWarning()
+{
+    // A ball given a height and a vertical speed flies in the exact simulator; the two plane engines
+    // cannot, and must say so by the ball's id, and so must an elevated cue (no jump).
+    Setup setup = loadExample(QStringLiteral("straight-shot.json"));
+    Ball& flying = setup.balls.back();
+    flying.state.z = 0.02;
+    flying.state.vz = 0.5;
+    setup.shot->elevationDeg = 30.0;
+    QVERIFY(runEngine(setup, engine(EngineKind::Exact)).warnings.empty());
+    for (EngineKind k : {EngineKind::Discrete, EngineKind::Box2D}) {
+        const std::vector<std::string> w = runEngine(setup, engine(k)).warnings;
+        QVERIFY(mentions(w, "balls." + flying.id + ".z 0.02, vz 0.5"));
+        QVERIFY(mentions(w, "cannot fly"));
+        QVERIFY(mentions(w, "no jump"));
+    }
+    // On the cloth, no word of flying.
+    flying.state.z = 0.0;
+    flying.state.vz = 0.0;
+    QVERIFY(!mentions(runEngine(setup, engine(EngineKind::Box2D)).warnings, "cannot fly"));
 }
 
 void TestCompareEngines::cancelling()
