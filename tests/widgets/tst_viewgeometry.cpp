@@ -4,6 +4,7 @@
 #include "view/BallAppearance.h"
 #include "view/BallOrientations.h"
 #include "view/BallPlacement.h"
+#include "view/OverlayLines.h"
 #include "view/TableMesh.h"
 
 #include <QtTest>
@@ -43,6 +44,7 @@ private slots:
     void placementBoxedIn();
     void spinTurnsTheBall();
     void scrubbingIsConsistent();
+    void flightIsDrawnAtItsHeight();
     void looks_data();
     void looks();
     void tableMesh_data();
@@ -134,6 +136,52 @@ void TestViewGeometry::scrubbingIsConsistent()
     const Eigen::Quaterniond d = direct.at(0, 0.9);
     QVERIFY(std::abs(std::abs(a.dot(d)) - 1.0) < 1e-12);
     QVERIFY(std::abs(a.norm() - 1.0) < 1e-12);
+}
+
+void TestViewGeometry::flightIsDrawnAtItsHeight()
+{
+    // A ball thrown up from 5 cm: its path rises to the apex z0 + vz^2 / 2g above its shadow on the
+    // cloth, and its velocity arrow points up at first; a ball that stays on the cloth is drawn flat.
+    const double z0 = 0.05, vz = 1.0;
+    Setup setup;
+    Ball b = ballAt("cue", 0.6, 0.6);
+    b.state.velocity = Vec2(0.5, 0.0);
+    b.state.z = z0;
+    b.state.vz = vz;
+    b.state.motion = MotionState::Airborne;
+    setup.balls = {b, ballAt("1", 1.5, 1.0)};
+    const SimulationResult result = simulate(setup);
+    std::vector<LineVertex> lines;
+    buildPathLines(result, lines, 0);
+    QVERIFY(!lines.empty());
+    const float cloth = lines.front().position.z();  // (the shadow and the path start on the cloth's lift)
+    float highest = cloth, lowest = 1.0f;
+    int shadows = 0;
+    for (const LineVertex& v : lines) {
+        highest = std::max(highest, v.position.z());
+        lowest = std::min(lowest, v.position.z());
+        if (v.colour.x() == 0.0f && v.colour.y() == 0.0f && v.colour.z() == 0.0f) {
+            QCOMPARE(v.position.z(), lowest);  // a shadow lies on the cloth
+            ++shadows;
+        }
+    }
+    const double apex = z0 + vz * vz / (2.0 * setup.physics.gravity);
+    QVERIFY2(std::abs((highest - lowest) - apex) < 2e-4, qPrintable(QString::number(highest - lowest)));
+    QVERIFY(shadows >= 2 * 24);  // a shadow under every sample of the flight
+    std::vector<LineVertex> arrows;
+    appendVelocityArrows(result, {result.stateAt(0, 0.0), result.stateAt(1, 0.0)}, arrows);
+    QVERIFY(!arrows.empty());
+    QVERIFY(arrows[1].position.z() > arrows[0].position.z() + 0.1f);  // 0.2 m per m/s: up by 0.2 m
+    QVERIFY(std::abs(arrows[0].position.z() - static_cast<float>(b.radius + z0)) < 0.01f);
+
+    std::vector<LineVertex> flat;
+    Setup ground = setup;
+    ground.balls[0].state.z = 0.0;
+    ground.balls[0].state.vz = 0.0;
+    ground.balls[0].state.motion = MotionState::Sliding;
+    buildPathLines(simulate(ground), flat, 0);
+    QVERIFY(!flat.empty());
+    for (const LineVertex& v : flat) QCOMPARE(v.position.z(), flat.front().position.z());
 }
 
 void TestViewGeometry::looks_data()

@@ -65,14 +65,16 @@ void BallPass::update(const RenderFrame& frame)
             const int index = static_cast<int>(i);
             states_.push_back(r.timelines.empty() ? r.balls[i].state : r.stateAt(index, frame.time));
             const BallState& s = states_.back();
-            if (s.motion == MotionState::Pocketed) continue;
+            if (isOutOfPlay(s.motion)) continue;
             const BallLook& look = looks_[i];
             const auto radius = static_cast<float>(r.balls[i].radius);
             const Eigen::Quaterniond q = orientations_.at(index, frame.time);
             const float quaternion[4] = {static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()),
                                          static_cast<float>(q.w())};
             appendBallInstance(instances_,
-                               QVector3D(static_cast<float>(s.position.x()), static_cast<float>(s.position.y()), radius),
+                               // (a flying ball above its resting height: its shadow stays on the cloth)
+                               QVector3D(static_cast<float>(s.position.x()), static_cast<float>(s.position.y()),
+                                         radius + static_cast<float>(s.z)),
                                radius, quaternion, look.colour, look.number, look.striped, look.dotted,
                                index == frame.selectedBall, 1.0f);
         }

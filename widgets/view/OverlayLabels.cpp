@@ -302,9 +302,10 @@ OverlayLabelPlan planOverlayLabels(const ViewScene& scene, const LabelFrame& fra
     const SimulationResult& r = *scene.result;
     for (std::size_t i = 0; i < r.balls.size(); ++i) {
         const BallState b = r.timelines.empty() ? r.balls[i].state : r.stateAt(static_cast<int>(i), frame.time);
-        if (b.motion == MotionState::Pocketed) continue;
+        if (isOutOfPlay(b.motion)) continue;
         const auto radius = static_cast<float>(r.balls[i].radius);
-        const QVector3D centre(static_cast<float>(b.position.x()), static_cast<float>(b.position.y()), radius);
+        const QVector3D centre(static_cast<float>(b.position.x()), static_cast<float>(b.position.y()),
+                               radius + static_cast<float>(b.z));
         const std::optional<QPointF> at = toScreen(frame, centre);
         if (!at) continue;
         double drawn = 0.0;

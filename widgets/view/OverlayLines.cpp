@@ -15,6 +15,16 @@ namespace {
 
 constexpr double kPathSampleStep = 1.0 / 120.0;  // s between path samples on curved segments
 constexpr float kClothLift = 0.0015f;            // m: paths lie just above the cloth
+constexpr int kFlightSamples = 24;               // samples at least per flight (one hop of a bounce)
+constexpr double kPaleHeight = 0.06;             // m: a path this high (about a ball) is drawn palest
+const QVector4D kShadowColour(0.0f, 0.0f, 0.0f, 0.45f);  // a flight's path on the cloth beneath it
+
+// A path's colour at height z (m): the ball's colour, paler the higher it flies.
+QVector4D heightColour(const QVector3D& c, double z)
+{
+    const auto pale = static_cast<float>(0.65 * std::clamp(z / kPaleHeight, 0.0, 1.0));
+    return QVector4D(c + pale * (QVector3D(1.0f, 1.0f, 1.0f) - c), 0.95f);
+}
 
 QVector3D at(const Vec2& p, double z)
 {
@@ -93,18 +103,22 @@ void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out
         const std::vector<MotionSegment>& timeline = result.timelines[i];
         const BallLook look = ballLook(result.table.kind, result.balls[i].id);
         const QVector3D c = pathColour(look);
-        const QVector4D colour(c, 0.95f);
         double travelled = 0.0;
         for (std::size_t k = 0; k < timeline.size(); ++k) {
             const MotionSegment& seg = timeline[k];
-            if (seg.state.motion == MotionState::Pocketed) break;
+            if (isOutOfPlay(seg.state.motion)) break;
             const double end = k + 1 < timeline.size() ? timeline[k + 1].start : result.endTime;
             if (end <= seg.start) continue;
             if (seg.state.velocity.squaredNorm() < 1e-20 && seg.push.isZero(0.0)) continue;  // no travel (resting or spinning)
-            // Rolling and uniform motion go straight; sliding curves (a parabola), so sample it.
+            // Rolling and uniform motion go straight; sliding curves (a parabola), so sample it. A
+            // flight is a parabola in height too, often only milliseconds long (a bounce): never
+            // fewer than kFlightSamples samples, so that each hop shows as an arc.
             const bool straight = seg.state.motion == MotionState::Rolling && seg.push.isZero(0.0);
-            const int steps = straight ? 1 : std::clamp(static_cast<int>(std::ceil((end - seg.start) / kPathSampleStep)), 1, 2000);
+            const bool flight = seg.state.motion == MotionState::Airborne;
+            int steps = straight ? 1 : std::clamp(static_cast<int>(std::ceil((end - seg.start) / kPathSampleStep)), 1, 2000);
+            if (flight) steps = std::max(steps, kFlightSamples);
             Vec2 previous = seg.state.position;
+            double previousHeight = seg.state.z;
             double previousTime = seg.start;
             for (int s = 1; s <= steps; ++s) {
                 const double t = seg.start + (end - seg.start) * s / steps;
@@ -112,13 +126,23 @@ void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out
                 // event); the end point of this one is its limit, evaluated a hair before.
                 const double sampleTime = s == steps ? std::nextafter(t, seg.start) : t;
                 const BallState state = result.stateAt(index, sampleTime);
-                if (state.motion == MotionState::Pocketed) break;
+                if (isOutOfPlay(state.motion)) break;
                 const double step = (state.position - previous).norm();
-                out.push_back({at(previous, kClothLift), colour, static_cast<float>(previousTime),
-                               static_cast<float>(travelled)});
+                // In flight the path is drawn at the centre's height above its resting height (an arc
+                // seen from the side), paler the higher it is (readable from above), over its shadow.
+                if (flight || previousHeight > 0.0 || state.z > 0.0) {
+                    out.push_back({at(previous, kClothLift), kShadowColour, static_cast<float>(previousTime),
+                                   static_cast<float>(travelled)});
+                    out.push_back({at(state.position, kClothLift), kShadowColour, static_cast<float>(t),
+                                   static_cast<float>(travelled + step)});
+                }
+                out.push_back({at(previous, kClothLift + previousHeight), heightColour(c, previousHeight),
+                               static_cast<float>(previousTime), static_cast<float>(travelled)});
                 travelled += step;
-                out.push_back({at(state.position, kClothLift), colour, static_cast<float>(t), static_cast<float>(travelled)});
+                out.push_back({at(state.position, kClothLift + state.z), heightColour(c, state.z), static_cast<float>(t),
+                               static_cast<float>(travelled)});
                 previous = state.position;
+                previousHeight = state.z;
                 previousTime = t;
             }
         }
@@ -156,7 +180,8 @@ void buildGhostLines(const SimulationResult& result, std::vector<LineVertex>& ou
         const Vec2 dir = (b - a).normalized();
         const auto time = static_cast<float>(ev.time);
         // The line of centres, through the object ball and on, where a frictionless hit sends it.
-        segment(out, at(a, r), at(b + 0.18 * dir, r), QVector4D(0.95f, 0.95f, 0.95f, 0.85f), time);
+        segment(out, at(a, r + ev.before[0].z), at(b + 0.18 * dir, r + ev.before[1].z), QVector4D(0.95f, 0.95f, 0.95f, 0.85f),
+                time);
         // The contact normal at the contact point.
         const QVector3D contact = at(ev.contactPoint, r);
         const QVector3D n = at(ev.normal, 0.0);
@@ -171,7 +196,7 @@ std::vector<GhostBall> ghostBalls(const SimulationResult& result, int onlyBall)
         const Event& ev = result.events[e];
         if (ev.kind != EventKind::BallBall || !involves(ev, onlyBall)) continue;
         const auto r = static_cast<float>(ballRadius(result, ev.balls[0]));
-        ghosts.push_back({at(ev.before[0].position, r), r, static_cast<int>(e)});
+        ghosts.push_back({at(ev.before[0].position, r + ev.before[0].z), r, static_cast<int>(e)});
     }
     return ghosts;
 }
@@ -182,11 +207,14 @@ void appendVelocityArrows(const SimulationResult& result, const std::vector<Ball
     const QVector4D colour(1.0f, 0.93f, 0.3f, 1.0f);
     for (std::size_t i = 0; i < states.size(); ++i) {
         const BallState& s = states[i];
-        if (s.motion == MotionState::Pocketed || s.velocity.norm() < 1e-3) continue;
+        // In 3-D: a flying ball's arrow tilts up or down with vz.
+        const Vec3 v(s.velocity.x(), s.velocity.y(), s.vz);
+        if (isOutOfPlay(s.motion) || v.norm() < 1e-3) continue;
         const double r = result.balls[i].radius;
-        const QVector3D a = at(s.position, r + 0.002);
-        const QVector3D b = at(s.position + kVelocityArrowScale * s.velocity, r + 0.002);
-        const Vec2 d = s.velocity.normalized();
+        const Vec3 from(s.position.x(), s.position.y(), r + s.z + 0.002);
+        const QVector3D a = at(from);
+        const QVector3D b = at(Vec3(from + kVelocityArrowScale * v));
+        const Vec2 d = s.velocity.norm() > 0.0 ? Vec2(s.velocity.normalized()) : Vec2(1.0, 0.0);
         arrow(out, a, b, QVector3D(static_cast<float>(-d.y()), static_cast<float>(d.x()), 0.0f), colour);
     }
 }
@@ -198,9 +226,9 @@ void appendSpinIndicators(const SimulationResult& result, const std::vector<Ball
     for (std::size_t i = 0; i < states.size(); ++i) {
         const BallState& s = states[i];
         const double w = s.spin.norm();
-        if (s.motion == MotionState::Pocketed || w < 0.3) continue;
+        if (isOutOfPlay(s.motion) || w < 0.3) continue;
         const auto r = static_cast<float>(result.balls[i].radius);
-        const QVector3D centre = at(s.position, r);
+        const QVector3D centre = at(s.position, r + s.z);
         const QVector3D axis = at(Vec3(s.spin / w));
         // The axis pokes out of the ball further the faster it spins (up to 60 rad/s).
         const float reach = r * (1.2f + 0.9f * static_cast<float>(std::min(w / 60.0, 1.0)));
@@ -302,7 +330,7 @@ void appendSelectionRing(const SimulationResult& result, const std::vector<BallS
 {
     if (ball < 0 || static_cast<std::size_t>(ball) >= states.size()) return;
     const BallState& s = states[static_cast<std::size_t>(ball)];
-    if (s.motion == MotionState::Pocketed) return;
+    if (isOutOfPlay(s.motion)) return;
     const auto r = static_cast<float>(result.balls[static_cast<std::size_t>(ball)].radius);
     ring(out, at(s.position, kClothLift), 1.45f * r, QVector4D(1.0f, 0.85f, 0.15f, 1.0f));
 }

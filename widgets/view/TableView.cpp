@@ -253,10 +253,10 @@ int TableView::pickBall(const QPointF& widgetPos) const
     double bestDistance = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < r.balls.size(); ++i) {
         const BallState s = r.timelines.empty() ? r.balls[i].state : r.stateAt(static_cast<int>(i), time_);
-        if (s.motion == MotionState::Pocketed) continue;
+        if (isOutOfPlay(s.motion)) continue;
         const double radius = r.balls[i].radius;
         // |o + t d - c|^2 = R^2 with |d| = 1: t = b -+ sqrt(b^2 - |o - c|^2 + R^2), b = (c - o).d
-        const Vec3 c(s.position.x(), s.position.y(), radius);
+        const Vec3 c(s.position.x(), s.position.y(), radius + s.z);
         const Vec3 oc = c - o;
         const double b = oc.dot(d);
         const double disc = b * b - oc.squaredNorm() + radius * radius;
@@ -274,9 +274,10 @@ int TableView::pickBall(const QPointF& widgetPos) const
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < r.balls.size(); ++i) {
         const BallState s = r.timelines.empty() ? r.balls[i].state : r.stateAt(static_cast<int>(i), time_);
-        if (s.motion == MotionState::Pocketed) continue;
+        if (isOutOfPlay(s.motion)) continue;
         const auto radius = static_cast<float>(r.balls[i].radius);
-        const QVector3D centre(static_cast<float>(s.position.x()), static_cast<float>(s.position.y()), radius);
+        const QVector3D centre(static_cast<float>(s.position.x()), static_cast<float>(s.position.y()),
+                               radius + static_cast<float>(s.z));
         const std::optional<QPointF> at = widgetPointOf(centre);
         const std::optional<QPointF> rim = widgetPointOf(centre + QVector3D(radius, 0.0f, 0.0f));
         if (!at) continue;
