@@ -25,6 +25,8 @@ std::string_view label(Quantity q)
     case Quantity::MomentumY: return "momentum py";
     case Quantity::EnergyLostToEvents: return "energy lost to events";
     case Quantity::EnergyLostToCloth: return "energy lost to the cloth";
+    case Quantity::Height: return "height z";
+    case Quantity::VerticalSpeed: return "vertical speed vz";
     }
     return "speed";
 }
@@ -33,7 +35,9 @@ std::string_view unit(Quantity q)
 {
     switch (q) {
     case Quantity::Speed:
-    case Quantity::SlipSpeed: return "m/s";
+    case Quantity::SlipSpeed:
+    case Quantity::VerticalSpeed: return "m/s";
+    case Quantity::Height: return "m";
     case Quantity::SpinX:
     case Quantity::SpinY:
     case Quantity::SpinZ: return "rad/s";
@@ -52,14 +56,14 @@ bool isEnergy(Quantity q)
 
 double valueOf(Quantity q, const BallState& s, double radius, double mass)
 {
-    if (s.motion == MotionState::Pocketed) return 0.0;
+    if (isOutOfPlay(s.motion)) return 0.0;
     switch (q) {
     case Quantity::Speed: return s.velocity.norm();
     case Quantity::SlipSpeed: return slipVelocity(s, radius).norm();
     case Quantity::SpinX: return s.spin.x();
     case Quantity::SpinY: return s.spin.y();
     case Quantity::SpinZ: return s.spin.z();
-    case Quantity::TranslationalEnergy: return 0.5 * mass * s.velocity.squaredNorm();
+    case Quantity::TranslationalEnergy: return translationalEnergy(s, mass);  // (with vz in flight)
     case Quantity::RotationalEnergy: return 0.5 * ballInertia(mass, radius) * s.spin.squaredNorm();
     case Quantity::KineticEnergy: return kineticEnergy(s, radius, mass);
     case Quantity::Momentum: return mass * s.velocity.norm();
@@ -67,6 +71,8 @@ double valueOf(Quantity q, const BallState& s, double radius, double mass)
     case Quantity::MomentumY: return mass * s.velocity.y();
     case Quantity::EnergyLostToEvents:
     case Quantity::EnergyLostToCloth: return 0.0;  // the table's only (tableCurve)
+    case Quantity::Height: return s.z;
+    case Quantity::VerticalSpeed: return s.vz;
     }
     return 0.0;
 }
@@ -80,7 +86,8 @@ BallState stateJustBefore(const SimulationResult& result, int index, double t)
     auto it = std::lower_bound(timeline.begin(), timeline.end(), t,
                                [](const MotionSegment& s, double time) { return s.start < time; });
     if (it != timeline.begin()) --it;
-    if (!it->push.isZero(0.0)) return segmentState(*it, R, result.physics, t - it->start);  // a held push
+    // A held push, or a summed series of bounces (whose stored state is its landing, not its course).
+    if (!it->push.isZero(0.0) || it->bounces) return segmentState(*it, R, result.physics, t - it->start);
     BallState s = it->state;
     double start = it->start;
     for (;;) {
@@ -160,7 +167,7 @@ std::vector<Piece> sampleBall(const SimulationResult& result, int index, const S
     for (std::size_t k = 0; k + 1 < breaks.times.size(); ++k) {
         const double a = breaks.times[k];
         const double b = breaks.times[k + 1];
-        if (result.stateAt(index, a).motion == MotionState::Pocketed) break;
+        if (isOutOfPlay(result.stateAt(index, a).motion)) break;
         Piece piece;
         const std::vector<double> times = sampleTimes(a, b, options, end);
         for (std::size_t i = 0; i < times.size(); ++i) {
@@ -228,7 +235,7 @@ double totalOf(Quantity q, const SimulationResult& result, const std::vector<Bal
     if (q == Quantity::Momentum) {
         Vec2 p = Vec2::Zero();
         for (std::size_t b = 0; b < states.size(); ++b)
-            if (states[b].motion != MotionState::Pocketed) p += result.balls[b].mass * states[b].velocity;
+            if (!isOutOfPlay(states[b].motion)) p += result.balls[b].mass * states[b].velocity;
         return p.norm();
     }
     double sum = 0.0;

@@ -37,15 +37,18 @@ enum class Quantity : std::uint8_t {
     // share). Translation + rotation + the two losses = the energy put in, at every time.
     EnergyLostToEvents,   // J
     EnergyLostToCloth,    // J
+    Height,               // z, the centre's height above its resting height, m (0 on the cloth)
+    VerticalSpeed,        // vz, m/s, + up
 };
 inline constexpr Quantity kQuantities[] = {Quantity::Speed, Quantity::SlipSpeed, Quantity::SpinX,
                                            Quantity::SpinY, Quantity::SpinZ, Quantity::TranslationalEnergy,
                                            Quantity::RotationalEnergy, Quantity::KineticEnergy,
                                            Quantity::Momentum, Quantity::MomentumX, Quantity::MomentumY,
-                                           Quantity::EnergyLostToEvents, Quantity::EnergyLostToCloth};
+                                           Quantity::EnergyLostToEvents, Quantity::EnergyLostToCloth,
+                                           Quantity::Height, Quantity::VerticalSpeed};
 
 std::string_view label(Quantity q);  // "speed", "slip speed", "spin wx", ... "kinetic energy"
-std::string_view unit(Quantity q);   // "m/s", "rad/s", "J"
+std::string_view unit(Quantity q);   // "m/s", "rad/s", "J", "m"
 bool isEnergy(Quantity q);
 
 // The quantity of one ball's state; a pocketed ball has none (0).

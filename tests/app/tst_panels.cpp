@@ -6,6 +6,7 @@
 #include "editor/EventTableModel.h"
 #include "editor/EventTreeModel.h"
 #include "editor/EventsPanel.h"
+#include "editor/InspectorPanel.h"
 #include "editor/PhysicsPanel.h"
 #include "editor/ShotPanel.h"
 #include "FrameTimes.h"
@@ -62,6 +63,7 @@ private slots:
     void ballsToolbarAddsAndRemoves();
     void eventTableShowsTheResult();
     void eventListWithoutChangesOfMotion();
+    void inspectorShowsHeight();
 };
 
 void TestPanels::physicsSpinBoxEdit_data()
@@ -291,6 +293,36 @@ void TestPanels::eventListWithoutChangesOfMotion()
     QVERIFY(instants < static_cast<int>(events.size()));
     QCOMPARE(table->model()->rowCount(), instants);
     QCOMPARE(panel.selectedEvent(), listed.back());
+}
+
+void TestPanels::inspectorShowsHeight()
+{
+    // A ball thrown up from 2 cm at 1 m/s: the Inspector gives its height and vertical speed, which
+    // at t = 0.05 s are z0 + vz t - g t^2 / 2 and vz - g t; a ball on the cloth has neither row.
+    Setup setup;
+    Ball flying;
+    flying.id = "cue";
+    flying.state.position = Vec2(0.6, 0.6);
+    flying.state.z = 0.02;
+    flying.state.vz = 1.0;
+    flying.state.motion = MotionState::Airborne;
+    Ball resting;
+    resting.id = "1";
+    resting.state.position = Vec2(1.2, 0.6);
+    setup.balls = {flying, resting};
+    const SimulationResult result = simulate(setup);
+    InspectorPanel inspector;
+    const double t = 0.05, g = setup.physics.gravity;
+    inspector.showBall(result, 0, t);
+    QCOMPARE(inspector.value(QStringLiteral("State")), QStringLiteral("airborne"));
+    const QString height = inspector.value(QStringLiteral("Height"));
+    const QString vz = inspector.value(QStringLiteral("Vertical speed"));
+    QVERIFY2(height.startsWith(QString::number(1000.0 * (0.02 + t - 0.5 * g * t * t), 'f', 4)), qPrintable(height));
+    QVERIFY2(height.endsWith(QLatin1String("mm")), qPrintable(height));
+    QVERIFY2(vz.startsWith(QString::number(1.0 - g * t, 'f', 4)), qPrintable(vz));
+    inspector.showBall(result, 1, t);
+    QVERIFY(inspector.value(QStringLiteral("Height")).isEmpty());
+    QVERIFY(inspector.value(QStringLiteral("Vertical speed")).isEmpty());
 }
 
 QTEST_MAIN(TestPanels)

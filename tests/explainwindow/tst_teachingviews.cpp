@@ -203,14 +203,18 @@ private slots:
         for (bool all : {false, true}) {
             plots->setAllBalls(all);
             for (PlotsPanel::Plot p : {PlotsPanel::Plot::Speed, PlotsPanel::Plot::Momentum, PlotsPanel::Plot::EnergyParts,
-                                       PlotsPanel::Plot::Energy})
+                                       PlotsPanel::Plot::Energy, PlotsPanel::Plot::Height})
                 plots->setPlot(p);
         }
         auto* box = plots->findChild<QComboBox*>(QStringLiteral("plotKind"));
         QVERIFY(box);
         plots->setAllBalls(false);
         for (int k = 0; k < box->count(); ++k) box->setCurrentIndex(k);
-        QCOMPARE(plots->plot(), PlotsPanel::Plot::EnergyParts);
+        QCOMPARE(plots->plot(), PlotsPanel::Plot::Height);  // the last choice
+        QStringList heights;
+        for (const PlotsPanel::Line& l : plots->lines()) heights << l.name;
+        QVERIFY2(heights.size() == 2 && heights[0].endsWith(QLatin1String(" z")) && heights[1].endsWith(QLatin1String(" vz")),
+                 qPrintable(heights.join(", ")));
         plots->setAllBalls(true);
         plots->setPlot(PlotsPanel::Plot::Momentum);
         QStringList names;

@@ -61,6 +61,7 @@ private slots:
     void stepBound();
     void pocketedCurveEnds();
     void quantities();
+    void heightCurve();
     void drawnCurvesBreakAtJumps();
 };
 
@@ -245,10 +246,48 @@ void TestCurves::quantities()
     QCOMPARE(valueOf(Quantity::SpinZ, s, R, m), -2.0);
     QCOMPARE(valueOf(Quantity::TranslationalEnergy, s, R, m), 0.5 * m * 25.0);
     QCOMPARE(valueOf(Quantity::RotationalEnergy, s, R, m), 0.5 * 0.4 * m * R * R * 9.0);
+    // In flight: the height and the vertical speed, which the translational energy counts.
+    s.z = 0.04;
+    s.vz = -1.5;
+    s.motion = MotionState::Airborne;
+    QCOMPARE(valueOf(Quantity::Height, s, R, m), 0.04);
+    QCOMPARE(valueOf(Quantity::VerticalSpeed, s, R, m), -1.5);
+    QCOMPARE(valueOf(Quantity::TranslationalEnergy, s, R, m), 0.5 * m * (25.0 + 2.25));
+    QCOMPARE(unit(Quantity::Height), std::string_view("m"));
+    QCOMPARE(unit(Quantity::VerticalSpeed), std::string_view("m/s"));
     s.motion = MotionState::Pocketed;
     QCOMPARE(valueOf(Quantity::KineticEnergy, s, R, m), 0.0);
+    s.motion = MotionState::OffTable;
+    QCOMPARE(valueOf(Quantity::Height, s, R, m), 0.0);
     QCOMPARE(label(Quantity::SlipSpeed), std::string_view("slip speed"));
     QCOMPARE(unit(Quantity::RotationalEnergy), std::string_view("J"));
+}
+
+void TestCurves::heightCurve()
+{
+    // A ball thrown up at 0.5 m/s from 3 cm: the Plots dock's height curve rises to the apex
+    // z0 + vz0^2 / 2g (to the sampling's resolution), never dips below the cloth, and ends on it.
+    Setup setup;
+    Ball b;
+    b.id = "cue";
+    b.state.position = Vec2(0.6, 0.6);
+    b.state.z = 0.03;
+    b.state.vz = 0.5;
+    b.state.motion = MotionState::Airborne;
+    setup.balls = {b};
+    const SimulationResult r = simulate(setup);
+    const double apex = 0.03 + 0.25 / (2.0 * setup.physics.gravity);
+    double highest = 0.0;
+    for (const Polyline& line : ballCurve(r, 0, Quantity::Height))
+        for (double z : line.values) {
+            QVERIFY(z >= 0.0);
+            highest = std::max(highest, z);
+        }
+    QVERIFY2(highest <= apex && highest > apex - 1e-4, qPrintable(QString::number(apex - highest)));
+    const std::vector<Polyline> vz = ballCurve(r, 0, Quantity::VerticalSpeed);
+    QVERIFY(!vz.empty());
+    QCOMPARE(vz.front().values.front(), 0.5);
+    QCOMPARE(vz.back().values.back(), 0.0);
 }
 
 void TestCurves::drawnCurvesBreakAtJumps()

@@ -64,10 +64,18 @@ void InspectorPanel::showNothing()
 void InspectorPanel::addState(QTreeWidgetItem* parent, const BallState& s, double radius)
 {
     add(parent, tr("State"), displayName(s.motion));
-    if (s.motion == MotionState::Pocketed) return;
+    if (isOutOfPlay(s.motion)) return;
     add(parent, tr("Position"), formatVector(s.position, QStringLiteral("m"), 4));
     add(parent, tr("Velocity"), formatVector(s.velocity, QStringLiteral("m/s"), 4));
     add(parent, tr("Speed"), formatQuantity(s.velocity.norm(), QStringLiteral("m/s"), 4));
+    // A ball off the cloth (or leaving it): its height and vertical speed. A ball that never flies
+    // shows neither, as before balls could fly.
+    if (s.motion == MotionState::Airborne || s.z != 0.0 || s.vz != 0.0) {
+        add(parent, tr("Height"), formatQuantity(s.z * 1000.0, QStringLiteral("mm"), 4),
+            tr("Height of the centre above its resting height (mm); 0 on the cloth"));
+        add(parent, tr("Vertical speed"), formatQuantity(s.vz, QStringLiteral("m/s"), 4),
+            tr("Vertical velocity vz (m/s), positive upwards; in flight it falls by g t"));
+    }
     add(parent, tr("Spin"), formatVector(s.spin, QStringLiteral("rad/s"), 3), tr("Angular velocity (ωx, ωy, ωz); ωz > 0 is counter-clockwise seen from above"));
     add(parent, tr("Slip"), formatVector(slipVelocity(s, radius), QStringLiteral("m/s"), 4),
         tr("Velocity of the contact point with the cloth, v + R (z × ω); zero when rolling"));

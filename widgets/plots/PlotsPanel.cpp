@@ -49,12 +49,15 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent)
     plotBox_->addItem(tr("Kinetic energy (J)"), QVariant::fromValue(Plot::Energy));
     plotBox_->addItem(tr("Momentum |p|, px, py (N s)"), QVariant::fromValue(Plot::Momentum));
     plotBox_->addItem(tr("Energy parts and losses, whole table (J)"), QVariant::fromValue(Plot::EnergyParts));
+    plotBox_->addItem(tr("Height z (m) and vertical speed vz (m/s)"), QVariant::fromValue(Plot::Height));
     plotBox_->setToolTip(tr("What to plot against time (s). Slip speed: the speed of the ball's contact point "
                             "on the cloth (m/s), zero while it rolls. Energy: translational, rotational and total (J). "
                             "Momentum: m v in N s, its length and components; for all balls each ball's |p| and the "
                             "length of the total. Energy parts: the whole table's translation and rotation, what the "
                             "events (collisions, pockets) and the cloth have taken so far, and the energy put in (J), "
-                            "which the four add up to."));
+                            "which the four add up to. Height: how far the ball's centre is above its resting height (m), "
+                            "0 on the cloth, and its vertical speed (m/s, + up): each flight is a parabola, "
+                            "each bounce a jump of vz."));
     ballsBox_ = new QComboBox(this);
     ballsBox_->setObjectName(QStringLiteral("plotBalls"));
     ballsBox_->addItem(tr("Selected ball"));
@@ -229,6 +232,11 @@ void PlotsPanel::rebuild()
             }
             break;
         case Plot::EnergyParts: break;  // the whole table's, below
+        case Plot::Height:
+            // A flight's parabola z(t) and its line vz(t) (slope -g); both 0 on the cloth.
+            specs.push_back({b, plots::Quantity::Height, id + tr(" z"), allBalls_ ? c : parts[2], Qt::SolidLine});
+            specs.push_back({b, plots::Quantity::VerticalSpeed, id + tr(" vz"), allBalls_ ? c : parts[0], Qt::DashLine});
+            break;
         }
     }
     if (plot_ == Plot::Energy && allBalls_)

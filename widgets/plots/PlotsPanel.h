@@ -25,7 +25,7 @@ class PlotsChartView;
 class PlotsPanel : public QWidget {
     Q_OBJECT
 public:
-    enum class Plot { Speed, SlipSpeed, Spin, Energy, Momentum, EnergyParts };
+    enum class Plot { Speed, SlipSpeed, Spin, Energy, Momentum, EnergyParts, Height };
     Q_ENUM(Plot)
 
     explicit PlotsPanel(QWidget* parent = nullptr);
