@@ -62,6 +62,21 @@ void explainCueStrike(const SimulationResult& r, int index, const std::optional<
         .out("w_after", "ω′", res.after.spin, "rad/s")
         .out("J", "J", res.impulse, "N s")
         .out("u_after", "|u′|", slipVelocity(res.after, ball.radius).norm(), "m/s");
+    if (ev.after[0].vz != 0.0) {
+        // The elevated strike keeps its vertical part (SimulationOptions::strikeKeepsElevation): the
+        // ball is driven into the cloth, which answers at once (the next event, a bounce at t = 0).
+        const double theta = t.theta;
+        StepBuilder(e.steps, Text::tr("The vertical part: into the cloth"),
+                    Text::tr("An elevated cue (θ > 0) also pushes the ball down: the impulse F e has the vertical part "
+                             "−F sin θ, which gives the centre a downward velocity. The ball lies on the cloth, so the "
+                             "cloth answers at the same instant with a bounce (the next event): a steep, firm stroke "
+                             "makes the ball jump."),
+                    "v_z′ = −F sin θ / m")
+            .in("F", "F", t.impulse, "N s")
+            .in("elevation", "θ", shot->elevationDeg, "°")
+            .in("m", "m", ball.mass, "kg")
+            .out("vz_after", "v_z′", -t.impulse * std::sin(theta) / ball.mass, "m/s");
+    }
     const double cueEnergy = 0.5 * shot->cueMass * shot->speed * shot->speed;
     addEnergyStep(e, Text::tr("The cue brings ½ M V_0² = %1 J; an elastic tip keeps the total, so the cue keeps the "
                               "rest.")

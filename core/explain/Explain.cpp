@@ -138,6 +138,8 @@ Explanation explain(const SimulationResult& result, int index, const std::option
     case EventKind::BallCushion:
     case EventKind::BallJaw: detail::explainCushion(result, index, e); break;
     case EventKind::BallPocket: detail::explainPocket(result, index, e); break;
+    case EventKind::BallTable: detail::explainBallTable(result, index, e); break;
+    case EventKind::BallOffTable: detail::explainOffTable(result, index, e); break;
     default: detail::explainTransition(result, index, e); break;
     }
     return e;

@@ -27,6 +27,8 @@ void explainCueStrike(const SimulationResult& r, int index, const std::optional<
 void explainBallBall(const SimulationResult& r, int index, Explanation& e);
 void explainCushion(const SimulationResult& r, int index, Explanation& e);
 void explainPocket(const SimulationResult& r, int index, Explanation& e);
+void explainBallTable(const SimulationResult& r, int index, Explanation& e);  // FlightExplain.cpp
+void explainOffTable(const SimulationResult& r, int index, Explanation& e);
 void explainTransition(const SimulationResult& r, int index, Explanation& e);
 
 }  // namespace cuelab::explain::detail
