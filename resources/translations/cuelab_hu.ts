@@ -2099,6 +2099,22 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <source>mirror</source>
         <translation>tükrözés</translation>
     </message>
+    <message>
+        <source>airborne</source>
+        <translation>repül</translation>
+    </message>
+    <message>
+        <source>off-table</source>
+        <translation>asztalon kívül</translation>
+    </message>
+    <message>
+        <source>ball-table</source>
+        <translation>golyó–asztal</translation>
+    </message>
+    <message>
+        <source>ball-off-table</source>
+        <translation>leesés az asztalról</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::Document</name>
@@ -2583,6 +2599,22 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>p* %1 after</source>
         <translation>p* %1 utána</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Magasság</translation>
+    </message>
+    <message>
+        <source>Height of the centre above its resting height (mm); 0 on the cloth</source>
+        <translation>A középpont magassága a nyugalmi magassága fölött (mm); a posztón 0</translation>
+    </message>
+    <message>
+        <source>Vertical speed</source>
+        <translation>Függőleges sebesség</translation>
+    </message>
+    <message>
+        <source>Vertical velocity vz (m/s), positive upwards; in flight it falls by g t</source>
+        <translation>A függőleges sebesség, vz (m/s), felfelé pozitív; repülés közben g t-vel csökken</translation>
     </message>
 </context>
 <context>
@@ -3733,10 +3765,6 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>Energiarészek és veszteségek, az egész asztal (J)</translation>
     </message>
     <message>
-        <source>What to plot against time (s). Slip speed: the speed of the ball&apos;s contact point on the cloth (m/s), zero while it rolls. Energy: translational, rotational and total (J). Momentum: m v in N s, its length and components; for all balls each ball&apos;s |p| and the length of the total. Energy parts: the whole table&apos;s translation and rotation, what the events (collisions, pockets) and the cloth have taken so far, and the energy put in (J), which the four add up to.</source>
-        <translation>Mit ábrázoljon az idő (s) függvényében. Csúszási sebesség: a golyó posztóval érintkező pontjának sebessége (m/s), gördülés közben nulla. Energia: haladó, forgó és teljes (J). Lendület: m v N s-ban, a nagysága és az összetevői; minden golyónál az egyes golyók |p| értéke és az összeg nagysága. Energiarészek: az egész asztal haladó és forgó energiája, amit eddig az események (ütközések, zsebek) és a posztó elvettek, valamint a bevitt energia (J), amelyet a négy együtt kiad.</translation>
-    </message>
-    <message>
         <source> |p|</source>
         <translation> |p|</translation>
     </message>
@@ -3775,6 +3803,22 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>Plo&amp;t</source>
         <translation>Áb&amp;ra</translation>
+    </message>
+    <message>
+        <source>Height z (m) and vertical speed vz (m/s)</source>
+        <translation>Magasság, z (m) és függőleges sebesség, vz (m/s)</translation>
+    </message>
+    <message>
+        <source>What to plot against time (s). Slip speed: the speed of the ball&apos;s contact point on the cloth (m/s), zero while it rolls. Energy: translational, rotational and total (J). Momentum: m v in N s, its length and components; for all balls each ball&apos;s |p| and the length of the total. Energy parts: the whole table&apos;s translation and rotation, what the events (collisions, pockets) and the cloth have taken so far, and the energy put in (J), which the four add up to. Height: how far the ball&apos;s centre is above its resting height (m), 0 on the cloth, and its vertical speed (m/s, + up): each flight is a parabola, each bounce a jump of vz.</source>
+        <translation>Mit ábrázoljon az idő (s) függvényében. Csúszási sebesség: a golyó posztóval érintkező pontjának sebessége (m/s), gördülés közben nulla. Energia: haladó, forgó és teljes (J). Lendület: m v N s-ban, a nagysága és az összetevői; minden golyónál az egyes golyók |p| értéke és az összeg nagysága. Energiarészek: az egész asztal haladó és forgó energiája, amit eddig az események (ütközések, zsebek) és a posztó elvettek, valamint a bevitt energia (J), amelyet a négy együtt kiad. Magasság: a golyó középpontja mennyivel van a nyugalmi magassága fölött (m), a posztón 0, és a függőleges sebessége (m/s, felfelé +): minden repülés egy parabola, minden pattanás egy ugrás vz-ben.</translation>
+    </message>
+    <message>
+        <source> z</source>
+        <translation> z</translation>
+    </message>
+    <message>
+        <source> vz</source>
+        <translation> vz</translation>
     </message>
 </context>
 <context>
@@ -5423,6 +5467,102 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>The bodies were touching at the event (within 10^{−10} m) and pressed together, found when a group of held contacts was solved again then: the contact begins at that instant, not at a root of f (Detection.h, resting contact).</source>
         <translation>A testek az eseménykor érintkeztek (10^{−10} m-en belül) és egymásnak nyomódtak; ez akkor derült ki, amikor a szimulátor egy tartott érintkezésekből álló csoportot újra megoldott: az érintkezés abban a pillanatban kezdődik, nem f egy gyökénél (Detection.h, nyugvó érintkezés).</translation>
+    </message>
+    <message>
+        <source>The vertical part: into the cloth</source>
+        <translation>A függőleges rész: bele a posztóba</translation>
+    </message>
+    <message>
+        <source>An elevated cue (θ &gt; 0) also pushes the ball down: the impulse F e has the vertical part −F sin θ, which gives the centre a downward velocity. The ball lies on the cloth, so the cloth answers at the same instant with a bounce (the next event): a steep, firm stroke makes the ball jump.</source>
+        <translation>A megemelt dákó (θ &gt; 0) lefelé is nyomja a golyót: az F e impulzusnak −F sin θ függőleges része van, amely lefelé irányuló sebességet ad a középpontnak. A golyó a posztón fekszik, ezért a posztó ugyanabban a pillanatban egy pattanással felel (a következő esemény): meredek, határozott lökéstől a golyó ugrik.</translation>
+    </message>
+    <message>
+        <source>Why now: the flight lands</source>
+        <translation>Miért most: a repülés földet ér</translation>
+    </message>
+    <message>
+        <source>Since t_{start} the ball has flown free: gravity alone acts on it (no cloth, so no friction and no rolling resistance; its spin does not change), so its centre&apos;s height above its resting height is a parabola in τ = t − t_{start}. It lands when the height is 0 again: the positive root of that quadratic. It is highest at τ = v_{z,0}/g when it starts upwards.</source>
+        <translation>t_{start} óta a golyó szabadon repül: csak a gravitáció hat rá (nincs alatta posztó, így nincs súrlódás és gördülési ellenállás sem; a pörgése nem változik), ezért a középpontjának a nyugalmi magassága fölötti magassága parabola τ = t − t_{start} függvényében. Akkor ér földet, amikor a magasság ismét 0: ennek a másodfokú egyenletnek a pozitív gyökénél. Ha felfelé indul, τ = v_{z,0}/g-nél van a legmagasabban.</translation>
+    </message>
+    <message>
+        <source>The bounces of ball %1 end</source>
+        <translation>A(z) %1 golyó pattogása véget ér</translation>
+    </message>
+    <message>
+        <source>Why now: the sum of the bounces</source>
+        <translation>Miért most: a pattanások összege</translation>
+    </message>
+    <message>
+        <source>At t_{start} the ball landed at w and nothing could meet it before its bounces die out, so the simulator summed them instead of taking each as an event. Bounce j sends it up at w e_t^j, and the flight after it lasts 2 w e_t^j / g: a geometric series, whose sum T is finite for e_t &lt; 1. After infinitely many bounces the ball is on the cloth for good, with z = v_z = 0, at t_{start} + T; its vertical kinetic energy m w²/2 is all lost.</source>
+        <translation>t_{start}-kor a golyó w sebességgel ért földet, és semmi sem érhette el, mielőtt a pattanásai elhalnak, ezért a szimulátor összegezte őket ahelyett, hogy mindegyiket külön eseménynek venné. A j-edik pattanás w e_t^j sebességgel dobja fel, és az utána következő repülés 2 w e_t^j / g ideig tart: ez mértani sor, amelynek T összege e_t &lt; 1 esetén véges. Végtelen sok pattanás után a golyó végleg a posztón van, z = v_z = 0 mellett, t_{start} + T-kor; m w²/2 függőleges mozgási energiája teljesen elvész.</translation>
+    </message>
+    <message>
+        <source>The series&apos; end changes no number: the bounces before it took the vertical energy.</source>
+        <translation>A sor vége egyetlen számot sem változtat: a függőleges energiát az előtte lévő pattanások vették el.</translation>
+    </message>
+    <message>
+        <source>The cloth answers the elevated cue: ball %1 bounces</source>
+        <translation>A posztó visszaüt a megemelt dákóra: a(z) %1 golyó pattan</translation>
+    </message>
+    <message>
+        <source>Ball %1 lands and bounces on the cloth</source>
+        <translation>A(z) %1 golyó földet ér és pattan a posztón</translation>
+    </message>
+    <message>
+        <source>Into the cloth</source>
+        <translation>Bele a posztóba</translation>
+    </message>
+    <message>
+        <source>The elevated cue drives the ball down as well as forward: its velocity just after the strike has a downward part w. The ball is on the cloth, so the cloth answers at once, at the same instant.</source>
+        <translation>A megemelt dákó előre és lefelé is hajtja a golyót: a lökés utáni sebességének van egy w lefelé mutató része. A golyó a posztón fekszik, ezért a posztó azonnal, ugyanabban a pillanatban visszaüt.</translation>
+    </message>
+    <message>
+        <source>The bounce</source>
+        <translation>A pattanás</translation>
+    </message>
+    <message>
+        <source>The cloth pushes the ball up with the normal impulse P_n that sends it off at e_t times its landing speed, and its friction acts on the slip u = v + R (z × ω) of the contact point with at most μ_t P_n (the slip stops first if it is small: then 2/7 m |u| is enough). The friction P_t changes v by P_t/m and ω by R (−z × P_t)/I, I = 2/5 m R².</source>
+        <translation>A posztó P_n normális impulzussal löki fel a golyót, amely a földet érési sebességének e_t-szeresével indítja el, és súrlódása legfeljebb μ_t P_n-nel hat az érintkezési pont u = v + R (z × ω) csúszására (ha a csúszás kicsi, előbb megáll: ehhez 2/7 m |u| elég). A P_t súrlódás v-t P_t/m-mel, ω-t R (−z × P_t)/I-vel változtatja meg, I = 2/5 m R².</translation>
+    </message>
+    <message>
+        <source>On the cloth for good</source>
+        <translation>Végleg a posztón</translation>
+    </message>
+    <message>
+        <source>The rebound e_t w is so small that its flight, 2 e_t w / g, is below the resolution of the clock at t: the rest of the series is summed at once, and the ball stays on the cloth.</source>
+        <translation>Az e_t w visszapattanás olyan kicsi, hogy a repülése, 2 e_t w / g, kisebb, mint amit az óra t-nél fel tud bontani: a sor hátralévő része egyszerre összegződik, és a golyó a posztón marad.</translation>
+    </message>
+    <message>
+        <source>The next flight</source>
+        <translation>A következő repülés</translation>
+    </message>
+    <message>
+        <source>It leaves the cloth at v_z′ and flies free again: it rises for v_z′/g to the height v_z′²/(2g) and lands after 2 v_z′/g at the same speed v_z′, unless it meets a ball or a cushion first.</source>
+        <translation>v_z′ sebességgel hagyja el a posztót, és ismét szabadon repül: v_z′/g ideig emelkedik v_z′²/(2g) magasságig, és 2 v_z′/g múlva ugyanazzal a v_z′ sebességgel ér földet, hacsak előbb nem ütközik golyóval vagy mantinellel.</translation>
+    </message>
+    <message>
+        <source>All the bounces to come</source>
+        <translation>Az összes hátralévő pattanás</translation>
+    </message>
+    <message>
+        <source>Each bounce returns e_t of the landing speed, so the flights last 2 v_z′/g, 2 v_z′ e_t/g, 2 v_z′ e_t²/g, …: infinitely many, but a geometric series with a finite sum. Left alone, the ball is on the cloth for good after T, and the cloth has then taken all of this vertical kinetic energy.</source>
+        <translation>Minden pattanás a földet érési sebesség e_t-szeresét adja vissza, így a repülések 2 v_z′/g, 2 v_z′ e_t/g, 2 v_z′ e_t²/g, … ideig tartanak: végtelen sok, de véges összegű mértani sor. Ha semmi sem zavarja, a golyó T múlva végleg a posztón van, és addigra a posztó elvette ezt az egész függőleges mozgási energiát.</translation>
+    </message>
+    <message>
+        <source>The bounce takes (1 − e_t²) m w²/2 of the vertical kinetic energy, and friction what the slip loses.</source>
+        <translation>A pattanás a függőleges mozgási energiából (1 − e_t²) m w²/2-t vesz el, a súrlódás pedig azt, amit a csúszás veszít.</translation>
+    </message>
+    <message>
+        <source>Ball %1 leaves the table</source>
+        <translation>A(z) %1 golyó elhagyja az asztalt</translation>
+    </message>
+    <message>
+        <source>The ball flew over a cushion&apos;s nose, higher than the rail can stop, or came down where there is no cloth (beyond the cushions, on a rail&apos;s end): there is no table under it any more. It is out of play, like a pocketed ball, and is kept where it left with no motion and no energy.</source>
+        <translation>A golyó magasabban repült át a mantinel élén, mint amit a keret megállíthat, vagy ott ért le, ahol nincs posztó (a mantineleken túl, egy keret végén): nincs már alatta asztal. Kiesett a játékból, mint egy lyukba esett golyó, és ott marad, ahol kiesett, mozgás és energia nélkül.</translation>
+    </message>
+    <message>
+        <source>The ball takes all its kinetic energy off the table.</source>
+        <translation>A golyó az összes mozgási energiáját magával viszi az asztalról.</translation>
     </message>
 </context>
 </TS>
