@@ -60,7 +60,7 @@ int usage(const char* why)
     std::fprintf(stderr,
                  "cuelab-bench: %s\nusage: cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] "
                  "[--class NAME] [--max-events N] [--first K] [--elevation]\n"
-                 "       cuelab-bench --check [--elevation] [--trace] [--set KEY=VALUE]... FILE...\n"
+                 "       cuelab-bench --check [--elevation] [--trace] [--max-events N] [--set KEY=VALUE]... FILE...\n"
                  "--elevation: the strike keeps its vertical part (SimulationOptions::strikeKeepsElevation)\n",
                  why);
     return 2;
@@ -108,6 +108,11 @@ int checkCommand(int argc, char** argv)
             simulation.strikeKeepsElevation = true;
         } else if (std::strcmp(argv[k], "--trace") == 0) {
             trace = true;
+        } else if (std::strcmp(argv[k], "--max-events") == 0 && k + 1 < argc) {
+            long long n = 0;
+            if (!parseCount(argv[k + 1], n) || n < 1) return usage("--max-events needs a count >= 1");
+            simulation.maxEvents = n;
+            ++k;
         } else if (std::strcmp(argv[k], "--set") == 0 && k + 1 < argc) {
             const std::optional<analysis::Assignment> a = analysis::parseAssignment(argv[++k]);
             if (!a) return usage("--set needs KEY=VALUE");

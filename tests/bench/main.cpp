@@ -11,7 +11,7 @@
 //                              [--first K] [--elevation]
 //                              the random-shot soak's summary (issue 19, docs/soak.md); --elevation: the
 //                              strike keeps its vertical part (SimulationOptions::strikeKeepsElevation)
-//   cuelab-bench --check [--elevation] [--set KEY=VALUE]... FILE...
+//   cuelab-bench --check [--elevation] [--trace] [--max-events N] [--set KEY=VALUE]... FILE...
 //                              the soak's checks on setup files; exit 1 if any fails
 
 #include "AnalysisBench.h"
