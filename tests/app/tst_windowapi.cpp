@@ -340,11 +340,6 @@ private slots:
             if (!d->isVisible() || d->visibleRegion().isEmpty()) continue;
             const auto* scroll = qobject_cast<const QScrollArea*>(d->widget());
             if (!scroll) continue;
-            // A known gap at 800x600, left for later: Coach's Analysis needs about 242 px of 234.
-            if (size == QSize(800, 600) && arrangement == int(Arrangement::Coach) && d->objectName() == QLatin1String("AnalysisDock")) {
-                qInfo("%s: content %d px in %d", qPrintable(d->objectName()), scroll->widget()->minimumSizeHint().width(), scroll->viewport()->width());
-                QEXPECT_FAIL("", "issue 21: this panel does not reflow to a 234-px column yet", Continue);
-            }
             QTRY_VERIFY2_WITH_TIMEOUT(scroll->horizontalScrollBar()->maximum() == 0,
                                       qPrintable(QStringLiteral("%1 cut off: content %2 in %3; ").arg(d->objectName())
                                                      .arg(scroll->widget()->minimumSizeHint().width()).arg(scroll->viewport()->width()) +

@@ -71,9 +71,10 @@ QDoubleSpinBox* numberBox(QWidget* parent, const QString& tip, double low, doubl
     box->setRange(low, high);
     box->setDecimals(decimals);
     box->setToolTip(tip);
-    // As wide as a value of four integer digits needs, not as the range's ends (±1000000.0000): the
-    // map's ranges then fit a side column beside each other.
-    box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-0000.0000")) + 28);
+    // At least as wide as a signed value of three integer digits needs (a heading's 359.9999), not as
+    // the range's ends (±1000000.0000): two of the map's ranges then fit side by side in Coach's
+    // 234-px column at 800x600 (tst_windowapi); a wider dock widens them.
+    box->setMinimumWidth(box->fontMetrics().horizontalAdvance(QStringLiteral("-000.0000")) + 28);
     return box;
 }
 
@@ -173,6 +174,7 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     // column (Coach at 1280x800 keeps the table view wide).
     const auto range = [](QDoubleSpinBox* from, QDoubleSpinBox* to) {
         auto* row = new QHBoxLayout;
+        row->setSpacing(4);
         row->addWidget(from, 1);
         row->addWidget(to, 1);
         return row;
