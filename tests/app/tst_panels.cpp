@@ -9,6 +9,7 @@
 #include "editor/InspectorPanel.h"
 #include "editor/PhysicsPanel.h"
 #include "editor/ShotPanel.h"
+#include "FlyingBall.h"
 #include "FrameTimes.h"
 
 #include <QCheckBox>
@@ -300,12 +301,7 @@ void TestPanels::inspectorShowsHeight()
     // A ball thrown up from 2 cm at 1 m/s: the Inspector gives its height and vertical speed, which
     // at t = 0.05 s are z0 + vz t - g t^2 / 2 and vz - g t; a ball on the cloth has neither row.
     Setup setup;
-    Ball flying;
-    flying.id = "cue";
-    flying.state.position = Vec2(0.6, 0.6);
-    flying.state.z = 0.02;
-    flying.state.vz = 1.0;
-    flying.state.motion = MotionState::Airborne;
+    const Ball flying = flyingBall("cue", 0.6, 0.6, 0.02, 1.0);
     Ball resting;
     resting.id = "1";
     resting.state.position = Vec2(1.2, 0.6);

@@ -3,6 +3,7 @@
 // leaves the table. Every figure is checked against the closed forms of PHYSICS.md.
 
 #include "Explain.h"
+#include "FlyingBall.h"
 #include "Simulation.h"
 
 #include <QtTest>
@@ -25,13 +26,7 @@ double resultOf(const explain::Explanation& e, const char* step, const char* key
 Setup droppedBall(double z0, double vz0)
 {
     Setup setup;
-    Ball b;
-    b.id = "cue";
-    b.state.position = Vec2(0.6, 0.6);
-    b.state.z = z0;
-    b.state.vz = vz0;
-    b.state.motion = MotionState::Airborne;
-    setup.balls = {b};
+    setup.balls = {flyingBall("cue", 0.6, 0.6, z0, vz0)};
     return setup;
 }
 

@@ -7,6 +7,7 @@
 #include "SetupFile.h"
 #include "Simulation.h"
 #include "ExampleSetup.h"
+#include "FlyingBall.h"
 
 #include <QTest>
 
@@ -268,13 +269,7 @@ void TestCurves::heightCurve()
     // A ball thrown up at 0.5 m/s from 3 cm: the Plots dock's height curve rises to the apex
     // z0 + vz0^2 / 2g (to the sampling's resolution), never dips below the cloth, and ends on it.
     Setup setup;
-    Ball b;
-    b.id = "cue";
-    b.state.position = Vec2(0.6, 0.6);
-    b.state.z = 0.03;
-    b.state.vz = 0.5;
-    b.state.motion = MotionState::Airborne;
-    setup.balls = {b};
+    setup.balls = {flyingBall("cue", 0.6, 0.6, 0.03, 0.5)};
     const SimulationResult r = simulate(setup);
     const double apex = 0.03 + 0.25 / (2.0 * setup.physics.gravity);
     double highest = 0.0;

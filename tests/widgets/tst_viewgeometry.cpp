@@ -1,6 +1,7 @@
 // The table view's plain parts, without GL: where a dragged ball may go, how balls turn with their
 // spin, how they look, and the table mesh of every table kind.
 
+#include "FlyingBall.h"
 #include "view/BallAppearance.h"
 #include "view/BallOrientations.h"
 #include "view/BallPlacement.h"
@@ -144,11 +145,7 @@ void TestViewGeometry::flightIsDrawnAtItsHeight()
     // cloth, and its velocity arrow points up at first; a ball that stays on the cloth is drawn flat.
     const double z0 = 0.05, vz = 1.0;
     Setup setup;
-    Ball b = ballAt("cue", 0.6, 0.6);
-    b.state.velocity = Vec2(0.5, 0.0);
-    b.state.z = z0;
-    b.state.vz = vz;
-    b.state.motion = MotionState::Airborne;
+    const Ball b = flyingBall("cue", 0.6, 0.6, z0, vz, Vec2(0.5, 0.0));
     setup.balls = {b, ballAt("1", 1.5, 1.0)};
     const SimulationResult result = simulate(setup);
     std::vector<LineVertex> lines;
