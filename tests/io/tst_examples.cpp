@@ -67,6 +67,7 @@ private slots:
     void stunCutSeparation();
     void cradleHandsOnTheSpeed();
     void kickAndThreeCushionPaths();
+    void masseGoesAroundTheBlocker();
 };
 
 static const QStringList kExamples{
@@ -74,7 +75,7 @@ static const QStringList kExamples{
     QStringLiteral("draw-shot.json"),      QStringLiteral("half-ball-cut.json"), QStringLiteral("stun-cut.json"),
     QStringLiteral("one-cushion-bank.json"), QStringLiteral("two-rail-kick.json"), QStringLiteral("8-ball-break.json"),
     QStringLiteral("9-ball-break.json"),   QStringLiteral("newtons-cradle.json"), QStringLiteral("snooker-plant.json"),
-    QStringLiteral("three-cushion.json"),  QStringLiteral("fast-graze.json"),
+    QStringLiteral("three-cushion.json"),  QStringLiteral("fast-graze.json"),     QStringLiteral("masse-around-a-ball.json"),
 };
 
 void TestExamples::everyFileIsListed()
@@ -109,6 +110,7 @@ void TestExamples::loadsAndSimulatesToRest_data()
     QTest::newRow("snooker plant") << "snooker-plant.json" << QStringList{"red-2:pocket-tr"};
     QTest::newRow("three-cushion carom") << "three-cushion.json" << none;
     QTest::newRow("fast graze") << "fast-graze.json" << QStringList{"5:pocket-t"};
+    QTest::newRow("massé around a ball") << "masse-around-a-ball.json" << QStringList{"1:pocket-tr"};
 }
 
 void TestExamples::loadsAndSimulatesToRest()
@@ -252,6 +254,27 @@ void TestExamples::kickAndThreeCushionPaths()
     const qsizetype second = path.indexOf(QStringLiteral("yellow"));
     QVERIFY(second > 0);
     QVERIFY(path.mid(1, second - 1).count(QStringLiteral("cushion")) >= 3);
+}
+
+void TestExamples::masseGoesAroundTheBlocker()
+{
+    // The lesson's claims: a level stroke straight at the 1 meets the 2 first; the massé's curve meets
+    // the 1 first and never the 2, and it bends to the left (towards the left english).
+    Setup level = load(QStringLiteral("masse-around-a-ball.json"));
+    const Vec2 cue = level.balls[0].state.position, one = level.balls[1].state.position;
+    level.shot->headingDeg = std::atan2(one.y() - cue.y(), one.x() - cue.x()) * 180.0 / std::numbers::pi;
+    level.shot->elevationDeg = 0.0;
+    level.shot->side = 0.0;
+    QCOMPARE(contactsOf(simulate(level), "cue").value(0), QStringLiteral("2"));
+
+    const SimulationResult masse = simulate(load(QStringLiteral("masse-around-a-ball.json")));
+    const QStringList contacts = contactsOf(masse, "cue");
+    QCOMPARE(contacts.value(0), QStringLiteral("1"));
+    QVERIFY(!contacts.contains(QStringLiteral("2")));
+    const Vec2 start = masse.events.front().after[0].velocity;
+    const Event& hit = firstEvent(masse, EventKind::BallBall, "cue");
+    const Vec2 at = hit.before[0].velocity;
+    QVERIFY(start.x() * at.y() - start.y() * at.x() > 0.0);  // turned counter-clockwise
 }
 
 QTEST_GUILESS_MAIN(TestExamples)
