@@ -6,6 +6,7 @@
 #include "resolve/TableModel.h"
 
 #include <cmath>
+#include <limits>
 
 namespace cuelab::explain::detail {
 
@@ -49,6 +50,19 @@ void addLandingStep(Explanation& e, const SegmentBefore& seg, double g)
         .out("tau", "τ*", tau, "s")
         .out("t", "t = t_{start} + τ*", seg.start + tau, "s")
         .out("w", "w", w, "m/s");
+    // The landing's time of impact for the chart: the height itself is the gap, a quadratic.
+    TimeOfImpact toi;
+    toi.gap = Text::tr("f(τ) = z(t_0+τ)   (the height of the centre above its resting height)");
+    toi.t0 = seg.start;
+    toi.coefficients = {z0, vz0, -0.5 * g};
+    toi.horizon = std::numeric_limits<double>::infinity();  // a flight ends only where it lands
+    toi.root = tau;
+    const double before = (vz0 - w) / g;  // the other root: where the parabola left the cloth (<= 0)
+    if (before < tau) toi.roots.push_back(ToiRoot{before, false, false, true, false});
+    toi.roots.push_back(ToiRoot{tau, true, true, true, true});
+    toi.why = Text::tr("τ* is the positive root, where the height falls to 0 (f′(τ*) = −w < 0: the ball comes "
+                       "down); the other root, at or before τ = 0, is where this parabola would have left the cloth.");
+    e.toi = toi;
 }
 
 }  // namespace

@@ -5564,5 +5564,13 @@ Kimaradt kérdés: %1</translation>
         <source>The ball takes all its kinetic energy off the table.</source>
         <translation>A golyó az összes mozgási energiáját magával viszi az asztalról.</translation>
     </message>
+    <message>
+        <source>f(τ) = z(t_0+τ)   (the height of the centre above its resting height)</source>
+        <translation>f(τ) = z(t_0+τ)   (a középpont magassága a nyugalmi magassága fölött)</translation>
+    </message>
+    <message>
+        <source>τ* is the positive root, where the height falls to 0 (f′(τ*) = −w &lt; 0: the ball comes down); the other root, at or before τ = 0, is where this parabola would have left the cloth.</source>
+        <translation>τ* a pozitív gyök, ahol a magasság 0-ra csökken (f′(τ*) = −w &lt; 0: a golyó lefelé jön); a másik gyök, τ = 0-nál vagy előtte, az, ahol ez a parabola elhagyta volna a posztót.</translation>
+    </message>
 </context>
 </TS>

@@ -65,6 +65,14 @@ void TestFlightExplain::landingAndBounce()
     QVERIFY(std::abs(resultOf(e, "Why now: the flight lands", "apex") - (z0 + vz0 * vz0 / (2.0 * g))) < 1e-15);
     QVERIFY(std::abs(resultOf(e, "Why now: the flight lands", "t") - ev.time) < 1e-12);
     QVERIFY(std::abs(resultOf(e, "Why now: the flight lands", "w") - w) < 1e-12);
+    // The chart's time of impact: the height's quadratic, zero at the chosen root, falling there.
+    QVERIFY(e.toi.has_value());
+    QVERIFY(std::abs(e.toi->t0 + e.toi->root - ev.time) < 1e-12);
+    QVERIFY(std::abs(e.toi->at(0.0) - z0) < 1e-15);
+    QVERIFY(std::abs(e.toi->at(e.toi->root)) < 1e-12);
+    QVERIFY(std::abs(e.toi->slopeAt(e.toi->root) + w) < 1e-12);
+    QCOMPARE(e.toi->roots.size(), std::size_t(2));
+    QVERIFY(e.toi->roots.front().tau < 0.0 && e.toi->roots.back().chosen);
     QVERIFY(std::abs(ev.approachSpeed - w) < 1e-12);
     QVERIFY(std::abs(resultOf(e, "The bounce", "vz_after") - et * w) < 1e-12);
     QVERIFY(std::abs(resultOf(e, "The bounce", "Pn") - (1.0 + et) * setup.balls[0].mass * w) < 1e-12);

@@ -39,7 +39,7 @@ void ToiChart::setExplanation(const explain::Explanation* e)
     double span = toi.root > 0.0 ? 2.0 * toi.root : 0.05;
     if (std::isfinite(toi.horizon) && toi.horizon > 0.0) span = std::min(span, toi.horizon);
     tauMax_ = span;
-    const bool linear = e->kind == EventKind::BallCushion;
+    const bool linear = e->kind == EventKind::BallCushion || e->kind == EventKind::BallTable;  // a distance, m
     c->setTitle(tr("f(τ) from t₀ = %1 s").arg(toi.t0, 0, 'g', 6));
 
     auto* curve = new QLineSeries;
