@@ -218,10 +218,15 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area, const Figu
     const QFontMetricsF metrics(p.font());
     const double line = metrics.height();
     p.setPen(palette.color(QPalette::Text));
-    p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft, tr("Energy (J)"));
-    // Rows: title, the totals, the bars, "before"/"after", the key (three lines), ΔE.
+    const QString title = tr("Energy (J)");
+    p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignLeft, title);
+    // Rows: title, the totals, the bars, "before"/"after", the key (three lines), ΔE. In a short area
+    // (the stacked figures of a window 800 px high) ΔE moves up beside the title, so that the bars keep
+    // some height and nothing is drawn over the key.
+    const bool compact = area.height() < 7 * line + 50;
+    const int rows = compact ? 6 : 7;
     const QRectF values(area.left(), area.top() + line + 2, area.width(), line);
-    const QRectF body(area.left(), values.bottom() + 2, area.width(), std::max(10.0, area.height() - 7 * line - 10));
+    const QRectF body(area.left(), values.bottom() + 2, area.width(), std::max(10.0, area.height() - rows * line - 10));
     double totals[2] = {0.0, 0.0};
     for (const explain::Body& b : f.bodies) {
         totals[0] += b.translationBefore + b.rotationBefore;
@@ -287,8 +292,15 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area, const Figu
         p.drawText(QRectF(area.left() + 13, y, area.width() - 13, line), Qt::AlignLeft,
                    metrics.elidedText(lossKeys[part], Qt::ElideRight, area.width() - 13));
     }
-    p.drawText(QRectF(area.left(), area.bottom() - line, area.width(), line), Qt::AlignCenter,
-               energyChange(totals[0], totals[1]));
+    const QString change = energyChange(totals[0], totals[1]);
+    if (compact) {
+        const double after = metrics.horizontalAdvance(title) + 12.0;
+        const double room = std::max(0.0, area.width() - after);
+        p.drawText(QRectF(area.left() + after, area.top(), room, line), Qt::AlignRight,
+                   metrics.elidedText(change, Qt::ElideRight, room));
+    } else {
+        p.drawText(QRectF(area.left(), area.bottom() - line, area.width(), line), Qt::AlignCenter, change);
+    }
 }
 
 }  // namespace cuelab
