@@ -52,19 +52,23 @@ void explainCueStrike(const SimulationResult& r, int index, const std::optional<
         .in("I", "I", t.inertia, "kg m²")
         .out("lever2", "|Q × e|^2", t.lever2, "m²")
         .out("F", "F", t.impulse, "N s");
+    // The strike kept its vertical part (SimulationOptions::strikeKeepsElevation) when it changed vz:
+    // the ball is driven into the cloth, which answers at once (the next event, a bounce at t = 0).
+    const bool intoCloth = ev.after[0].vz != ev.before[0].vz;
     StepBuilder(e.steps, Text::tr("Velocity and spin after the strike"),
-                Text::tr("The impulse F e moves the centre (its vertical part is taken up by the cloth) and its torque "
-                         "Q × F e about the centre spins the ball: top spin for b > 0, right english (ω_z > 0) for "
-                         "a > 0. The ball leaves %1.")
+                (intoCloth ? Text::tr("The impulse F e moves the centre (its vertical part drives the ball into the cloth: "
+                                      "the next step) and its torque Q × F e about the centre spins the ball: top spin "
+                                      "for b > 0, right english (ω_z > 0) for a > 0. The ball leaves %1.")
+                           : Text::tr("The impulse F e moves the centre (its vertical part is taken up by the cloth) and its "
+                                      "torque Q × F e about the centre spins the ball: top spin for b > 0, right english "
+                                      "(ω_z > 0) for a > 0. The ball leaves %1."))
                     .arg(Text::name(std::string(toString(ev.after[0].motion)))),
                 "v′ = v + (F cos θ / m) d,   ω′ = ω + Q × (F e) / I")
         .out("v_after", "v′", res.after.velocity, "m/s")
         .out("w_after", "ω′", res.after.spin, "rad/s")
         .out("J", "J", res.impulse, "N s")
         .out("u_after", "|u′|", slipVelocity(res.after, ball.radius).norm(), "m/s");
-    if (ev.after[0].vz != 0.0) {
-        // The elevated strike keeps its vertical part (SimulationOptions::strikeKeepsElevation): the
-        // ball is driven into the cloth, which answers at once (the next event, a bounce at t = 0).
+    if (intoCloth) {
         const double theta = t.theta;
         StepBuilder(e.steps, Text::tr("The vertical part: into the cloth"),
                     Text::tr("An elevated cue (θ > 0) also pushes the ball down: the impulse F e has the vertical part "

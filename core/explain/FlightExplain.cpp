@@ -12,14 +12,26 @@ namespace cuelab::explain::detail {
 
 namespace {
 
-// The ball's segment that ends at the event (t): the last one begun strictly before t. (A landing
-// begins its bounce series at t with the very state it lands with, so segmentBefore's matching of
-// states cannot tell the two apart.)
-SegmentBefore segmentEndingAt(const SimulationResult& r, int ball, double t)
+// The flight that lands at the event (t, coming down at w): the latest flight begun at or before t
+// whose parabola lands at t at that speed (a rebound shorter than the clock's resolution begins and
+// lands at t itself), else (or for w <= 0) the last segment begun strictly before t. (A landing begins its bounce
+// series at t with the very state it lands with, so segmentBefore's matching of states cannot tell
+// the flight from the series.)
+SegmentBefore segmentEndingAt(const SimulationResult& r, int ball, double t, double w, double g)
 {
     const std::vector<MotionSegment>& timeline = r.timelines.at(static_cast<std::size_t>(ball));
     std::size_t k = 0;
     for (std::size_t q = 0; q < timeline.size() && timeline[q].start < t; ++q) k = q;
+    for (std::size_t q = w > 0.0 ? timeline.size() : 0; q-- > 0;) {
+        const MotionSegment& m = timeline[q];
+        if (m.start > t || m.bounces || m.state.motion != MotionState::Airborne) continue;
+        const double landing = std::sqrt(m.state.vz * m.state.vz + 2.0 * g * m.state.z);
+        const double lands = m.start + (m.state.vz + landing) / g;
+        if (std::abs(landing - w) <= 1e-9 * std::max(1.0, w) && std::abs(lands - t) <= 1e-9 * std::max(1.0, t)) {
+            k = q;
+            break;
+        }
+    }
     SegmentBefore s;
     s.start = timeline.at(k).start;
     s.state = timeline[k].state;
@@ -82,7 +94,7 @@ void explainBallTable(const SimulationResult& r, int index, Explanation& e)
     if (w <= 0.0) {
         // The limit of a summed series: the ball arrives with z = vz = 0 and the event changes nothing.
         e.title = Text::tr("The bounces of ball %1 end").arg(ball.id);
-        const SegmentBefore seg = segmentEndingAt(r, i, ev.time);
+        const SegmentBefore seg = segmentEndingAt(r, i, ev.time, 0.0, g);  // (no flight: the series begun before t)
         const double w0 = -seg.state.vz;  // the series' first landing speed
         const double duration = w0 > 0.0 && et < 1.0 ? 2.0 * w0 * et / (g * (1.0 - et)) : 0.0;
         StepBuilder(e.steps, Text::tr("Why now: the sum of the bounces"),
@@ -116,7 +128,7 @@ void explainBallTable(const SimulationResult& r, int index, Explanation& e)
             .in("vz", "v_z", before.vz, "m/s")
             .out("w", "w", w, "m/s");
     } else {
-        addLandingStep(e, segmentEndingAt(r, i, ev.time), g);
+        addLandingStep(e, segmentEndingAt(r, i, ev.time, w, g), g);
     }
 
     // The bounce: the model's impulse law (resolve/TableModels.h), read off the event.
@@ -125,11 +137,20 @@ void explainBallTable(const SimulationResult& r, int index, Explanation& e)
     const Vec2 tangential = ev.impulse.head<2>();
     const bool settles = after.vz == 0.0 && after.z == 0.0;  // a rebound shorter than the clock resolves
     StepBuilder(e.steps, Text::tr("The bounce"),
-                Text::tr("The cloth pushes the ball up with the normal impulse P_n that sends it off at e_t times its "
-                         "landing speed, and its friction acts on the slip u = v + R (z × ω) of the contact point with "
-                         "at most μ_t P_n (the slip stops first if it is small: then 2/7 m |u| is enough). The "
-                         "friction P_t changes v by P_t/m and ω by R (−z × P_t)/I, I = 2/5 m R²."),
-                "v_z′ = e_t w,   P_n = (1 + e_t) m w,   |P_t| = min(μ_t P_n, (2/7) m |u|)")
+                settles ? Text::tr("The cloth stops the ball's fall: this bounce and all the ones after it, too short for "
+                                   "the clock to tell apart, are taken at once. Together they change the vertical "
+                                   "momentum by P_n = m w (the cloth's impulses, (1 + e_t)/(1 − e_t) m w in all, less "
+                                   "gravity's over their time), and their friction on the slip u = v + R (z × ω) of the "
+                                   "contact point adds up to at most μ_t (1 + e_t)/(1 − e_t) m w (the slip stops first if "
+                                   "it is small: then 2/7 m |u| is enough). The friction P_t changes v by P_t/m and ω by "
+                                   "R (−z × P_t)/I, I = 2/5 m R².")
+                        : Text::tr("The cloth pushes the ball up with the normal impulse P_n that sends it off at e_t "
+                                   "times its landing speed, and its friction acts on the slip u = v + R (z × ω) of the "
+                                   "contact point with at most μ_t P_n (the slip stops first if it is small: then "
+                                   "2/7 m |u| is enough). The friction P_t changes v by P_t/m and ω by R (−z × P_t)/I, "
+                                   "I = 2/5 m R²."),
+                settles ? "v_z′ = 0,   P_n = m w,   |P_t| = min(μ_t (1 + e_t) m w / (1 − e_t), (2/7) m |u|)"
+                        : "v_z′ = e_t w,   P_n = (1 + e_t) m w,   |P_t| = min(μ_t P_n, (2/7) m |u|)")
         .in("w", "w", w, "m/s")
         .in("e_t", "e_t", et)
         .in("mu_t", "μ_t", mu)

@@ -1,6 +1,7 @@
 #include "Curves.h"
 
 #include "Event.h"
+#include "Flight.h"
 #include "Motion.h"
 
 #include <algorithm>
@@ -205,8 +206,9 @@ std::vector<TablePiece> sampleTable(const SimulationResult& result, const Sampli
 
 double energyPutIn(const SimulationResult& result, double t)
 {
+    // (The setup's balls' mechanical energy: a ball given a height brings m g z as well.)
     double sum = 0.0;
-    for (const Ball& b : result.balls) sum += kineticEnergy(b.state, b.radius, b.mass);
+    for (const Ball& b : result.balls) sum += mechanicalEnergy(b.state, b.radius, b.mass, result.physics.gravity);
     for (const Event& e : result.events) {
         if (e.time > t) break;
         if (e.kind != EventKind::CueStrike) continue;
@@ -224,7 +226,9 @@ double energyLostToEvents(const SimulationResult& result, double t)
         if (e.kind == EventKind::CueStrike) continue;
         for (std::size_t k = 0; k < 2 && e.balls[k] >= 0; ++k) {
             const Ball& b = result.balls.at(static_cast<std::size_t>(e.balls[k]));
-            sum += kineticEnergy(e.before[k], b.radius, b.mass) - kineticEnergy(e.after[k], b.radius, b.mass);
+            // (An event keeps the height but for a ball leaving play: its m g z leaves with it.)
+            const double g = result.physics.gravity;
+            sum += mechanicalEnergy(e.before[k], b.radius, b.mass, g) - mechanicalEnergy(e.after[k], b.radius, b.mass, g);
         }
     }
     return sum;
@@ -282,6 +286,19 @@ std::vector<Polyline> ballCurve(const SimulationResult& result, int index, Quant
     return curve;
 }
 
+namespace {
+
+// The table's kinetic energy plus the potential energy m g z of balls in flight, J.
+double mechanicalTotal(const SimulationResult& result, const std::vector<BallState>& states)
+{
+    double sum = 0.0;
+    for (std::size_t i = 0; i < states.size() && i < result.balls.size(); ++i)
+        sum += mechanicalEnergy(states[i], result.balls[i].radius, result.balls[i].mass, result.physics.gravity);
+    return sum;
+}
+
+}  // namespace
+
 std::vector<Polyline> tableCurve(const SimulationResult& result, Quantity q, const SamplingOptions& options)
 {
     std::vector<Polyline> curve;
@@ -296,7 +313,7 @@ std::vector<Polyline> tableCurve(const SimulationResult& result, Quantity q, con
             for (const std::vector<BallState>& states : piece.states)
                 line.values.push_back(q == Quantity::EnergyLostToEvents
                                           ? events
-                                          : in - totalOf(Quantity::KineticEnergy, result, states) - events);
+                                          : in - mechanicalTotal(result, states) - events);
         } else {
             for (const std::vector<BallState>& states : piece.states) line.values.push_back(totalOf(q, result, states));
         }

@@ -34,7 +34,8 @@ enum class Quantity : std::uint8_t {
     // The table only (tableCurve; 0 for a single ball): the kinetic energy the events took so far (a
     // collision's restitution and friction, a ball falling into a pocket), and what the cloth took so
     // far (the energy put in by the setup and the cue strike, minus what is left, minus the events'
-    // share). Translation + rotation + the two losses = the energy put in, at every time.
+    // share). Translation + rotation + the two losses = the energy put in, at every time; a ball in
+    // flight also holds the potential energy m g z (counted in these sums, not drawn as a part).
     EnergyLostToEvents,   // J
     EnergyLostToCloth,    // J
     Height,               // z, the centre's height above its resting height, m (0 on the cloth)

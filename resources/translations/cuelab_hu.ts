@@ -2113,7 +2113,7 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     </message>
     <message>
         <source>ball-off-table</source>
-        <translation>leesés az asztalról</translation>
+        <translation>kirepülés az asztalról</translation>
     </message>
 </context>
 <context>
@@ -5502,7 +5502,7 @@ Kimaradt kérdés: %1</translation>
     </message>
     <message>
         <source>The cloth answers the elevated cue: ball %1 bounces</source>
-        <translation>A posztó visszaüt a megemelt dákóra: a(z) %1 golyó pattan</translation>
+        <translation>A posztó felel a megemelt dákós lökésre: a(z) %1 golyó pattan</translation>
     </message>
     <message>
         <source>Ball %1 lands and bounces on the cloth</source>
@@ -5514,7 +5514,7 @@ Kimaradt kérdés: %1</translation>
     </message>
     <message>
         <source>The elevated cue drives the ball down as well as forward: its velocity just after the strike has a downward part w. The ball is on the cloth, so the cloth answers at once, at the same instant.</source>
-        <translation>A megemelt dákó előre és lefelé is hajtja a golyót: a lökés utáni sebességének van egy w lefelé mutató része. A golyó a posztón fekszik, ezért a posztó azonnal, ugyanabban a pillanatban visszaüt.</translation>
+        <translation>A megemelt dákó előre és lefelé is hajtja a golyót: a lökés utáni sebességének van egy w lefelé mutató része. A golyó a posztón fekszik, ezért a posztó azonnal, ugyanabban a pillanatban felel rá.</translation>
     </message>
     <message>
         <source>The bounce</source>
@@ -5571,6 +5571,14 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>τ* is the positive root, where the height falls to 0 (f′(τ*) = −w &lt; 0: the ball comes down); the other root, at or before τ = 0, is where this parabola would have left the cloth.</source>
         <translation>τ* a pozitív gyök, ahol a magasság 0-ra csökken (f′(τ*) = −w &lt; 0: a golyó lefelé jön); a másik gyök, τ = 0-nál vagy előtte, az, ahol ez a parabola elhagyta volna a posztót.</translation>
+    </message>
+    <message>
+        <source>The impulse F e moves the centre (its vertical part drives the ball into the cloth: the next step) and its torque Q × F e about the centre spins the ball: top spin for b &gt; 0, right english (ω_z &gt; 0) for a &gt; 0. The ball leaves %1.</source>
+        <translation>Az F e erőlökés elmozdítja a középpontot (függőleges része a posztóba hajtja a golyót: lásd a következő lépést), a középpontra vett Q × F e forgatónyomatéka pedig megpörgeti a golyót: b &gt; 0 esetén felső pörgés, a &gt; 0 esetén jobb oldalpörgés (ω_z &gt; 0). A golyó ezután %1.</translation>
+    </message>
+    <message>
+        <source>The cloth stops the ball&apos;s fall: this bounce and all the ones after it, too short for the clock to tell apart, are taken at once. Together they change the vertical momentum by P_n = m w (the cloth&apos;s impulses, (1 + e_t)/(1 − e_t) m w in all, less gravity&apos;s over their time), and their friction on the slip u = v + R (z × ω) of the contact point adds up to at most μ_t (1 + e_t)/(1 − e_t) m w (the slip stops first if it is small: then 2/7 m |u| is enough). The friction P_t changes v by P_t/m and ω by R (−z × P_t)/I, I = 2/5 m R².</source>
+        <translation>A posztó megállítja a golyó esését: ezt a pattanást és az összes utána következőt, amelyeket az óra már nem tud szétválasztani, egyszerre veszi. Együtt P_n = m w-vel változtatják meg a függőleges lendületet (a posztó impulzusai összesen (1 + e_t)/(1 − e_t) m w, ebből levonva a gravitációé az idejük alatt), súrlódásuk pedig az érintkezési pont u = v + R (z × ω) csúszására összesen legfeljebb μ_t (1 + e_t)/(1 − e_t) m w (ha a csúszás kicsi, előbb megáll: ehhez 2/7 m |u| elég). A P_t súrlódás v-t P_t/m-mel, ω-t R (−z × P_t)/I-vel változtatja meg, I = 2/5 m R².</translation>
     </message>
 </context>
 </TS>

@@ -100,12 +100,19 @@ void TestFlightExplain::seriesEnd()
     const explain::Explanation e = explain::explain(r, end);
     QCOMPARE(e.title.english(), std::string("The bounces of ball cue end"));
     QVERIFY(std::abs(resultOf(e, "Why now: the sum of the bounces", "t") - r.events[static_cast<std::size_t>(end)].time) < 1e-12);
-    QVERIFY(resultOf(e, "Why now: the sum of the bounces", "duration") > 0.0);
+    // Against the closed form from the drop itself: it lands at sqrt(2 z0 / g) at w = sqrt(2 g z0),
+    // and its bounces last 2 w e / (g (1 - e)) in all.
+    const double g = setup.physics.gravity, et = setup.physics.tableRestitution;
+    const double w = std::sqrt(2.0 * g * 0.05), landing = std::sqrt(2.0 * 0.05 / g);
+    const double total = 2.0 * w * et / (g * (1.0 - et));
+    QVERIFY(std::abs(resultOf(e, "Why now: the sum of the bounces", "duration") - total) < 1e-12);
+    QVERIFY(std::abs(r.events[static_cast<std::size_t>(end)].time - (landing + total)) < 1e-12);
 }
 
 void TestFlightExplain::offTable()
 {
-    // Thrown hard over the left rail from 2 cm away: it clears the nose and leaves the table.
+    // Thrown hard over the left rail from 10 cm away, 6 cm up and rising: it clears the nose and
+    // leaves the table.
     Setup setup = droppedBall(0.06, 1.5);
     setup.balls[0].state.position = Vec2(0.1, 0.6);
     setup.balls[0].state.velocity = Vec2(-3.0, 0.0);
@@ -150,6 +157,12 @@ void TestFlightExplain::elevatedStrike()
 
     const SimulationResult level = simulate(setup);
     QVERIFY(!explain::explain(level, 0, shot).step("The vertical part: into the cloth"));
+    // A struck ball already flying (a setup may give it vz) keeps its vz when the strike drops its
+    // vertical part: no step says it went into the cloth.
+    setup.balls[0] = flyingBall("cue", 0.6, 0.6, 0.01, 0.4);
+    const SimulationResult thrown = simulate(setup);
+    QCOMPARE(thrown.events[0].after[0].vz, 0.4);
+    QVERIFY(!explain::explain(thrown, 0, shot).step("The vertical part: into the cloth"));
 }
 
 QTEST_GUILESS_MAIN(TestFlightExplain)

@@ -279,6 +279,15 @@ void TestCurves::heightCurve()
             highest = std::max(highest, z);
         }
     QVERIFY2(highest <= apex && highest > apex - 1e-4, qPrintable(QString::number(apex - highest)));
+    // In flight the cloth takes nothing: its share of the energy (put in, less the kinetic and the
+    // potential energy m g z, less the bounces') never falls and stays 0 until the first landing.
+    double taken = 0.0;
+    for (const Polyline& line : tableCurve(r, Quantity::EnergyLostToCloth))
+        for (std::size_t k = 0; k < line.values.size(); ++k) {
+            QVERIFY2(line.values[k] >= taken - 1e-15, qPrintable(QStringLiteral("%1 at %2").arg(line.values[k]).arg(line.times[k])));
+            if (line.times[k] < r.events.front().time) QVERIFY(std::abs(line.values[k]) < 1e-15);
+            taken = std::max(taken, line.values[k]);
+        }
     const std::vector<Polyline> vz = ballCurve(r, 0, Quantity::VerticalSpeed);
     QVERIFY(!vz.empty());
     QCOMPARE(vz.front().values.front(), 0.5);

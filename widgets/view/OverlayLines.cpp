@@ -109,7 +109,9 @@ void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out
             if (isOutOfPlay(seg.state.motion)) break;
             const double end = k + 1 < timeline.size() ? timeline[k + 1].start : result.endTime;
             if (end <= seg.start) continue;
-            if (seg.state.velocity.squaredNorm() < 1e-20 && seg.push.isZero(0.0)) continue;  // no travel (resting or spinning)
+            // No travel (resting or spinning); a flight straight up and down still has a height to show.
+            if (seg.state.velocity.squaredNorm() < 1e-20 && seg.push.isZero(0.0) && seg.state.motion != MotionState::Airborne)
+                continue;
             // Rolling and uniform motion go straight; sliding curves (a parabola), so sample it. A
             // flight is a parabola in height too, often only milliseconds long (a bounce): never
             // fewer than kFlightSamples samples, so that each hop shows as an arc.
@@ -183,7 +185,7 @@ void buildGhostLines(const SimulationResult& result, std::vector<LineVertex>& ou
         segment(out, at(a, r + ev.before[0].z), at(b + 0.18 * dir, r + ev.before[1].z), QVector4D(0.95f, 0.95f, 0.95f, 0.85f),
                 time);
         // The contact normal at the contact point.
-        const QVector3D contact = at(ev.contactPoint, r);
+        const QVector3D contact = at(ev.contactPoint, r + 0.5 * (ev.before[0].z + ev.before[1].z));
         const QVector3D n = at(ev.normal, 0.0);
         arrow(out, contact, contact + 0.07f * n, QVector3D(-n.y(), n.x(), 0.0f), QVector4D(1.0f, 0.35f, 0.3f, 1.0f), time);
     }
