@@ -321,8 +321,13 @@ void TestTableView::settlesAfterTheCameraMoves()
     // The moved frame, then the antialiased one (a loaded machine may add a frame or two while the
     // camera's move is timed); then nothing more: the view is still again.
     QTRY_VERIFY_WITH_TIMEOUT(frames.size() >= 2, 3000);
-    QTest::qWait(500);
-    const qsizetype settled = frames.size();
+    // Settled: no new frame for half a second (a loaded machine, ctest -j2 beside the soak tests, may
+    // deliver the antialiased frame late; it is waited for up to 5 s, never counted as a failure).
+    qsizetype settled = -1;
+    for (int round = 0; round < 10 && settled != frames.size(); ++round) {
+        settled = frames.size();
+        QTest::qWait(500);
+    }
     QVERIFY2(settled <= 4, qPrintable(QString::number(settled)));
     QTest::qWait(500);
     QCOMPARE(frames.size(), settled);
