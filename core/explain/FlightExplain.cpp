@@ -1,7 +1,10 @@
 // A ball off the cloth (issue 23): the flight that lands, the bounce on the cloth, the closed-form
 // sum of the bounces that follow, and a ball that leaves the table. The numbers are the event's and
 // the simulator's own (BounceSeries.h, TableModels.h); the steps derive them for a reader.
+#include "BounceSeries.h"
+#include "Flight.h"
 #include "Motion.h"
+#include "Simulation.h"
 #include "Parts.h"
 #include "resolve/TableModel.h"
 
@@ -25,8 +28,8 @@ SegmentBefore segmentEndingAt(const SimulationResult& r, int ball, double t, dou
     for (std::size_t q = w > 0.0 ? timeline.size() : 0; q-- > 0;) {
         const MotionSegment& m = timeline[q];
         if (m.start > t || m.bounces || m.state.motion != MotionState::Airborne) continue;
-        const double landing = std::sqrt(m.state.vz * m.state.vz + 2.0 * g * m.state.z);
-        const double lands = m.start + (m.state.vz + landing) / g;
+        const double landing = landingSpeed(m.state, g);
+        const double lands = m.start + landingTime(m.state, g);
         if (std::abs(landing - w) <= 1e-9 * std::max(1.0, w) && std::abs(lands - t) <= 1e-9 * std::max(1.0, t)) {
             k = q;
             break;
@@ -44,10 +47,11 @@ SegmentBefore segmentEndingAt(const SimulationResult& r, int ball, double t, dou
 // segment, landing at the positive root (the simulator's landing time, Flight.h).
 void addLandingStep(Explanation& e, const SegmentBefore& seg, double g)
 {
+    // (The simulator's own closed forms, Flight.h.)
     const double z0 = seg.state.z, vz0 = seg.state.vz;
-    const double w = std::sqrt(vz0 * vz0 + 2.0 * g * z0);  // the landing speed
-    const double tau = (vz0 + w) / g;
-    const double apex = vz0 > 0.0 ? z0 + vz0 * vz0 / (2.0 * g) : z0;
+    const double w = landingSpeed(seg.state, g);
+    const double tau = landingTime(seg.state, g);
+    const double apex = apexHeight(seg.state, g);
     StepBuilder(e.steps, Text::tr("Why now: the flight lands"),
                 Text::tr("Since t_{start} the ball has flown free: gravity alone acts on it (no cloth, so no friction "
                          "and no rolling resistance; its spin does not change), so its centre's height above its "
@@ -96,7 +100,8 @@ void explainBallTable(const SimulationResult& r, int index, Explanation& e)
         e.title = Text::tr("The bounces of ball %1 end").arg(ball.id);
         const SegmentBefore seg = segmentEndingAt(r, i, ev.time, 0.0, g);  // (no flight: the series begun before t)
         const double w0 = -seg.state.vz;  // the series' first landing speed
-        const double duration = w0 > 0.0 && et < 1.0 ? 2.0 * w0 * et / (g * (1.0 - et)) : 0.0;
+        // The simulator's own sum (BounceSeries.h), whose end this event is.
+        const double duration = bounceSeriesOf(seg.state, R, p).duration;
         StepBuilder(e.steps, Text::tr("Why now: the sum of the bounces"),
                     Text::tr("At t_{start} the ball landed at w and nothing could meet it before its bounces die out, "
                              "so the simulator summed them instead of taking each as an event. Bounce j sends it up at "
