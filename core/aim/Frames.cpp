@@ -71,7 +71,11 @@ EnergyParts energyParts(const SimulationResult& result, int index)
         e.rotation = rotationalEnergy(ev.after[k], ball.radius, ball.mass);
         e.translationBefore = translationalEnergy(ev.before[k], ball.mass);
         e.rotationBefore = rotationalEnergy(ev.before[k], ball.radius, ball.mass);
-        e.previous = kineticEnergy(previous, ball.radius, ball.mass);
+        // A ball that flew since then turned height into speed (or speed into height): the energy it
+        // had counts m g (z_previous - z_before) too, so the cloth's share is what it really took
+        // (nothing over a flight). For a ball on the cloth both heights are 0: its kinetic energy.
+        e.previous = kineticEnergy(previous, ball.radius, ball.mass) +
+                     ball.mass * result.physics.gravity * (previous.z - ev.before[k].z);
         e.lostToEvent = e.before() - e.after();
         e.lostToCloth = e.previous - e.before();
         parts.translation += e.translation;

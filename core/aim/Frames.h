@@ -48,7 +48,7 @@ struct BallEnergy {
     double rotationBefore = 0.0;     // J
     double lostToEvent = 0.0;      // J, just before − just after (negative: the ball gained)
     double lostToCloth = 0.0;      // J, since the ball's previous event (>= 0: the cloth only takes)
-    double previous = 0.0;         // J, just after the ball's previous event (or as set up)
+    double previous = 0.0;         // J, just after the ball's previous event (or as set up), + m g (z_prev - z) if it flew
     double after() const { return translation + rotation; }
     double before() const { return translationBefore + rotationBefore; }
 };

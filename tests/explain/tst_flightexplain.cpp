@@ -3,6 +3,7 @@
 // leaves the table. Every figure is checked against the closed forms of PHYSICS.md.
 
 #include "Explain.h"
+#include "Frames.h"
 #include "FlyingBall.h"
 #include "Simulation.h"
 
@@ -74,6 +75,9 @@ void TestFlightExplain::landingAndBounce()
     QCOMPARE(e.toi->roots.size(), std::size_t(2));
     QVERIFY(e.toi->roots.front().tau < 0.0 && e.toi->roots.back().chosen);
     QVERIFY(std::abs(ev.approachSpeed - w) < 1e-12);
+    // The energy figure: in flight the cloth takes nothing (the height became speed, m g z0).
+    const aim::EnergyParts energy = aim::energyParts(r, k);
+    QVERIFY2(std::abs(energy.lostToCloth) < 1e-15, qPrintable(QString::number(energy.lostToCloth)));
     QVERIFY(std::abs(resultOf(e, "The bounce", "vz_after") - et * w) < 1e-12);
     QVERIFY(std::abs(resultOf(e, "The bounce", "Pn") - (1.0 + et) * setup.balls[0].mass * w) < 1e-12);
     QVERIFY(std::abs(resultOf(e, "The next flight", "apex") - et * et * w * w / (2.0 * g)) < 1e-12);
