@@ -10,6 +10,9 @@
 // fails here as an event limit in seconds instead of running to 200 000. The most a row takes is
 // about 11 100 (seed7-shot33579: a cue ball at 0.46 m/s into a frozen cluster, whose wave of
 // contacts takes some 10 800 events over 115 microseconds before the balls part or are held).
+// seed17-shot18364 hit the cap with a cascade of 15 000 events in 7 microseconds in a frozen cluster
+// (a contact let go at one solve of its group and pressed again by the next); seed23-shot145064 took
+// 47 142 events and a minute to bring a frozen cluster to rest (docs/sustained-contact.md).
 //
 // Issue 23's repros, fixtures/repros/airborne/*.json, are elevated strikes of the soak (class
 // elevated, seed 7) run with the strike keeping its vertical part (SimulationOptions::
@@ -18,7 +21,9 @@
 // 265 and 422 met a jaw tip's rim or top, shots 586, 1125 and 2628 entered a rail's body through its
 // end from over a pocket, shot 1747 landed past a pocket (no cloth there); seed7-shot2987-rail is
 // the default classes' shot 2987 (a rail shot with elevation), which flew from a pocket's mouth
-// over the rail far from the rail's segment (the broad phase looked only near the segment).
+// over the rail far from the rail's segment (the broad phase looked only near the segment);
+// seed7-shot386-default-classes is a frozen cluster struck by a flying ball whose members hopped
+// 1e-15 m on the frictional law's vertical throw and skipped the cloth's held contacts.
 
 #include "RunChecks.h"
 
@@ -63,7 +68,16 @@ void TestRepros::repro_data()
 #else
     constexpr int kEvery = 1;
 #endif
-    for (int k = 0; k < files.size(); k += kEvery) QTest::newRow(qPrintable(files[k])) << files[k] << QStringList();
+    QStringList run;
+    for (const QString& f : files) {
+#if defined(__SANITIZE_ADDRESS__) || !defined(NDEBUG)
+        // (A file named *-slow.json was filed for its time, not a fault: seed23-shot145064 takes
+        // about six seconds of held-group solves optimised, minutes unoptimised under the sanitizers.)
+        if (f.endsWith(QStringLiteral("-slow.json"))) continue;
+#endif
+        run.append(f);
+    }
+    for (int k = 0; k < run.size(); k += kEvery) QTest::newRow(qPrintable(run[k])) << run[k] << QStringList();
     // Issue 19, item 5: the cascade of 98 211 events (19 897 hits between balls 9 and 7 in 0.14 s).
     QTest::newRow("break-stronge.json heading=0.5084745762711833 side=-0.25 speed=2")
         << QStringLiteral("break-stronge.json")
