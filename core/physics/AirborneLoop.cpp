@@ -96,14 +96,14 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
 {
     const double R = radius(i);
     const BallState s = stateNow(i, now);
-    const SpacePath sp = flightPath(s, R, p_.gravity);
+    const SpacePath sp = spaceNow(i, now);
     const double landing = end_[at(i)];
     const Box& box = box_[at(i)];
     // It drops into a pocket when its centre comes down to the cloth's level over the pocket's
     // circle (there is no cloth there): at its landing, instead of a bounce. A ball over a pocket
     // higher up flies over it.
     if (landing != kNever) {
-        const Vec2 down = s.position + (landing - now) * s.velocity;
+        const Vec2 down = heldFlight(i) ? Vec2(sp.at(landing - now).head<2>()) : Vec2(s.position + (landing - now) * s.velocity);
         for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
             const Pocket& pk = table_.pockets[k];
             if ((down - pk.centre).squaredNorm() <= pk.radius * pk.radius) {
@@ -114,7 +114,7 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     }
     const double horizon = landing - now;
     for (std::size_t k = 0; k < table_.cushions.size(); ++k) {
-        if (!boxNearSlab(box, R, table_.cushions[k])) continue;
+        if (!boxNearSlab(box, R, table_.cushions[k]) || airEdge_[at(i)] == static_cast<int>(k)) continue;  // (held on its edge)
         const AirCushionContact c = airCushionContact(sp, R, table_.cushions[k], table_.cushionHeight, horizon);
         if (c.kind == CushionContactKind::None || c.time == kNever) continue;
         const Candidate cand{now + c.time, 1, i, Agent::Cushion, static_cast<int>(k)};
@@ -146,10 +146,7 @@ double Simulator::airPairTime(int i, int j, double now) const
     if (!boxesWithin(window_[at(i)], window_[at(j)], ri + rj + kSeriesSlack)) return kNever;
     const double horizon = std::min(horizon_[at(i)], horizon_[at(j)]) - now;
     if (horizon < 0.0) return kNever;
-    auto spaceOf = [&](int b, double r) {
-        return flying(b) ? flightPath(stateNow(b, now), r, p_.gravity) : clothPath(pathNow(b, now), r);
-    };
-    const double s = spaceBallBallTime(spaceOf(i, ri), ri, spaceOf(j, rj), rj, horizon);
+    const double s = spaceBallBallTime(spaceNow(i, now), ri, spaceNow(j, now), rj, horizon);
     return s == kNever ? kNever : now + s;
 }
 
@@ -265,7 +262,8 @@ void Simulator::land(int i, double t)
     // Down at the flight's landing speed, sqrt(vz0^2 + 2 g z0) from its start (exactly -vz0 from the
     // cloth): a flight shorter than the clock's resolution at t (a tiny rebound) lands at t itself,
     // where evolve has not turned it down yet.
-    landing.vz = -landingSpeed(state_[at(i)], p_.gravity);
+    // (A held flight comes down under g less its push's vertical part.)
+    landing.vz = -landingSpeed(state_[at(i)], p_.gravity - pushZ_[at(i)]);
     landing.motion = MotionState::Airborne;
     Event e;
     e.kind = EventKind::BallTable;
@@ -389,6 +387,35 @@ void Simulator::airCushion(const Candidate& c, Event& e)
     const FixedImpactResult res = resolveFixedImpact(before, R, mass(i), normal, p_.cushionRestitution, p_.cushionFriction);
     e.after[0] = res.after;
     e.after[0].motion = classify(e.after[0], R);
+    // A bounce on a nose edge that leaves the ball parting slower than kHoldSpeed while gravity
+    // presses it on: it would bounce ever lower (a Zeno run of impacts that the clock cannot resolve).
+    // The edge holds it instead (AirHold.cpp), the rebound taken away (which only removes energy), as
+    // the cloth's hold rule does for a collision on the cloth.
+    if (c.agent == Agent::Cushion && airContact_[at(i)].kind == CushionContactKind::Nose && e.after[0].motion == MotionState::Airborne) {
+        const double separation = Vec3(e.after[0].velocity.x(), e.after[0].velocity.y(), e.after[0].vz).dot(normal);
+        if (separation < kHoldSpeed) {
+            BallState seated = e.after[0];
+            if (separation > 0.0) {
+                seated.velocity -= separation * normal.head<2>();
+                seated.vz -= separation * normal.z();
+            }
+            const std::size_t index = r_.events.size();
+            Event held = e;
+            held.after[0] = seated;
+            held.held = true;
+            const Vec2 flat = normal.head<2>();
+            held.normal = flat.norm() > 0.0 ? Vec2(-flat.normalized()) : Vec2(Vec2::Zero());
+            held.contactPoint = before.position - R * flat;
+            held.approachSpeed = res.approachSpeed;
+            held.impulse = res.impulse - mass(i) * std::max(0.0, separation) * normal;
+            r_.events.push_back(held);
+            if (airEdgeHold(i, c.index, e.time, seated)) {
+                r_.events[index].after[0] = state_[at(i)];
+                return;
+            }
+            r_.events.pop_back();
+        }
+    }
     const Vec2 flat = normal.head<2>();
     e.normal = flat.norm() > 0.0 ? Vec2(-flat.normalized()) : Vec2(Vec2::Zero());
     e.contactPoint = before.position - R * flat;
@@ -406,6 +433,30 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
     // The line of centres is tilted: both balls free in 3-D, and a ball on the cloth driven into it
     // answered by the cloth at once (AirImpacts.h).
     const AirBallBallResult res = resolveAirBallBall(e.before[0], radius(i), mass(i), e.before[1], radius(j), mass(j), p_);
+    // Touching with no approach while gravity presses the flying ball on the other (a ball sliding
+    // down a ball's side): the law gives no impulse and the same contact would be met again at this
+    // instant, for ever. The pair is held instead (AirHold.cpp): the event marks where the hold
+    // begins and changes no velocity.
+    if (res.approachSpeed <= kRestingSpeed && res.impulse.isZero(0.0)) {
+        const int a = flying(i) ? i : j, b = a == i ? j : i;
+        if (airHoldable(a, b)) {
+            e.after[0] = e.before[0];
+            e.after[1] = e.before[1];
+            e.normal = res.normal.head<2>().norm() > 0.0 ? Vec2(res.normal.head<2>().normalized()) : Vec2(Vec2::Zero());
+            e.contactPoint = e.before[0].position + radius(i) * res.normal.head<2>();
+            e.approachSpeed = res.approachSpeed;
+            e.held = true;  // (with no hold impulse: a pressed pair may part by a few nm/s, Detection.h)
+            const std::size_t index = r_.events.size();
+            r_.events.push_back(e);
+            if (airHold(a, b, e.time, true)) {
+                r_.events[index].after[0] = state_[at(i)];
+                r_.events[index].after[1] = state_[at(j)];
+                return;
+            }
+            r_.events.pop_back();
+            e.held = false;
+        }
+    }
     e.after[0] = res.a;
     e.after[1] = res.b;
     e.after[0].motion = classify(e.after[0], radius(i));

@@ -72,6 +72,11 @@ inline constexpr double kTurnSpeedError = 1e-7;
 // resistance acts against the push, not along a velocity that is rounding).
 inline constexpr double kRollOffSpeed = 1e-9;
 
+// m: a held ball's slip so small that the cloth would end it within this distance
+// (|u|^2 <= 2 * 3.5 mu_s g * this) is rolled out when its contacts are solved (HeldContacts.cpp,
+// AirHold.cpp): its direction, and the friction's, would be rounding.
+inline constexpr double kSlipRollOutLength = 1e-12;
+
 // s: the longest held segment (the group is solved again at least this often).
 inline constexpr double kMaxHeldSegment = 0.25;
 

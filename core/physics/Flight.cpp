@@ -57,6 +57,31 @@ double landingTime(const AirState& s, double gravity)
     return s.vz >= 0.0 ? (s.vz + w) / gravity : 2.0 * z / (w - s.vz);
 }
 
+SpacePath heldFlightPath(const AirState& s, double radius, double gravity, const Vec3& push)
+{
+    SpacePath path = flightPath(s, radius, gravity);
+    path.c2 += 0.5 * push;
+    return path;
+}
+
+double heldLandingTime(const AirState& s, double gravity, const Vec3& push)
+{
+    return landingTime(s, gravity - push.z());
+}
+
+AirState flyHeld(const AirState& s, double gravity, const Vec3& push, double dt)
+{
+    if (dt <= 0.0) return s;
+    const double tl = heldLandingTime(s, gravity, push);
+    const double tau = std::min(dt, tl);
+    AirState out = fly(s, gravity - push.z(), tau);
+    out.position += (0.5 * tau * tau) * push.head<2>();
+    out.velocity += tau * push.head<2>();
+    if (dt >= tl) out.z = 0.0;
+    out.z = std::max(0.0, out.z);
+    return out;
+}
+
 double apexTime(const AirState& s, double gravity)
 {
     if (!(gravity > 0.0)) return s.vz > 0.0 ? kNever : 0.0;

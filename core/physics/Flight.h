@@ -59,6 +59,16 @@ double landingSpeed(const AirState& s, double gravity);
 double apexTime(const AirState& s, double gravity);
 double apexHeight(const AirState& s, double gravity);
 
+// A flying ball held against a body (a ball on the cloth it slides down; docs/airborne.md, "Held in
+// the air"): besides gravity it carries over its segment a constant contact force per unit mass
+// `push` (m/s^2, 3-D), so its path is still a quadratic, c2 = (push - g z)/2, and its landing the root
+// of z + vz t + (push_z - g) t^2 / 2 = 0 (landingTime with the gravity g - push_z; kNever when the push
+// holds it up). A zero push gives exactly the free flight above.
+SpacePath heldFlightPath(const AirState& s, double radius, double gravity, const Vec3& push);
+double heldLandingTime(const AirState& s, double gravity, const Vec3& push);
+// The state dt later, held at the landing (z = 0 there and after), as evolve holds a free flight.
+AirState flyHeld(const AirState& s, double gravity, const Vec3& push, double dt);
+
 // Kinetic energy (translation in 3-D and rotation) plus the potential energy m g z above the resting
 // height (J): constant in flight.
 double mechanicalEnergy(const AirState& s, double radius, double mass, double gravity);

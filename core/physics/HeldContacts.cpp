@@ -3,14 +3,13 @@
 
 #include "Simulator.h"
 
+#include "CircleLimits.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace cuelab::detail {
 
-namespace {
-constexpr double kSlipRollOutLength = 1e-12;  // m: the way a tiny slip would still go before the cloth ends it
-}  // namespace
 
 
 bool Simulator::heldPair(int i, int j) const
@@ -48,59 +47,6 @@ bool pushedTransitionKind(MotionState before, MotionState after, EventKind& kind
     }
     return false;
 }
-
-namespace {
-
-// The first s > 0 at which c0 + c1 s + c2 s^2 = target (kNever if none).
-double firstCrossing(double c0, double c1, double c2, double target)
-{
-    const double a = c2, b = c1, c = c0 - target;
-    double best = kNever;
-    auto take = [&](double s) {
-        if (s > 0.0 && s < best) best = s;
-    };
-    if (a == 0.0) {
-        if (b != 0.0) take(-c / b);
-        return best;
-    }
-    const double disc = b * b - 4.0 * a * c;
-    if (disc < 0.0) return best;
-    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-    if (q != 0.0) take(c / q);
-    take(q / a);
-    return best;
-}
-
-// How long a held circle contact (ball-ball or ball-jaw) may keep its frozen normal, from the
-// relative path rel0 + rel1 s + rel2 s^2 of the other centre and the touching distance D:
-// `gap`, until the distance grows by kSegmentGap or the normal turns by kMaxTurn; `drop`, until the
-// tangential motion falls behind the curvature allowance of the held forces (kNever if it does not
-// slow down).
-struct CircleLimits {
-    double gap = kNever, drop = kNever;
-};
-
-CircleLimits circleLimits(const Vec2& rel0, const Vec2& rel1, const Vec2& rel2, double D)
-{
-    CircleLimits out;
-    const Vec2 n = rel0.normalized();
-    const double W = (rel1 - rel1.dot(n) * n).norm();
-    const double A = 2.0 * (rel2 - rel2.dot(n) * n).norm();
-    // The frozen normal lets the pair's distance grow by |tangential displacement|^2 / (2 D):
-    // at most kSegmentGap per segment, and the normal turns by at most kMaxTurn.
-    const double target = std::min(kMaxTurn * D, std::sqrt(2.0 * D * kSegmentGap));
-    if (A > 0.0) out.gap = (-W + std::sqrt(W * W + 2.0 * A * target)) / A;
-    else if (W > 0.0) out.gap = target / W;
-    // The held forces take kHeldCurvatureShare of the curvature |v_t|^2 / D, so the normal gives
-    // way by share |v_t|^2 s^2 / (2 D) over the segment, and the tangential displacement must keep
-    // ahead of it: its mean speed |v_t + a_t s / 2| may fall to sqrt(share) |v_t| at most (then the
-    // distance never drops below D: |d|^2 = (D - h s^2)^2 + s^2 |v_t + a_t s / 2|^2).
-    const Vec2 vt = rel1 - rel1.dot(n) * n, ht = rel2 - rel2.dot(n) * n;  // ht = a_t / 2
-    if (vt.dot(ht) < 0.0 && ht.norm() > 0.0) out.drop = (1.0 - std::sqrt(kHeldCurvatureShare)) * vt.norm() / ht.norm();
-    return out;
-}
-
-}  // namespace
 
 double Simulator::turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts) const
 {
@@ -169,7 +115,7 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             rel2 = -pa.c2;
             D = radius(h.a) + jaw.radius;
         }
-        const CircleLimits l = circleLimits(rel0, rel1, rel2, D);
+        const CircleLimits l = circleLimits<Vec2>(rel0, rel1, rel2, D);
         limit = std::min(limit, l.gap);
         if (!h.flat) limit = std::min(limit, l.drop);  // (a flat contact's forces allow no curvature)
     }
@@ -238,7 +184,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         grid_.forEachNear(b, near, [&](int j) { found.push_back(j); });
         std::sort(found.begin(), found.end());
         for (int j : found) {
-            if (isHeld(b, j) || candidatePair(b, j)) continue;
+            if (isHeld(b, j) || candidatePair(b, j) || airHeld_[at(j)] >= 0) continue;  // (held in the air: AirHold.cpp)
             const HeldContact c{std::min(b, j), ContactBody::Ball, std::max(b, j), -1.0};  // (since: not held yet)
             if (std::find(touching.begin(), touching.end(), c) != touching.end()) continue;
             const BallState sj = stateAt(j);
@@ -392,6 +338,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     bool seat = false;
     for (double vn : normalSpeeds) seat = seat || std::abs(vn) > 1e-14;  // m/s: rounding is left alone
     std::vector<char> parting(links.size(), 0);
+    std::vector<char> seatedThrough(links.size(), 0);  // a touching, unheld contact the re-seating pushed through
     if (seat) {
         const std::vector<ContactBall> before = balls;
         Seating seating = seatContacts(balls, links, normalSpeeds, heldMask);
@@ -435,7 +382,10 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
                 cb.state.motion = classify(cb.state, cb.radius);
             }
         }
-        for (std::size_t k = 0; k < links.size(); ++k) parting[k] = !heldMask[k] && seating.after[k] > kRestingSpeed;
+        for (std::size_t k = 0; k < links.size(); ++k) {
+            parting[k] = !heldMask[k] && seating.after[k] > kRestingSpeed;
+            seatedThrough[k] = contacts[k].since < 0.0 && seating.impulse[k] != 0.0;
+        }
         if (candidateLink < links.size()) lastCandidateImpulse_ = seating.impulse[candidateLink];
     }
     if (candidateLink < links.size() && !heldMask[candidateLink]) candidateHeld = false;
@@ -476,10 +426,13 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             // (A contact that began to be held at this very instant stays held through it: letting
             // it go would only have it met again at the same instant, over and over.)
             // A touching contact that was not held (since < 0) joins only when the forces press it:
-            // balls rolling side by side stay apart groups, each solved on its own limits.
+            // balls rolling side by side stay apart groups, each solved on its own limits. Or when the
+            // re-seating pushed through it: its ball's velocity changed with the group's, so it is
+            // the group's (held, its segment may begin without an event of its own), not a ball
+            // whose velocity jumped alone (seed31-shot572131: 1.1e-3 m/s, no event, no group).
             const bool wasHeld = contacts[k].since >= 0.0;
-            keep[k] = pressed.active[r] || (wasHeld && (pressed.accel[r] <= kRestingAcceleration || k == candidateLink ||
-                                                        contacts[k].since == t));
+            keep[k] = pressed.active[r] || (!wasHeld && seatedThrough[k]) ||
+                      (wasHeld && (pressed.accel[r] <= kRestingAcceleration || k == candidateLink || contacts[k].since == t));
         }
     }
     // The held segments' forces are solved with frozen normals (ContactForces::Held), which press
@@ -518,10 +471,10 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             CircleLimits l;
             if (h.body == ContactBody::Ball) {
                 const Path& pb = paths[at(local(h.other))];
-                l = circleLimits(pb.c0 - pa.c0, pb.c1 - pa.c1, pb.c2 - pa.c2, touchDistance(radius(h.a), radius(h.other)));
+                l = circleLimits<Vec2>(pb.c0 - pa.c0, pb.c1 - pa.c1, pb.c2 - pa.c2, touchDistance(radius(h.a), radius(h.other)));
             } else {
                 const JawTip& jaw = table_.jaws[at(h.other)];
-                l = circleLimits(jaw.centre - pa.c0, -pa.c1, -pa.c2, radius(h.a) + jaw.radius);
+                l = circleLimits<Vec2>(jaw.centre - pa.c0, -pa.c1, -pa.c2, radius(h.a) + jaw.radius);
             }
             if (l.drop < l.gap) {
                 flat[k] = 1;

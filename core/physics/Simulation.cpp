@@ -4,6 +4,7 @@
 #include "Simulation.h"
 
 #include "BounceSeries.h"
+#include "Flight.h"
 #include "Motion.h"
 #include "Simulator.h"
 
@@ -24,7 +25,7 @@ BallState SimulationResult::stateAt(int index, double t) const
     auto it = std::upper_bound(timeline.begin(), timeline.end(), t,
                                [](double time, const MotionSegment& s) { return time < s.start; });
     if (it != timeline.begin()) --it;
-    if (!it->push.isZero(0.0)) return segmentState(*it, R, physics, t - it->start);  // a held push
+    if (it->pushed()) return segmentState(*it, R, physics, t - it->start);  // a held push or flight
     BallState s = it->state;
     double start = it->start;
     if (it->bounces) {  // a bounce series, then the cloth's motion from its end
@@ -51,6 +52,8 @@ BounceSeries bounceSeriesOf(const BallState& landing, double radius, const Physi
 BallState segmentState(const MotionSegment& seg, double radius, const PhysicsParams& p, double dt)
 {
     if (seg.bounces) return seriesStateAt(bounceSeriesOf(seg.state, radius, p), std::max(0.0, dt));
+    if (seg.state.motion == MotionState::Airborne && seg.pushed())
+        return flyHeld(seg.state, p.gravity, Vec3(seg.push.x(), seg.push.y(), seg.pushZ), dt);
     return evolve(seg.state, radius, p, dt, seg.push);
 }
 

@@ -48,6 +48,11 @@ struct MotionSegment {
     // seriesStateAt(bounceSeriesOf(state, ...), t - start) until the series ends (a `ball-table`
     // event at its closed-form end).
     bool bounces = false;
+    // m/s^2: the vertical part of the contact force per unit mass of a flying ball held against a ball
+    // on the cloth (its horizontal part is `push`; Flight.h's flyHeld). Zero for every other segment.
+    double pushZ = 0.0;
+    // Whether the segment carries a contact force (a held push on the cloth or a held flight).
+    bool pushed() const { return !push.isZero(0.0) || pushZ != 0.0; }
 };
 
 // The series of a `bounces` segment from its landing state. It is computed with a unit mass

@@ -46,6 +46,7 @@ void Simulator::beginSegment(int i, double t, const BallState& s, const Vec2& pu
     start_[at(i)] = t;
     state_[at(i)] = st;
     push_[at(i)] = push;
+    pushZ_[at(i)] = 0.0;
     path_[at(i)] = pathOf(st, radius(i), p_, push);
     const Transition tr = nextTransition(st, radius(i), p_, push);
     end_[at(i)] = tr.after == kNever ? kNever : t + tr.after;
@@ -78,7 +79,8 @@ void Simulator::predictOwn(int i, double now)
     }
     if (end_[at(i)] != kNever) best = Candidate{end_[at(i)], 0, i, Agent::Transition, 0};
     // A held group is solved again before a frozen direction turns too far (Refresh, index 1).
-    if (regroupAt_[at(i)] < best.time) best = Candidate{regroupAt_[at(i)], 0, i, Agent::Refresh, 1};
+    // (Index 2: a hold in the air is solved again, AirHold.cpp.)
+    if (regroupAt_[at(i)] < best.time) best = Candidate{regroupAt_[at(i)], 0, i, Agent::Refresh, airHeldAny(i) ? 2 : 1};
     const bool moving = s.motion == MotionState::Sliding || s.motion == MotionState::Rolling || s.motion == MotionState::Airborne;
     if (moving) {
         const double horizon = end_[at(i)] - now;
@@ -126,6 +128,7 @@ double Simulator::pairTime(int i, int j, double now) const
     const BallState& b = state_[at(j)];
     if (isOutOfPlay(a.motion) || isOutOfPlay(b.motion)) return kNever;
     if (series_[at(i)] || series_[at(j)]) return seriesPairTime(i, j, now);
+    if (airHeld_[at(i)] == j) return kNever;  // held together in the air
     if (a.motion == MotionState::Airborne || b.motion == MotionState::Airborne) return airPairTime(i, j, now);
     const bool aMoves = a.motion == MotionState::Sliding || a.motion == MotionState::Rolling;
     const bool bMoves = b.motion == MotionState::Sliding || b.motion == MotionState::Rolling;
@@ -251,6 +254,17 @@ void Simulator::process(const Candidate& c)
     const double t = c.time;
     const int i = c.ball;
     if (c.agent == Agent::Refresh) {
+        if (c.index == 2) {  // a hold in the air is solved again (no event)
+            const int other = airHeld_[at(i)], edge = airEdge_[at(i)];
+            if (other >= 0 && !airHold(flying(i) ? i : other, flying(i) ? other : i, t, false)) airRelease(i, t);
+            if (edge >= 0 && !airEdgeHold(i, edge, t, stateNow(i, t))) airRelease(i, t);
+            if (other < 0 && edge < 0) {
+                regroupAt_[at(i)] = kNever;
+                predictOwn(i, t);
+                predictPairs(i, t);
+            }
+            return;
+        }
         if (c.index == 1) {  // a held group is solved again (no event)
             if (settle(t, {}, {}, nullptr, false, i) == Settled::Untouched) {
                 regroupAt_[at(i)] = kNever;
@@ -262,6 +276,14 @@ void Simulator::process(const Candidate& c)
         predictOwn(i, t);
         predictPairs(i, t);
         return;
+    }
+    // An event of a ball held in the air ends the hold first: the event's balls keep their segments
+    // (the event ends them: a landing, the pushed ball's transition, a collision), the other ball goes
+    // on freely from its state then (no event). Still pressed, the pair is met again at once.
+    if (airHeldAny(i) || (c.agent == Agent::Ball && airHeldAny(c.index))) {
+        const int other = c.agent == Agent::Ball ? c.index : -1;
+        if (airHeldAny(i)) airRelease(i, t, i, other);
+        if (other >= 0 && airHeldAny(other)) airRelease(other, t, i, other);
     }
     if (c.agent == Agent::Ball && (series_[at(i)] || series_[at(c.index)])) {
         // Another ball may come near a bounce series: it goes on one flight at a time, whose

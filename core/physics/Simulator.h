@@ -53,6 +53,9 @@ public:
         push_.assign(n, Vec2::Zero());
         heldCount_.assign(n, 0);
         regroupAt_.assign(n, kNever);
+        pushZ_.assign(n, 0.0);
+        airHeld_.assign(n, -1);
+        airEdge_.assign(n, -1);
         series_.assign(n, 0);
         seriesOf_.resize(n);
         airContact_.resize(n);
@@ -81,6 +84,7 @@ private:
     BallState stateNow(int i, double t) const
     {
         if (series_[at(i)]) return seriesStateAt(seriesOf_[at(i)], t - start_[at(i)]);
+        if (heldFlight(i)) return flyHeld(state_[at(i)], p_.gravity, push3(i), t - start_[at(i)]);
         return evolve(state_[at(i)], radius(i), p_, t - start_[at(i)], push_[at(i)]);
     }
     Path pathNow(int i, double t) const;
@@ -121,6 +125,38 @@ private:
     void airCushion(const Candidate& c, Event& e);  // face, nose, jaw or off the table
     void airBallBall(const Candidate& c, Event& e);
     void strike(int i, const CueStrike& shot);
+
+    // A flying ball held against a ball on the cloth it presses on with no approach (AirHold.cpp;
+    // docs/airborne.md, "Held in the air").
+    bool heldFlight(int i) const { return flying(i) && (pushZ_[at(i)] != 0.0 || !push_[at(i)].isZero(0.0)); }
+    Vec3 push3(int i) const { return Vec3(push_[at(i)].x(), push_[at(i)].y(), pushZ_[at(i)]); }
+    // Ball i's centre in space from `now`: its flight (held or free) or its path on the cloth.
+    SpacePath spaceNow(int i, double now) const;
+    // Flying ball a and ball b on the cloth may be held together: neither is held by the cloth, in a
+    // bounce series or held in the air with a third ball.
+    bool airHoldable(int a, int b) const;
+    struct AirHoldForce {
+        double force = 0.0;          // N, along the normal (> 0 pressed)
+        double gap = 0.0;            // m
+        double normalSpeed = 0.0;    // m/s, (v_a - v_b) . n (> 0 parting)
+        Vec3 pushA = Vec3::Zero();   // m/s^2 on a
+        Vec2 pushB = Vec2::Zero();   // m/s^2 on b (the cloth takes the vertical part)
+        MotionState labelB = MotionState::Stationary;  // b's pushed label (Rolling when it rolls off)
+        bool stillB = false;         // b stays at rest: the cloth holds it against the push
+    };
+    AirHoldForce airHoldForce(int a, int b, const BallState& sa, const BallState& sb) const;
+    // Solves the pair at t and begins its held segments; false (and nothing changed) when it is not
+    // pressed, has parted or cannot be held.
+    // `atEvent`: the hold begins at an event of the pair (else it is solved again).
+    bool airHold(int a, int b, double t, bool atEvent);
+    // Ends ball i's hold in the air at t: both balls go on freely from their states then (no event),
+    // but `keep` and `keep2` (an event's balls, whose event at t ends their segments) keep theirs.
+    void airRelease(int i, double t, int keep = -1, int keep2 = -1);
+    void beginHeldFlight(int i, double t, const BallState& s, const Vec3& push);
+    // A flying ball held on cushion k's nose edge (it would bounce on it ever lower, a Zeno run): from
+    // its state `s` at t; false (nothing changed) when the edge does not press it or it is off the edge.
+    bool airEdgeHold(int a, int k, double t, const BallState& s);
+    bool airHeldAny(int i) const { return airHeld_[at(i)] >= 0 || airEdge_[at(i)] >= 0; }
 
     // Sustained contact (Contact.h).
     bool heldPair(int i, int j) const;
@@ -182,6 +218,9 @@ private:
     std::vector<BounceSeries> seriesOf_;
     std::vector<AirCushionContact> airContact_;
     std::vector<int> bounces_;
+    std::vector<double> pushZ_;   // m/s^2, the vertical part of a held flight's contact force per mass
+    std::vector<int> airHeld_;    // the ball it is held with in the air (AirHold.cpp), -1 if none
+    std::vector<int> airEdge_;    // the cushion whose nose edge holds it in the air, -1 if none
     double lastCandidateImpulse_ = 0.0;  // N s, the last settle()'s re-seating impulse at its candidate
                                          // (> 0 pushing apart, < 0 drawing together: the hold)
 };

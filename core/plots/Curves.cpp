@@ -88,7 +88,7 @@ BallState stateJustBefore(const SimulationResult& result, int index, double t)
                                [](const MotionSegment& s, double time) { return s.start < time; });
     if (it != timeline.begin()) --it;
     // A held push, or a summed series of bounces (whose stored state is its landing, not its course).
-    if (!it->push.isZero(0.0) || it->bounces) return segmentState(*it, R, result.physics, t - it->start);
+    if (it->pushed() || it->bounces) return segmentState(*it, R, result.physics, t - it->start);
     BallState s = it->state;
     double start = it->start;
     for (;;) {

@@ -23,7 +23,10 @@
 // the default classes' shot 2987 (a rail shot with elevation), which flew from a pocket's mouth
 // over the rail far from the rail's segment (the broad phase looked only near the segment);
 // seed7-shot386-default-classes is a frozen cluster struck by a flying ball whose members hopped
-// 1e-15 m on the frictional law's vertical throw and skipped the cloth's held contacts.
+// 1e-15 m on the frictional law's vertical throw and skipped the cloth's held contacts; seed7-shot875,
+// seed7-shot3545 and seed8-shot8909 pressed a flying ball on a ball with no approach (200 000 events
+// at one instant) and seed7-shot1276 and seed7-shot2742 bounced a ball ever lower on a nose edge
+// until an impact was lost (the holds in the air, AirHold.cpp).
 
 #include "RunChecks.h"
 

@@ -218,7 +218,9 @@ double momentumChange(const SimulationResult& r, const Event& e)
     // Before it, a ball the law leaves with a slip that has as good as ended rolls out (Motion.h's
     // rollOut: the cloth's impulse -2/7 m u).
     Vec2 cloth = Vec2::Zero();
-    if (e.held || e.holdImpulse != 0.0) {
+    // (A flying ball held on a ball at its event changes no velocity: AirHold.cpp.)
+    const bool air = e.before[0].motion == MotionState::Airborne || e.before[1].motion == MotionState::Airborne;
+    if (!air && (e.held || e.holdImpulse != 0.0)) {
         const BallBallResult law = resolveBallBall({e.before[0], A.radius, A.mass}, {e.before[1], B.radius, B.mass}, r.physics);
         BallState a = law.a, b = law.b;
         auto settled = [](BallState& s, const Ball& ball, Vec2& share) {
@@ -240,7 +242,7 @@ double momentumChange(const SimulationResult& r, const Event& e)
 BallState continued(const SimulationResult& r, int index, const MotionSegment& seg, double t)
 {
     const double R = r.balls[static_cast<std::size_t>(index)].radius;
-    if (!seg.push.isZero(0.0)) return segmentState(seg, R, r.physics, t - seg.start);  // a held push
+    if (seg.pushed()) return segmentState(seg, R, r.physics, t - seg.start);  // a held push or flight
     BallState s = seg.state;
     double start = seg.start;
     if (seg.bounces) {  // a bounce series, then the cloth's motion from its end
@@ -496,7 +498,7 @@ std::string timelineProblem(const SimulationResult& r, double positionTol, doubl
             // group at that instant (a ball it released a moment before, a few micrometres away).
             const bool same = (end.velocity - begin.velocity).norm() <= velocityTol && std::abs(end.vz - begin.vz) <= velocityTol
                               && (end.spin - begin.spin).norm() * r.balls[i].radius <= velocityTol;
-            const bool unchanged = solved.count(seg.start) && seg.push == tl[k].push && begin.motion == end.motion && same;
+            const bool unchanged = solved.count(seg.start) && seg.push == tl[k].push && seg.pushZ == tl[k].pushZ && begin.motion == end.motion && same;
             // A bounce series the simulator goes on with one flight at a time (another ball may come
             // near it) begins its flight where the series had the ball, with no event.
             const bool split = tl[k].bounces && !seg.bounces && same && (end.position - begin.position).norm() <= positionTol

@@ -1,0 +1,246 @@
+// A flying ball held against a ball on the cloth (issue 23; docs/airborne.md, "Held in the air").
+//
+// A flying ball A that touches a ball B on the cloth with no approach while gravity presses it on
+// (it slides down B's side) gets no impulse from any collision law, and detection meets the same
+// contact again at the same instant. It is a sustained contact, solved as the cloth's held contacts
+// are (Contact.h): over a segment the normal n (from B's centre to A's) is frozen and the contact
+// force N along it constant, so A flies on a parabola with the acceleration -g z + (N/m_A) n and B
+// moves in Motion.h's pushed motion with -(N/m_B) n_h (the cloth takes the force's vertical part).
+// N makes the pair's relative normal acceleration kHeldCurvatureShare of the curvature |v_t|^2 / d:
+//     N (1/m_A + c_B |n_h|^2 / m_B) = g n_z + n_h . a_B - share |v_t|^2 / d,
+// with c_B and a_B B's response to a push through its centre and its cloth's friction along its
+// frozen direction (sliding: 1, -mu_s g e; rolling: 5/7, -mu_r g d; at rest: it rolls off when
+// 5/7 of the push beats mu_r g, else the cloth holds it still: c_B = 0). The distance then grows by
+// (1 - share) |v_t|^2 s^2 / (2 d) (never an overlap), the normal force does no positive work, and
+// the segment ends at CircleLimits' bounds (the gap and the turn) or B's frozen direction's
+// (turnLimit), when the pair is solved again with no event. It lets go when N falls to zero (A
+// leaves B's surface, the pendulum's release), the gap passes kHeldGap, or an event of either ball
+// comes first (its landing included).
+//
+// Left out: friction between the balls while held (mu_b about 0.05 against the press), a held pair
+// whose B is also held by the cloth or pressed by a second flying ball (detection meets those as
+// before), and a flying ball held on a cushion's nose or a jaw (docs/dev/issue-23-open).
+
+#include "Simulator.h"
+
+#include "CircleLimits.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cuelab::detail {
+
+namespace {
+
+Vec3 velocity3(const BallState& s) { return Vec3(s.velocity.x(), s.velocity.y(), s.vz); }
+
+}  // namespace
+
+SpacePath Simulator::spaceNow(int i, double now) const
+{
+    const double r = radius(i);
+    if (!flying(i)) return clothPath(pathNow(i, now), r);
+    const BallState s = stateNow(i, now);
+    return heldFlight(i) ? heldFlightPath(s, r, p_.gravity, push3(i)) : flightPath(s, r, p_.gravity);
+}
+
+bool Simulator::airHoldable(int a, int b) const
+{
+    if (!flying(a) || series_[at(a)] || series_[at(b)]) return false;
+    const MotionState mb = state_[at(b)].motion;
+    if (mb == MotionState::Airborne || isOutOfPlay(mb)) return false;
+    if (heldCount_[at(a)] > 0 || heldCount_[at(b)] > 0) return false;
+    if (airEdge_[at(a)] >= 0 || airEdge_[at(b)] >= 0) return false;
+    return (airHeld_[at(a)] < 0 || airHeld_[at(a)] == b) && (airHeld_[at(b)] < 0 || airHeld_[at(b)] == a);
+}
+
+Simulator::AirHoldForce Simulator::airHoldForce(int a, int b, const BallState& sa, const BallState& sb) const
+{
+    AirHoldForce f;
+    const double Ra = radius(a), Rb = radius(b), ma = mass(a), mb = mass(b), g = p_.gravity;
+    const Vec3 d(sa.position.x() - sb.position.x(), sa.position.y() - sb.position.y(), (Ra + sa.z) - (Rb + sb.z));
+    const double dist = d.norm();
+    if (!(dist > 0.0)) return f;
+    const Vec3 n = d / dist;
+    f.gap = dist - (Ra + Rb);
+    const Vec3 v = velocity3(sa) - velocity3(sb);
+    f.normalSpeed = v.dot(n);
+    const double vt2 = std::max(0.0, v.squaredNorm() - f.normalSpeed * f.normalSpeed);
+    const Vec2 nh = n.head<2>();
+    const double nh2 = nh.squaredNorm(), nhLength = std::sqrt(nh2);
+    const double curvature = kHeldCurvatureShare * vt2 / dist;
+    double c = 0.0;
+    Vec2 friction = Vec2::Zero();  // b's cloth friction along its frozen direction (m/s^2)
+    f.labelB = sb.motion;
+    const bool fromRest = !(sb.motion == MotionState::Sliding || (sb.motion == MotionState::Rolling && sb.velocity.norm() > kRollOffSpeed));
+    if (sb.motion == MotionState::Sliding) {
+        c = 1.0;
+        const Vec2 u = slipVelocity(sb, Rb);
+        if (u.norm() > 0.0) friction = -(p_.muSlide * g) * u.normalized();
+    } else if (!fromRest) {
+        c = 5.0 / 7.0;
+        friction = -(p_.muRoll * g) * sb.velocity.normalized();
+    } else if (nhLength > 0.0) {
+        // At rest it rolls off along the push -n_h, its rolling resistance against it.
+        c = 5.0 / 7.0;
+        friction = (p_.muRoll * g / nhLength) * nh;
+        f.labelB = MotionState::Rolling;
+    }
+    double N = (g * n.z() + nh.dot(friction) - curvature) / (1.0 / ma + c * nh2 / mb);
+    if (fromRest && !(c * N * nhLength / mb > p_.muRoll * g)) {
+        // The push does not beat the rolling resistance: the cloth holds b still.
+        f.stillB = true;
+        f.labelB = sb.motion;
+        N = (g * n.z() - curvature) * ma;
+    }
+    f.force = N;
+    if (!(N > 0.0)) return f;
+    f.pushA = (N / ma) * n;
+    if (!f.stillB) f.pushB = -(N / mb) * nh;
+    return f;
+}
+
+void Simulator::beginHeldFlight(int i, double t, const BallState& s, const Vec3& push)
+{
+    BallState st = s;
+    st.motion = MotionState::Airborne;
+    series_[at(i)] = 0;
+    start_[at(i)] = t;
+    state_[at(i)] = st;
+    push_[at(i)] = push.head<2>();
+    pushZ_[at(i)] = push.z();
+    path_[at(i)] = Path{st.position, st.velocity, 0.5 * push.head<2>()};
+    const double tl = heldLandingTime(st, p_.gravity, push);
+    end_[at(i)] = tl == kNever ? kNever : t + tl;
+    MotionSegment seg{t, st, push.head<2>(), true};
+    seg.pushZ = push.z();
+    r_.timelines[at(i)].push_back(seg);
+}
+
+bool Simulator::airHold(int a, int b, double t, bool atEvent)
+{
+    BallState sa = stateNow(a, t);
+    BallState sb = stateNow(b, t);
+    if (!(sa.z > 0.0) || !airHoldable(a, b)) return false;
+    // A slip that has as good as ended (or, solved again, one that the cloth would end within
+    // kSlipRollOutLength) has a direction of rounding, and so would the friction the force is solved
+    // with: it rolls out, as a held group's member does (HeldContacts.cpp; not the tiny slip of an
+    // event's ball, whose pair's momentum the event keeps).
+    const double tinySlip2 = atEvent ? 0.0 : 7.0 * p_.muSlide * p_.gravity * kSlipRollOutLength;
+    if (sb.motion == MotionState::Sliding && (slipHasEnded(sb, radius(b)) || slipVelocity(sb, radius(b)).squaredNorm() <= tinySlip2)) {
+        rollOut(sb, radius(b));
+        sb.motion = classify(sb, radius(b));
+    }
+    AirHoldForce f = airHoldForce(a, b, sa, sb);
+    if (!(f.force > 0.0) || std::abs(f.gap) > kHeldGap || std::abs(f.normalSpeed) > kHoldSpeed) return false;
+    if (f.normalSpeed > 0.0) {
+        // Re-seated, as the cloth's held contacts are: the frozen normal of the last segment left the
+        // pair parting at (1 - share) |v_t|^2 s / d, and the force would do work on that parting. An
+        // impulse along the normal takes it away (inelastic: the energy falls), b answering by
+        // Contact.h's rule (the cloth takes the rest).
+        const double Ra = radius(a), Rb = radius(b), ma = mass(a), mb = mass(b);
+        Vec3 n(sa.position.x() - sb.position.x(), sa.position.y() - sb.position.y(), (Ra + sa.z) - (Rb + sb.z));
+        n.normalize();
+        const Vec2 nh = n.head<2>();
+        const double J = f.normalSpeed / (1.0 / ma + contactResponse(sb) * nh.squaredNorm() / mb);
+        const Vec3 dv = -(J / ma) * n;
+        sa.velocity += dv.head<2>();
+        sa.vz += dv.z();
+        applyContactImpulse(sb, Rb, mb, J * nh);
+        f = airHoldForce(a, b, sa, sb);
+        if (!(f.force > 0.0)) return false;
+    }
+    airHeld_[at(a)] = b;
+    airHeld_[at(b)] = a;
+    beginHeldFlight(a, t, sa, f.pushA);
+    sb.motion = f.labelB;
+    beginSegment(b, t, sb, f.pushB);
+    r_.timelines[at(b)].back().held = true;
+    // The segment: until the frozen normal has turned or opened the gap far enough, or b's frozen
+    // direction has turned (turnLimit reads b's new segment), at most kMaxHeldSegment.
+    const SpacePath pa = spaceNow(a, t), pb = spaceNow(b, t);
+    const CircleLimits l = circleLimits<Vec3>(pb.c0 - pa.c0, pb.c1 - pa.c1, pb.c2 - pa.c2, radius(a) + radius(b));
+    const double limit = std::max(std::min({turnLimit(t, {b}, {}), l.gap, l.drop}), 1e-9);
+    regroupAt_[at(a)] = regroupAt_[at(b)] = t + limit;
+    for (int k : {a, b}) box_[at(k)] = boxOf(path_[at(k)], std::min(end_[at(k)], regroupAt_[at(k)]) - t);
+    for (int k : {a, b}) predictOwn(k, t);
+    for (int k : {a, b}) predictPairs(k, t);
+    return true;
+}
+
+void Simulator::airRelease(int i, double t, int keep, int keep2)
+{
+    if (airEdge_[at(i)] >= 0) {  // held on a nose edge: only the ball itself goes on freely
+        airEdge_[at(i)] = -1;
+        regroupAt_[at(i)] = kNever;
+        if (i != keep && i != keep2) {
+            beginSegment(i, t, stateNow(i, t));
+            r_.timelines[at(i)].back().held = true;
+            predictOwn(i, t);
+            predictPairs(i, t);
+        }
+        return;
+    }
+    const int other = airHeld_[at(i)];
+    if (other < 0) return;
+    airHeld_[at(i)] = -1;
+    airHeld_[at(other)] = -1;
+    for (int k : {i, other}) {
+        regroupAt_[at(k)] = kNever;
+        if (k == keep || k == keep2) continue;
+        const bool pushed = heldFlight(k) || !push_[at(k)].isZero(0.0);
+        if (pushed) {
+            beginSegment(k, t, stateNow(k, t));
+            r_.timelines[at(k)].back().held = true;
+        }
+        predictOwn(k, t);
+        predictPairs(k, t);
+    }
+}
+
+bool Simulator::airEdgeHold(int a, int k, double t, const BallState& s)
+{
+    if (!flying(a) || series_[at(a)] || heldCount_[at(a)] > 0 || airHeld_[at(a)] >= 0 || !(s.z > 0.0)) return false;
+    const CushionSegment& seg = table_.cushions[at(k)];
+    const double R = radius(a), h = table_.cushionHeight, g = p_.gravity;
+    // In the plane across the edge: nh along the cushion's normal (in front of the nose line), w up.
+    const Vec2 along = seg.b - seg.a;
+    const double L = along.norm();
+    const double foot = (s.position - seg.a).dot(along) / L;
+    const double nh = (s.position - seg.a).dot(seg.normal), w = (R + s.z) - h;
+    const double dist = std::hypot(nh, w);
+    if (!(foot >= 0.0 && foot <= L) || nh < 0.0 || w < 0.0 || !(dist > 0.0)) return false;
+    const Vec3 N3(seg.normal.x(), seg.normal.y(), 0.0);
+    const Vec3 n = (nh / dist) * N3 + Vec3(0.0, 0.0, w / dist);
+    const Vec3 v = velocity3(s);
+    const double vn = v.dot(n);
+    const double across = v.dot(N3) * (w / dist) - s.vz * (nh / dist);  // the speed around the edge
+    const double force = mass(a) * (g * n.z() - kHeldCurvatureShare * across * across / dist);
+    if (!(force > 0.0) || std::abs(dist - R) > kHeldGap || std::abs(vn) > kHoldSpeed) return false;
+    BallState st = s;
+    if (vn > 0.0) {  // re-seated (AirHold's ball case): the fixed edge takes the impulse
+        st.velocity -= vn * seg.normal * (nh / dist);
+        st.vz -= vn * (w / dist);
+    }
+    airEdge_[at(a)] = k;
+    const Vec3 push = (force / mass(a)) * n;
+    beginHeldFlight(a, t, st, push);
+    // The segment: the normal turns about the edge (CircleLimits in the plane across it), and the
+    // foot stays on the segment.
+    const SpacePath pa = spaceNow(a, t);
+    auto acrossOf = [&](const Vec3& x) { return Vec3(x - x.dot(Vec3(along.x(), along.y(), 0.0) / L) * Vec3(along.x(), along.y(), 0.0) / L); };
+    const Vec3 edge0(seg.a.x(), seg.a.y(), h);
+    const CircleLimits l = circleLimits<Vec3>(acrossOf(edge0 - pa.c0), acrossOf(-pa.c1), acrossOf(-pa.c2), R);
+    double limit = std::min({kMaxHeldSegment, l.gap, l.drop});
+    const Vec2 tHat = along / L;
+    const double f0 = (pa.c0.head<2>() - seg.a).dot(tHat), f1 = pa.c1.head<2>().dot(tHat), f2 = pa.c2.head<2>().dot(tHat);
+    limit = std::min({limit, firstCrossing(f0, f1, f2, 0.0), firstCrossing(f0, f1, f2, L)});
+    limit = std::max(limit, 1e-9);
+    regroupAt_[at(a)] = t + limit;
+    box_[at(a)] = boxOf(path_[at(a)], std::min(end_[at(a)], regroupAt_[at(a)]) - t);
+    predictOwn(a, t);
+    predictPairs(a, t);
+    return true;
+}
+
+}  // namespace cuelab::detail
