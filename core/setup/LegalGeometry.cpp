@@ -105,8 +105,14 @@ std::optional<SetupProblem> tableProblem(const Table& table, const Ball& ball, i
 std::optional<SetupProblem> overlapProblem(const Ball& ball, int index, const Ball& other)
 {
     // Balls of unequal radius touch at the horizontal distance touchDistance (their centres are at
-    // different heights).
-    const double overlap = touchDistance(ball.radius, other.radius) - (ball.state.position - other.state.position).norm();
+    // different heights). A ball given a height (z, CONTRACT.md "Airborne balls") is apart from another
+    // in space: its centre is R + z above the cloth, so a ball may rest on another's shoulder.
+    double overlap = touchDistance(ball.radius, other.radius) - (ball.state.position - other.state.position).norm();
+    if (ball.state.z > 0.0 || other.state.z > 0.0) {
+        const Vec2 d = ball.state.position - other.state.position;
+        const double dz = (ball.radius + ball.state.z) - (other.radius + other.state.z);
+        overlap = (ball.radius + other.radius) - std::sqrt(d.squaredNorm() + dz * dz);
+    }
     if (!(overlap > kOverlapTolerance)) return std::nullopt;
     return SetupProblem{ballPath(index, "position"), ball.id, index,
                         "ball " + quoted(ball.id) + " overlaps ball " + quoted(other.id) + " by " +

@@ -51,6 +51,7 @@ private slots:
     void alciatoreFrictionNeedsNoNumber();
     void overlapWithinTolerance();
     void unequalRadiiTouchCloser();
+    void aBallInTheAirIsApartInSpace();
     void oneBallsProblems();
     void lengthsAndNumbersForMessages();
     void boundsThemselvesAreLegal();
@@ -303,6 +304,25 @@ void TestLegalSetup::unequalRadiiTouchCloser()
     QCOMPARE(validateSetup(s).size(), std::size_t{1});
     QCOMPARE(validateBall(s, 1).size(), std::size_t{1});
     ball(s, 1).state.position = Vec2(0.6 + R1 + R2 - 10e-6, 0.6);  // inside R1 + R2, outside d
+    QVERIFY(validateSetup(s).empty());
+}
+
+void TestLegalSetup::aBallInTheAirIsApartInSpace()
+{
+    // A ball given a height is apart from another by the distance of their centres in space: set
+    // on the other's shoulder at 30 degrees it touches (legal), a nanometre and more lower it
+    // overlaps; straight above by more than a diameter it is legal over the other's position.
+    Setup s = base();
+    const double R = 0.028575, theta = 30.0 * M_PI / 180.0;
+    const Vec2 low = ball(s, 0).state.position;
+    ball(s, 1).state.position = low + Vec2(2.0 * R * std::sin(theta), 0.0);
+    ball(s, 1).state.z = 2.0 * R * std::cos(theta);
+    QVERIFY(validateSetup(s).empty());
+    ball(s, 1).state.z = 2.0 * R * std::cos(theta) - 2e-9 / std::cos(theta);
+    QCOMPARE(validateBall(s, 1).size(), std::size_t{1});
+    QVERIFY(validateBall(s, 1).front().message.find("overlaps ball") != std::string::npos);
+    ball(s, 1).state.position = low;
+    ball(s, 1).state.z = 2.0 * R + 1e-6;
     QVERIFY(validateSetup(s).empty());
 }
 
