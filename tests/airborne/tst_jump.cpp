@@ -7,6 +7,7 @@
 #include "BounceSeries.h"
 #include "ElevatedStrike.h"
 #include "Flight.h"
+#include "FlyingBall.h"
 #include "Simulation.h"
 
 #include <QtTest>
@@ -52,15 +53,6 @@ std::vector<const Event*> eventsOf(const SimulationResult& r, EventKind kind)
     for (const Event& e : r.events)
         if (e.kind == kind) out.push_back(&e);
     return out;
-}
-
-// The mechanical energy of every ball (with m g z), J.
-double energy(const SimulationResult& r, double t)
-{
-    double e = 0.0;
-    const std::vector<BallState> s = r.statesAt(t);
-    for (std::size_t i = 0; i < s.size(); ++i) e += mechanicalEnergy(s[i], r.balls[i].radius, r.balls[i].mass, r.physics.gravity);
-    return e;
 }
 
 // simulate() with the elevated strike keeping its vertical part (SimulationOptions).
@@ -164,11 +156,11 @@ void TestJump::energyNeverRises()
         for (int k = 0; k <= 4000; ++k) times.push_back(r.endTime * k / 4000.0);
         std::sort(times.begin(), times.end());
         // From just after t = 0 (the strike gives the cue its energy there).
-        double previous = energy(r, 0.0);
+        double previous = mechanicalEnergyAt(r, 0.0);
         QVERIFY(previous > 0.0);
         for (double t : times) {
             if (t <= 0.0) continue;
-            const double e = energy(r, t);
+            const double e = mechanicalEnergyAt(r, t);
             QVERIFY2(e <= previous * (1.0 + 1e-12) + 1e-15, qPrintable(QString("rose by %1 J at t = %2").arg(e - previous).arg(t)));
             previous = e;
             for (std::size_t i = 0; i < r.balls.size(); ++i) QVERIFY(r.stateAt(static_cast<int>(i), t).z >= -1e-12);

@@ -3,6 +3,8 @@
 // resting height, moving up at vz (negative: down) and across at v.
 
 #include "Ball.h"
+#include "Flight.h"
+#include "Simulation.h"
 
 #include <string>
 
@@ -17,4 +19,14 @@ inline cuelab::Ball flyingBall(const std::string& id, double x, double y, double
     b.state.vz = vz;
     b.state.motion = cuelab::MotionState::Airborne;
     return b;
+}
+
+// The mechanical energy of every ball of the run at t (kinetic, with vz, plus m g z), J.
+inline double mechanicalEnergyAt(const cuelab::SimulationResult& r, double t)
+{
+    double e = 0.0;
+    const std::vector<cuelab::BallState> s = r.statesAt(t);
+    for (std::size_t i = 0; i < s.size(); ++i)
+        e += cuelab::mechanicalEnergy(s[i], r.balls[i].radius, r.balls[i].mass, r.physics.gravity);
+    return e;
 }
