@@ -133,11 +133,12 @@ bool Simulator::airHold(int a, int b, double t, bool atEvent)
     }
     AirHoldForce f = airHoldForce(a, b, sa, sb);
     if (!(f.force > 0.0) || std::abs(f.gap) > kHeldGap || std::abs(f.normalSpeed) > kHoldSpeed) return false;
-    if (f.normalSpeed > 0.0) {
+    if (f.normalSpeed != 0.0) {
         // Re-seated, as the cloth's held contacts are: the frozen normal of the last segment left the
-        // pair parting at (1 - share) |v_t|^2 s / d, and the force would do work on that parting. An
-        // impulse along the normal takes it away (inelastic: the energy falls), b answering by
-        // Contact.h's rule (the cloth takes the rest).
+        // pair parting at about (1 - share) |v_t|^2 s / d (the force would do work on that parting),
+        // or approaching when the tangential motion slowed over it (the pair would sink into each
+        // other). An impulse along the normal takes it away (inelastic: the energy falls), b
+        // answering by Contact.h's rule (the cloth takes the rest).
         const double Ra = radius(a), Rb = radius(b), ma = mass(a), mb = mass(b);
         Vec3 n(sa.position.x() - sb.position.x(), sa.position.y() - sb.position.y(), (Ra + sa.z) - (Rb + sb.z));
         n.normalize();
@@ -218,7 +219,7 @@ bool Simulator::airEdgeHold(int a, int k, double t, const BallState& s)
     const double force = mass(a) * (g * n.z() - kHeldCurvatureShare * across * across / dist);
     if (!(force > 0.0) || std::abs(dist - R) > kHeldGap || std::abs(vn) > kHoldSpeed) return false;
     BallState st = s;
-    if (vn > 0.0) {  // re-seated (AirHold's ball case): the fixed edge takes the impulse
+    if (vn != 0.0) {  // re-seated (as in airHold): the fixed edge takes the impulse
         st.velocity -= vn * seg.normal * (nh / dist);
         st.vz -= vn * (w / dist);
     }

@@ -455,6 +455,25 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
             }
             r_.events.pop_back();
             e.held = false;
+        } else if (!heldFlight(a) && apexHeight(e.before[a == i ? 0 : 1], p_.gravity) <= kHeldGap) {
+            // Not holdable (b is held by the cloth in a group: its forces press it on a), and a's hop
+            // stays within kHeldGap of the cloth (a frictional law's vertical throw of a few
+            // nanometres: seed7-shot190, 1.9e-9 m): the cloth takes the hop, as a landing does, and
+            // the pair meets again on the cloth, where the group holds it. The event is that landing.
+            const BallState before = e.before[a == i ? 0 : 1];
+            Event land;
+            land.kind = EventKind::BallTable;
+            land.time = e.time;
+            land.balls[0] = a;
+            land.before[0] = before;
+            land.after[0] = before;
+            land.after[0].z = 0.0;
+            land.after[0].vz = 0.0;
+            land.after[0].motion = classify(land.after[0], radius(a));
+            land.contactPoint = before.position;
+            land.impulse = Vec3(0.0, 0.0, -mass(a) * before.vz);
+            finishEvent(e.time, land);
+            return;
         }
     }
     e.after[0] = res.a;

@@ -26,7 +26,10 @@
 // 1e-15 m on the frictional law's vertical throw and skipped the cloth's held contacts; seed7-shot875,
 // seed7-shot3545 and seed8-shot8909 pressed a flying ball on a ball with no approach (200 000 events
 // at one instant) and seed7-shot1276 and seed7-shot2742 bounced a ball ever lower on a nose edge
-// until an impact was lost (the holds in the air, AirHold.cpp).
+// until an impact was lost (the holds in the air, AirHold.cpp); seed7-shot190 hopped 1.9e-9 m into a
+// ball of a held group (the cloth takes such a hop), seed8-shot5433 sank 1.6e-9 m into a nose edge
+// while held (its re-seat now takes away an approach too) and seed7-shot4011 failed the group
+// momentum check (a flying ball's contacts are measured in space).
 
 #include "RunChecks.h"
 

@@ -270,8 +270,14 @@ std::vector<int> touchingGroup(const SimulationResult& r, const std::vector<Ball
         const std::size_t a = static_cast<std::size_t>(group[k]);
         for (std::size_t b = 0; b < s.size(); ++b) {
             if (in[b] || s[b].motion == MotionState::Pocketed) continue;
-            const double reach = touchDistance(r.balls[a].radius, r.balls[b].radius) + gap;
-            if ((s[b].position - s[a].position).squaredNorm() <= reach * reach) {
+            double d2 = (s[b].position - s[a].position).squaredNorm();
+            double reach = touchDistance(r.balls[a].radius, r.balls[b].radius) + gap;
+            if (s[a].z != 0.0 || s[b].z != 0.0) {  // in space: the centres at heights R + z
+                const double dz = (r.balls[a].radius + s[a].z) - (r.balls[b].radius + s[b].z);
+                d2 += dz * dz;
+                reach = r.balls[a].radius + r.balls[b].radius + gap;
+            }
+            if (d2 <= reach * reach) {
                 in[b] = 1;
                 group.push_back(static_cast<int>(b));
             }
