@@ -126,8 +126,7 @@ bool Simulator::airHold(int a, int b, double t, bool atEvent)
     // kSlipRollOutLength) has a direction of rounding, and so would the friction the force is solved
     // with: it rolls out, as a held group's member does (HeldContacts.cpp; not the tiny slip of an
     // event's ball, whose pair's momentum the event keeps).
-    const double tinySlip2 = atEvent ? 0.0 : 7.0 * p_.muSlide * p_.gravity * kSlipRollOutLength;
-    if (sb.motion == MotionState::Sliding && (slipHasEnded(sb, radius(b)) || slipVelocity(sb, radius(b)).squaredNorm() <= tinySlip2)) {
+    if (sb.motion == MotionState::Sliding && (slipHasEnded(sb, radius(b)) || (!atEvent && slipRollsOut(sb, radius(b), p_)))) {
         rollOut(sb, radius(b));
         sb.motion = classify(sb, radius(b));
     }
@@ -229,7 +228,8 @@ bool Simulator::airEdgeHold(int a, int k, double t, const BallState& s)
     // The segment: the normal turns about the edge (CircleLimits in the plane across it), and the
     // foot stays on the segment.
     const SpacePath pa = spaceNow(a, t);
-    auto acrossOf = [&](const Vec3& x) { return Vec3(x - x.dot(Vec3(along.x(), along.y(), 0.0) / L) * Vec3(along.x(), along.y(), 0.0) / L); };
+    const Vec3 e(along.x() / L, along.y() / L, 0.0);  // along the edge
+    auto acrossOf = [&](const Vec3& x) { return Vec3(x - x.dot(e) * e); };
     const Vec3 edge0(seg.a.x(), seg.a.y(), h);
     const CircleLimits l = circleLimits<Vec3>(acrossOf(edge0 - pa.c0), acrossOf(-pa.c1), acrossOf(-pa.c2), R);
     double limit = std::min({kMaxHeldSegment, l.gap, l.drop});

@@ -203,6 +203,12 @@ double contactResponse(const BallState& s)
     }
 }
 
+bool slipRollsOut(const BallState& s, double radius, const PhysicsParams& p)
+{
+    return s.motion == MotionState::Sliding &&
+           slipVelocity(s, radius).squaredNorm() <= 2.0 * 3.5 * p.muSlide * p.gravity * kSlipRollOutLength;
+}
+
 void applyContactImpulse(BallState& s, double radius, double mass, const Vec2& J)
 {
     const double c = contactResponse(s);

@@ -76,6 +76,8 @@ inline constexpr double kRollOffSpeed = 1e-9;
 // (|u|^2 <= 2 * 3.5 mu_s g * this) is rolled out when its contacts are solved (HeldContacts.cpp,
 // AirHold.cpp): its direction, and the friction's, would be rounding.
 inline constexpr double kSlipRollOutLength = 1e-12;
+// A sliding ball whose slip the cloth would end within kSlipRollOutLength: |u|^2 <= 7 mu_s g times it.
+bool slipRollsOut(const BallState& s, double radius, const PhysicsParams& p);
 
 // s: the longest held segment (the group is solved again at least this often).
 inline constexpr double kMaxHeldSegment = 0.25;

@@ -10,8 +10,6 @@
 
 namespace cuelab::detail {
 
-
-
 bool Simulator::heldPair(int i, int j) const
 {
     for (const HeldContact& h : held_)
@@ -24,102 +22,6 @@ bool Simulator::heldWall(int i, ContactBody body, int index) const
     for (const HeldContact& h : held_)
         if (h.a == i && h.body == body && h.other == index) return true;
     return false;
-}
-
-bool pushedTransitionKind(MotionState before, MotionState after, EventKind& kind)
-{
-    if (before == after) return false;
-    if (before == MotionState::Sliding) {
-        kind = after == MotionState::Rolling    ? EventKind::SlideToRoll
-               : after == MotionState::Spinning ? EventKind::SlideToSpin
-                                                : EventKind::SlideToStop;
-        return after != MotionState::Sliding;
-    }
-    if (before == MotionState::Rolling) {
-        if (after == MotionState::Spinning) kind = EventKind::RollToSpin;
-        else if (after == MotionState::Stationary) kind = EventKind::RollToStop;
-        else return false;
-        return true;
-    }
-    if (before == MotionState::Spinning && after == MotionState::Stationary) {
-        kind = EventKind::SpinToStop;
-        return true;
-    }
-    return false;
-}
-
-double Simulator::turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts) const
-{
-    double limit = kMaxHeldSegment;
-    const double g = p_.gravity;
-    for (int m : members) {
-        const BallState& s = state_[at(m)];
-        const Vec2& q = push_[at(m)];
-        if (q.isZero(0.0)) continue;
-        Vec2 x0 = Vec2::Zero(), rate = Vec2::Zero();  // the frozen vector and how fast it changes
-        if (s.motion == MotionState::Sliding) {
-            x0 = slipVelocity(s, radius(m));
-            if (x0.norm() > 0.0) rate = q - (3.5 * p_.muSlide * g) * x0.normalized();
-        } else if (s.motion == MotionState::Rolling && s.velocity.norm() > kRollOffSpeed) {  // (slower: from rest)
-            x0 = s.velocity;
-            rate = (5.0 / 7.0) * q - (p_.muRoll * g) * x0.normalized();
-        }
-        const double n0 = x0.norm();
-        // A slip or roll that has as good as ended ends now, at its own transition.
-        if (n0 <= 1e-9 * (s.velocity.norm() + radius(m) * s.spin.head<2>().norm())) continue;
-        const Vec2 e = x0 / n0;
-        const double along = rate.dot(e);
-        const double across = (rate - along * e).norm();
-        const double den = across - kMaxTurn * along;
-        if (!(across > 1e-12 * rate.norm())) continue;
-        double turn = den > 0.0 ? kMaxTurn * n0 / den : kNever;  // s: until it turns by kMaxTurn
-        {
-            // A frozen direction costs at most mu g (turn) ds of velocity (mu_r g rolling, mu_s g
-            // sliding): allow up to kTurnSpeedError over the segment (turn ~ across s / n0), but never
-            // a turn beyond 1/4 rad (the friction must keep acting against the motion or the slip).
-            // (A slip running out under a push turns ever faster: kMaxTurn alone cuts its last
-            // stretch into a geometric run of segments, thousands of solves of the group.)
-            const double mu = s.motion == MotionState::Rolling ? p_.muRoll : p_.muSlide;
-            const double budget = std::sqrt(kTurnSpeedError * n0 / (mu * g * across));
-            const double den4 = across - 0.25 * along;
-            const double quarter = den4 > 0.0 ? 0.25 * n0 / den4 : kNever;
-            turn = std::min(std::max(turn, budget), quarter);
-        }
-        limit = std::min(limit, turn);
-    }
-    // The contacts' geometry from now on: a ball that keeps its segment (idle in settle) has its path
-    // from that segment's start, not from t.
-    for (const HeldContact& h : contacts) {
-        const Path pa = pathNow(h.a, t);
-        if (h.body == ContactBody::Cushion) {
-            const CushionSegment& seg = table_.cushions[at(h.other)];
-            const Vec2 d = seg.b - seg.a;
-            const double L = d.norm();
-            const Vec2 tHat = d / L;
-            const double f0 = (pa.c0 - seg.a).dot(tHat), f1 = pa.c1.dot(tHat), f2 = pa.c2.dot(tHat);
-            limit = std::min({limit, firstCrossing(f0, f1, f2, 0.0), firstCrossing(f0, f1, f2, L)});
-            continue;
-        }
-        Vec2 rel0, rel1, rel2;
-        double D;
-        if (h.body == ContactBody::Ball) {
-            const Path pb = pathNow(h.other, t);
-            rel0 = pb.c0 - pa.c0;
-            rel1 = pb.c1 - pa.c1;
-            rel2 = pb.c2 - pa.c2;
-            D = touchDistance(radius(h.a), radius(h.other));
-        } else {
-            const JawTip& jaw = table_.jaws[at(h.other)];
-            rel0 = jaw.centre - pa.c0;
-            rel1 = -pa.c1;
-            rel2 = -pa.c2;
-            D = radius(h.a) + jaw.radius;
-        }
-        const CircleLimits l = circleLimits<Vec2>(rel0, rel1, rel2, D);
-        limit = std::min(limit, l.gap);
-        if (!h.flat) limit = std::min(limit, l.drop);  // (a flat contact's forces allow no curvature)
-    }
-    return std::max(limit, 1e-9);  // s: a floor, so that solving again always moves time on
 }
 
 Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBalls,
@@ -211,10 +113,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     // the group's next solve (re-seating) leaves a new one: seed23-shot12231, a 35-ball group solved
     // every ~1e-8 s. (Not the event's own balls: a collision keeps its pair's momentum, the cloth's
     // impulse would not.)
-    const double tinySlip2 = 2.0 * 3.5 * p_.muSlide * p_.gravity * kSlipRollOutLength;
     auto tiny = [&](std::size_t m, const BallState& st, double radius) {
-        return std::find(eventBalls.begin(), eventBalls.end(), members[m]) == eventBalls.end() &&
-               st.motion == MotionState::Sliding && slipVelocity(st, radius).squaredNorm() <= tinySlip2;
+        return std::find(eventBalls.begin(), eventBalls.end(), members[m]) == eventBalls.end() && slipRollsOut(st, radius, p_);
     };
     auto relabel = [&](std::size_t m) {
         ContactBall& cb = balls[m];
