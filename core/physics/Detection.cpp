@@ -90,7 +90,10 @@ double ballBallTime(const Path& a, double ra, const Path& b, double rb, double h
 
 double jawTime(const Path& p, double radius, const JawTip& jaw, double horizon)
 {
-    return circleContactTime(p.c0 - jaw.centre, p.c1, p.c2, radius + jaw.radius, horizon);
+    // Touching the circle past a tangent point is overlapping the rail nose or the facing there
+    // (Table.h): that piece's own detection is the contact, not the tip's.
+    const double s = circleContactTime(p.c0 - jaw.centre, p.c1, p.c2, radius + jaw.radius, horizon);
+    return s != kNever && onJawArc(jaw, p.at(s), kContactTolerance) ? s : kNever;
 }
 
 double pocketTime(const Path& p, const Pocket& pocket, double horizon)
@@ -120,7 +123,7 @@ double cushionTime(const Path& p, double radius, const CushionSegment& seg, doub
     auto contactAt = [&](double s) {
         const double gap = g0 + (g1 + g2 * s) * s;
         const double foot = f0 + (f1 + f2 * s) * s;
-        if (std::abs(gap) > kContactTolerance || foot < -kContactTolerance || foot > L + kContactTolerance) return false;
+        if (gap > kContactTolerance || gap < -kSunkTolerance || foot < -kContactTolerance || foot > L + kContactTolerance) return false;
         const double speed = g1 + 2.0 * g2 * s;
         if (speed < -kRestingSpeed || (speed <= kRestingSpeed && g2 < 0.0)) return true;
         return speed > 0.0 && g2 < 0.0 && gap + speed * speed / (-4.0 * g2) <= kContactTolerance;

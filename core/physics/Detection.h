@@ -21,6 +21,11 @@ namespace cuelab {
 // m: bodies closer than this (or overlapping by rounding) count as touching.
 inline constexpr double kContactTolerance = 1e-10;
 
+// m: a ball this far inside a cushion's nose still touches it (a contact now if it approaches or is
+// pressed in), so that an overlap a setup may start with (CONTRACT.md's 1e-9 m) or rounding has left
+// is held where it is, never deepened. (Two balls touch at any overlap: circleContactTime.)
+inline constexpr double kSunkTolerance = 1e-9;
+
 // m/s: a normal speed below this between touching bodies counts as resting contact (neither
 // approaching nor parting); the contact begins now if the accelerations press the bodies together.
 inline constexpr double kRestingSpeed = 1e-9;
@@ -59,7 +64,7 @@ double ballBallTime(const Path& a, double ra, const Path& b, double rb, double h
 // own quadratic) with the ball touching the line and closing in (past a jaw at the junction).
 double cushionTime(const Path& p, double radius, const CushionSegment& seg, double horizon);
 
-// A ball and a jaw tip: |p(s) - c| = R + rj, a quartic.
+// A ball and a jaw tip: |p(s) - c| = R + rj, a quartic, the contact on the tip's arc (onJawArc).
 double jawTime(const Path& p, double radius, const JawTip& jaw, double horizon);
 
 // A ball and a pocket: the centre enters the pocket circle, |p(s) - c| = rp, a quartic. A ball

@@ -156,8 +156,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     std::vector<ContactLink> links;
     std::vector<double> normalSpeeds;
     // The geometry of a contact from the group's states: its link (normal, curvature), gap and
-    // relative normal speed (> 0 parting). False when a body is pocketed, or a cushion's foot has
-    // left its segment.
+    // relative normal speed (> 0 parting). False when a body is pocketed, a cushion's foot has left
+    // its segment, or a jaw's contact its arc.
     auto geometry = [&](const HeldContact& h, ContactLink& link, double& gap, double& vn) {
         const BallState& sa = balls[at(local(h.a))].state;
         if (isOutOfPlay(sa.motion)) return false;
@@ -190,7 +190,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         gap = d.norm() - radius(h.a) - jaw.radius;
         vn = -sa.velocity.dot(link.normal);
         link.curvature = separationCurvature(d, -sa.velocity);
-        return true;
+        return onJawArc(jaw, sa.position, kContactTolerance);  // (as detection: past the arc, the piece there)
     };
     auto consider = [&](const HeldContact& h, bool isCandidate) {
         ContactLink link;

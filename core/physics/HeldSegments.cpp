@@ -81,8 +81,10 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             const Vec2 d = seg.b - seg.a;
             const double L = d.norm();
             const Vec2 tHat = d / L;
+            // Until the foot leaves the segment: past the tolerance the held geometry (settle) gives
+            // up, so a ball held on a rail never rides the rail's line past its end over a mouth.
             const double f0 = (pa.c0 - seg.a).dot(tHat), f1 = pa.c1.dot(tHat), f2 = pa.c2.dot(tHat);
-            limit = std::min({limit, firstCrossing(f0, f1, f2, 0.0), firstCrossing(f0, f1, f2, L)});
+            limit = std::min({limit, firstCrossing(f0, f1, f2, -kContactTolerance), firstCrossing(f0, f1, f2, L + kContactTolerance)});
             continue;
         }
         Vec2 rel0, rel1, rel2;
@@ -99,6 +101,11 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             rel1 = -pa.c1;
             rel2 = -pa.c2;
             D = radius(h.a) + jaw.radius;
+            // Until the contact leaves the tip's arc: the frozen normal would carry the ball on
+            // along the circle's tangent into the rail nose or the facing (seed37-shot201998).
+            for (const Vec2& run : jaw.runs)
+                if (!run.isZero(0.0))
+                    limit = std::min(limit, firstCrossing(-rel0.dot(run), pa.c1.dot(run), pa.c2.dot(run), kContactTolerance));
         }
         const CircleLimits l = circleLimits<Vec2>(rel0, rel1, rel2, D);
         limit = std::min(limit, l.gap);

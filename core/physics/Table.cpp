@@ -90,6 +90,7 @@ struct RailEnd {
     Vec2 railStart;   // where the straight rail nose begins (tangent point on the nose)
     Vec2 facingStart; // tangent point on the facing
     Vec2 facingDir;   // unit direction of the facing, into the pocket
+    Vec2 railDir;     // unit direction of the rail nose, away from the pocket
     Vec2 jawCentre;
 };
 
@@ -100,6 +101,7 @@ RailEnd makeRailEnd(const Vec2& end, const Vec2& along, const Vec2& inward, cons
     const double sense = (along.x() * inward.y() - along.y() * inward.x()) > 0 ? -1.0 : 1.0;
     RailEnd r;
     r.facingDir = rotated(along, sense * cut);
+    r.railDir = along;
     const double halfWedge = cut / 2.0;
     const double tangentDistance = shape.jawRadius / std::tan(halfWedge);
     r.railStart = end + tangentDistance * along;
@@ -173,7 +175,7 @@ Table makeTable(const TableSpec& spec)
         for (const auto& [end, pocketId, shape] :
              {std::tuple{e1, r.firstPocket, r.firstShape}, std::tuple{e2, r.secondPocket, r.secondShape}}) {
             const std::string suffix = elementSuffix(r.id, pocketId);
-            t.jaws.push_back({"jaw-" + suffix, end.jawCentre, shape->jawRadius});
+            t.jaws.push_back({"jaw-" + suffix, end.jawCentre, shape->jawRadius, {end.railDir, end.facingDir}});
             // The facing runs from the jaw tangent point into the pocket, long enough to reach past
             // the pocket circle. Its normal points away from the cushion body, back towards the
             // mouth: perpendicular to the facing, on the side of the jaw tip's outside.

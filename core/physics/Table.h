@@ -5,6 +5,7 @@
 
 #include "Types.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -27,12 +28,27 @@ struct CushionSegment {
     Vec2 normal = Vec2::Zero();  // unit, pointing out of the cushion towards the balls
 };
 
-// The rounded tip of a cushion at a pocket mouth: a ball touches it at |r - centre| = R + radius.
+// The rounded tip of a cushion at a pocket mouth: a ball touches it at |r - centre| = R + radius, on
+// the arc between the tip's tangent points with the rail nose and the facing. Past either tangent
+// point the straight piece is the nearer body: a ball whose centre lies beyond the line through the
+// tip's centre across that piece ((r - centre) . runs[k] > 0) and touches the circle overlaps the
+// piece by about x^2 / (2 (R + radius)), x its distance past that line.
 struct JawTip {
     std::string id;
     Vec2 centre = Vec2::Zero();  // m
     double radius = 0.0;         // m
+    // Unit directions in which the rail nose and the facing run away from the tip (zero: a whole
+    // circle, every contact on the arc).
+    std::array<Vec2, 2> runs{Vec2::Zero(), Vec2::Zero()};
 };
+
+// Whether a ball centred at p touches the jaw on its arc, not past a tangent point by more than
+// `tolerance` (m).
+inline bool onJawArc(const JawTip& jaw, const Vec2& p, double tolerance)
+{
+    const Vec2 d = p - jaw.centre;
+    return d.dot(jaw.runs[0]) <= tolerance && d.dot(jaw.runs[1]) <= tolerance;
+}
 
 // A ball is pocketed when its centre enters the circle.
 struct Pocket {

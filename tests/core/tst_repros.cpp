@@ -13,6 +13,9 @@
 // seed17-shot18364 hit the cap with a cascade of 15 000 events in 7 microseconds in a frozen cluster
 // (a contact let go at one solve of its group and pressed again by the next); seed23-shot145064 took
 // 47 142 events and a minute to bring a frozen cluster to rest (docs/sustained-contact.md).
+// seed37-shot201998 and seed37-shot762555 were held on a jaw tip past its tangent point with the
+// rail, where the tip's circle lies inside the rail's line: touching the one was overlapping the
+// other (the tip's arc, Table.h's onJawArc); 201998 also started 2.4e-10 m inside the rail.
 //
 // Issue 23's repros, fixtures/repros/airborne/*.json, are elevated strikes of the soak (class
 // elevated, seed 7) run with the strike keeping its vertical part (SimulationOptions::

@@ -1,4 +1,4 @@
-// Table geometry: presets, ids, cushion normals, jaw tangency, pocket placement, overrides.
+// Table geometry: presets, ids, cushion normals, jaw tangency and arcs, pocket placement, overrides.
 
 #include "Table.h"
 
@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <set>
+#include <utility>
 
 using namespace cuelab;
 
@@ -113,12 +114,36 @@ void TestTable::pocketedGeometry()
         QVERIFY2(facing, j.id.c_str());
         QVERIFY2(std::abs(signedDistance(*facing, j.centre) + j.radius) < 1e-12, j.id.c_str());
         // The rail: the one whose nose line passes at distance radius with the jaw behind it.
-        bool tangentToARail = false;
+        const CushionSegment* rail = nullptr;
         for (const auto& c : t.cushions)
             if (c.id.rfind("rail-", 0) == 0 && std::abs(signedDistance(c, j.centre) + j.radius) < 1e-12
                 && ((c.a - j.centre).norm() < 2 * j.radius + 1e-9 || (c.b - j.centre).norm() < 2 * j.radius + 1e-9))
-                tangentToARail = true;
-        QVERIFY2(tangentToARail, j.id.c_str());
+                rail = &c;
+        QVERIFY2(rail, j.id.c_str());
+
+        // The arc a ball touches runs between the tangent points: runs[0] along the rail's nose away
+        // from the pocket, runs[1] along the facing into it, each perpendicular to its piece's normal
+        // and pointing from the tangent point along the piece's segment.
+        const double R = t.ballRadius;
+        for (const auto& [run, piece] : {std::pair{j.runs[0], rail}, std::pair{j.runs[1], facing}}) {
+            QVERIFY2(std::abs(run.norm() - 1.0) < 1e-15, j.id.c_str());
+            QVERIFY2(std::abs(run.dot(piece->normal)) < 1e-12, j.id.c_str());
+            const Vec2 tangentPoint = j.centre + j.radius * piece->normal;
+            const Vec2 alongPiece = tangentPoint + 1e-3 * run;
+            const double foot = (alongPiece - piece->a).dot((piece->b - piece->a).normalized());
+            QVERIFY2(foot > 0.0 && foot < (piece->b - piece->a).norm(), j.id.c_str());
+            // A ball touching the tip at the tangent point is on the arc (and on the piece's line);
+            // touching the circle 1 mm past it, it is off the arc, and overlaps the piece.
+            const Vec2 atTangent = j.centre + (j.radius + R) * piece->normal;
+            QVERIFY2(onJawArc(j, atTangent, 1e-12), j.id.c_str());
+            QVERIFY2(std::abs(signedDistance(*piece, atTangent) - R) < 1e-12, j.id.c_str());
+            const Vec2 past = j.centre + (j.radius + R) * (piece->normal + 1e-3 / (j.radius + R) * run).normalized();
+            QVERIFY2(!onJawArc(j, past, 1e-10), j.id.c_str());
+            QVERIFY2(signedDistance(*piece, past) < R - 1e-9, j.id.c_str());
+        }
+        // Halfway between the tangent points the ball is on the arc.
+        const Vec2 mid = (rail->normal + facing->normal).normalized();
+        QVERIFY2(onJawArc(j, j.centre + (j.radius + R) * mid, 0.0), j.id.c_str());
     }
 
     // Pockets lie outside the playing surface but reach its edge; the layout is symmetric about the
