@@ -129,7 +129,7 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
     {
         const double g0 = f.n[0] - radius, g1 = f.n[1], g2 = f.n[2];
         const bool below = f.w[0] <= kBoundaryTolerance;
-        if (std::abs(g0) <= kContactTolerance && below && onSegment(0.0) &&
+        if (g0 <= kContactTolerance && g0 >= -kSunkTolerance && below && onSegment(0.0) &&
             (g1 < -kRestingSpeed || (g1 <= kRestingSpeed && g2 < 0.0) ||
              (g1 > 0.0 && g2 < 0.0 && g0 + g1 * g1 / (-4.0 * g2) <= kContactTolerance)))
             offer(0.0, CushionContactKind::Face);
@@ -226,7 +226,11 @@ double airJawSideTime(const SpacePath& p, double radius, const JawTip& jaw, doub
 {
     const Vec2 d0 = p.c0.head<2>() - jaw.centre, d1 = p.c1.head<2>(), d2 = p.c2.head<2>();
     const double reach = radius + jaw.radius;
-    auto below = [&](double s) { return p.at(s).z() - noseHeight <= kBoundaryTolerance; };
+    // Below the nose and on the tip's arc (past it, the rail nose or the facing is the body touched).
+    auto below = [&](double s) {
+        const Vec3 at = p.at(s);
+        return at.z() - noseHeight <= kBoundaryTolerance && onJawArc(jaw, at.head<2>(), kContactTolerance);
+    };
     if (below(0.0) && touchingContactNow<Vec2>(d0, d1, d2, reach)) return 0.0;
     return firstFallingRootWhere(distanceQuartic<Vec2>(d0, d1, d2, reach), horizon, below);
 }
@@ -265,7 +269,8 @@ AirCushionContact airJawContact(const SpacePath& p, double radius, const JawTip&
     {
         const double r0 = d0.norm();
         const double dist = std::hypot(r0 - rj, w0);
-        if (std::abs(dist - radius) <= kContactTolerance && r0 >= rj && w0 >= 0.0 && r0 > 0.0) {
+        if (std::abs(dist - radius) <= kContactTolerance && r0 >= rj && w0 >= 0.0 && r0 > 0.0 &&
+            onJawArc(jaw, p.c0.head<2>(), kContactTolerance)) {
             // The normal speed: the rate of the distance, ((rho - rj) rho' + w w') / dist.
             const double rate = ((r0 - rj) * d0.dot(d1) / r0 + w0 * w1) / dist;
             if (rate < -kRestingSpeed) offer(0.0, CushionContactKind::Nose);
@@ -290,7 +295,7 @@ AirCushionContact airJawContact(const SpacePath& p, double radius, const JawTip&
             if (s == kNever || s >= best.time) break;
             // Falling through the root, on the rim's branch: at or outside the cylinder and at or
             // above the top.
-            if (slopeOf(s) < 0.0 && rho(s) >= rj && wAt(s) >= 0.0) {
+            if (slopeOf(s) < 0.0 && rho(s) >= rj && wAt(s) >= 0.0 && onJawArc(jaw, p.at(s).head<2>(), kContactTolerance)) {
                 offer(s, CushionContactKind::Nose);
                 break;
             }
