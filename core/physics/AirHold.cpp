@@ -17,9 +17,11 @@
 // leaves B's surface, the pendulum's release), the gap passes kHeldGap, or an event of either ball
 // comes first (its landing included).
 //
-// Left out: friction between the balls while held (mu_b about 0.05 against the press), a held pair
-// whose B is also held by the cloth or pressed by a second flying ball (detection meets those as
-// before), and a flying ball held on a cushion's nose or a jaw (docs/dev/issue-23-open).
+// A B that the cloth holds in a group takes A into the group instead (groupHoldable: A's contact is a
+// row in space of the group's problem, HeldContacts.cpp, Contact.h's ContactLink::nz).
+//
+// Left out: friction between the balls while held (mu_b about 0.05 against the press), a B pressed
+// by a second flying ball (detection meets it as before), and a flying ball held on a jaw's rim.
 
 #include "Simulator.h"
 
@@ -52,6 +54,13 @@ bool Simulator::airHoldable(int a, int b) const
     if (heldCount_[at(a)] > 0 || heldCount_[at(b)] > 0) return false;
     if (airEdge_[at(a)] >= 0 || airEdge_[at(b)] >= 0) return false;
     return (airHeld_[at(a)] < 0 || airHeld_[at(a)] == b) && (airHeld_[at(b)] < 0 || airHeld_[at(b)] == a);
+}
+
+bool Simulator::groupHoldable(int a, int b) const
+{
+    if (!flying(a) || flying(b) || series_[at(a)] || series_[at(b)] || isOutOfPlay(state_[at(b)].motion)) return false;
+    if (airHeldAny(a) || airHeldAny(b)) return false;
+    return heldCount_[at(a)] > 0 || heldCount_[at(b)] > 0;
 }
 
 Simulator::AirHoldForce Simulator::airHoldForce(int a, int b, const BallState& sa, const BallState& sb) const

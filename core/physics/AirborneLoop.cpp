@@ -293,10 +293,17 @@ void Simulator::land(int i, double t)
     // ball lands for good at the series' end now, as a flight's continuation does (Motion.cpp's
     // applyTransition, which the results' states past a segment's end follow).
     const bool settles = 2.0 * one.vz < 1e-12 * p_.gravity && b.duration != kNever;
-    const bool whole = !settles && b.duration > 0.0 && b.duration != kNever && seriesIsolated(i, b, t);
+    // (A ball held on a group of the cloth lands alone, and its group is solved again with it.)
+    const bool inGroup = heldCount_[at(i)] > 0;
+    const bool whole = !inGroup && !settles && b.duration > 0.0 && b.duration != kNever && seriesIsolated(i, b, t);
     e.after[0] = settles ? b.end : whole ? seriesStateAt(b, 0.0) : one;
     e.after[0].motion = classify(e.after[0], R);
     e.impulse = m * (velocity3(e.after[0]) - velocity3(landing));
+    if (inGroup) {
+        if (e.after[0].motion != MotionState::Airborne) bounces_[at(i)] = 0;
+        finishEvent(t, e);
+        return;
+    }
     r_.events.push_back(e);
     if (whole) {
         beginSeries(i, t, landing, b);
@@ -455,8 +462,10 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
             }
             r_.events.pop_back();
             e.held = false;
-        } else if (!heldFlight(a) && apexHeight(e.before[a == i ? 0 : 1], p_.gravity) <= kHeldGap) {
-            // Not holdable (b is held by the cloth in a group: its forces press it on a), and a's hop
+        }
+        if (!heldFlight(a) && apexHeight(e.before[a == i ? 0 : 1], p_.gravity) <= kHeldGap) {
+            // Not held (b is held by the cloth in a group, or the air hold finds no force: the cloth's
+            // friction presses b on a level a, seed11-shot4654's 9.4e-12 m hop), and a's hop
             // stays within kHeldGap of the cloth (a frictional law's vertical throw of a few
             // nanometres: seed7-shot190, 1.9e-9 m): the cloth takes the hop, as a landing does, and
             // the pair meets again on the cloth, where the group holds it. The event is that landing.
@@ -474,6 +483,17 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
             land.impulse = Vec3(0.0, 0.0, -mass(a) * before.vz);
             finishEvent(e.time, land);
             return;
+        } else if (groupHoldable(a, b)) {
+            // b is held by the cloth in a group (or a is held on one): a's contact joins that group as
+            // a row in space (Contact.h's ContactLink::nz), held as the group's others are. The event
+            // marks where the hold begins; the group's re-seating may take away a rounding's approach.
+            e.after[0] = e.before[0];
+            e.after[1] = e.before[1];
+            e.normal = res.normal.head<2>().norm() > 0.0 ? Vec2(res.normal.head<2>().normalized()) : Vec2(Vec2::Zero());
+            e.contactPoint = e.before[0].position + radius(i) * res.normal.head<2>();
+            e.approachSpeed = res.approachSpeed;
+            e.impulse = Vec3::Zero();
+            if (holdCollision(e, HeldContact{i, ContactBody::Ball, j}, 0.0)) return;
         }
     }
     e.after[0] = res.a;

@@ -16,6 +16,8 @@ struct Response {
     bool atRest = false;     // starts from rest: rolls off if pushed hard enough
     Vec2 restDirection = Vec2::Zero();  // unit, the direction a ball at rest is assumed to start in
     bool pinned = false;  // held still by the cloth whatever the forces (no fixed point, see solveContacts)
+    bool flying = false;  // in the air: answers in 3-D with c = 1 (ContactLink::nz)
+    double a0z = 0.0;     // m/s^2, a flying ball's vertical acceleration without the force (-g)
 };
 
 bool restsOnCloth(const BallState& s)
@@ -30,6 +32,12 @@ Response responseOf(const ContactBall& b, const PhysicsParams& p)
     Response r;
     const BallState& s = b.state;
     if (s.motion == MotionState::Pocketed) return r;
+    if (s.motion == MotionState::Airborne) {
+        r.c = 1.0;
+        r.flying = true;
+        r.a0z = -p.gravity;
+        return r;
+    }
     if (s.motion == MotionState::Sliding) {
         const Vec2 u = slipVelocity(s, b.radius);
         r.c = 1.0;
@@ -55,10 +63,15 @@ void buildSystem(const std::vector<ContactBall>& balls, const std::vector<Contac
     const Eigen::Index m = static_cast<Eigen::Index>(links.size());
     A.setZero(m, m);
     b.setZero(m);
+    // The vertical parts, only where a ball flies (a group on the cloth adds not even a zero).
+    bool spatial = false;
+    for (const Response& r : resp) spatial = spatial || r.flying;
     auto acc0 = [&](int i) { return i < 0 ? Vec2(Vec2::Zero()) : resp[static_cast<std::size_t>(i)].a0; };
+    auto acc0z = [&](int i) { return i < 0 ? 0.0 : resp[static_cast<std::size_t>(i)].a0z; };
     for (Eigen::Index k = 0; k < m; ++k) {
         const ContactLink& lk = links[static_cast<std::size_t>(k)];
         b(k) = (acc0(lk.b) - acc0(lk.a)).dot(lk.normal) + curvature * lk.curvature;
+        if (spatial) b(k) += (acc0z(lk.b) - acc0z(lk.a)) * lk.nz;
     }
     for (Eigen::Index l = 0; l < m; ++l) {
         const ContactLink& ll = links[static_cast<std::size_t>(l)];
@@ -72,9 +85,15 @@ void buildSystem(const std::vector<ContactBall>& balls, const std::vector<Contac
             if (i == ll.b) out += k * ll.normal;
             return out;
         };
+        auto responseZ = [&](int i) {  // (only a flying ball answers vertically)
+            if (i < 0 || !resp[static_cast<std::size_t>(i)].flying) return 0.0;
+            const double k = resp[static_cast<std::size_t>(i)].c / balls[static_cast<std::size_t>(i)].mass;
+            return (i == ll.b ? k * ll.nz : 0.0) - (i == ll.a ? k * ll.nz : 0.0);
+        };
         for (Eigen::Index k = 0; k < m; ++k) {
             const ContactLink& lk = links[static_cast<std::size_t>(k)];
             A(k, l) = (response(lk.b) - response(lk.a)).dot(lk.normal);
+            if (spatial) A(k, l) += (responseZ(lk.b) - responseZ(lk.a)) * lk.nz;
         }
     }
 }
@@ -225,7 +244,10 @@ Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactL
 {
     const std::size_t n = balls.size();
     std::vector<Response> resp(n);
-    for (std::size_t i = 0; i < n; ++i) resp[i].c = contactResponse(balls[i].state);
+    for (std::size_t i = 0; i < n; ++i) {
+        resp[i].flying = balls[i].state.motion == MotionState::Airborne;
+        resp[i].c = resp[i].flying ? 1.0 : contactResponse(balls[i].state);
+    }
     Eigen::MatrixXd A;
     Eigen::VectorXd b, P;
     buildSystem(balls, links, resp, 0.0, A, b);
@@ -235,6 +257,7 @@ Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactL
     out.converged = solveLcp(A, b, held, -1, P, active);
     const Eigen::VectorXd after = b + A * P;
     std::vector<Vec2> J(n, Vec2::Zero());
+    std::vector<double> Jz(n, 0.0);
     out.impulse.resize(links.size());
     out.after.resize(links.size());
     for (std::size_t k = 0; k < links.size(); ++k) {
@@ -242,9 +265,21 @@ Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactL
         out.after[k] = after(static_cast<Eigen::Index>(k));
         const ContactLink& l = links[k];
         J[static_cast<std::size_t>(l.a)] -= out.impulse[k] * l.normal;
-        if (l.b >= 0) J[static_cast<std::size_t>(l.b)] += out.impulse[k] * l.normal;
+        Jz[static_cast<std::size_t>(l.a)] -= out.impulse[k] * l.nz;
+        if (l.b >= 0) {
+            J[static_cast<std::size_t>(l.b)] += out.impulse[k] * l.normal;
+            Jz[static_cast<std::size_t>(l.b)] += out.impulse[k] * l.nz;
+        }
     }
-    for (std::size_t i = 0; i < n; ++i) applyContactImpulse(balls[i].state, balls[i].radius, balls[i].mass, J[i]);
+    for (std::size_t i = 0; i < n; ++i) {
+        BallState& s = balls[i].state;
+        if (resp[i].flying) {  // free in 3-D, through its centre: no spin
+            s.velocity += J[i] / balls[i].mass;
+            s.vz += Jz[i] / balls[i].mass;
+        } else {
+            applyContactImpulse(s, balls[i].radius, balls[i].mass, J[i]);
+        }
+    }
     return out;
 }
 
@@ -260,6 +295,7 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
     Eigen::VectorXd b, N;
     const std::vector<char> unilateral(links.size(), 0);
     std::vector<Vec2> force(n, Vec2::Zero());
+    std::vector<double> forceZ(n, 0.0);
     // A ball at rest either rolls off (when 5/7 |F| / m beats its rolling resistance mu_r g, which
     // then acts against the direction of F) or stays put, taking the force like a wall. Which one
     // depends on the forces: a few rounds of a fixed point, each a full solve.
@@ -269,10 +305,17 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
         const std::vector<char> previous = out.active;
         out.converged = solveLcp(A, b, unilateral, maxPivots, N, out.active, previous.empty() ? nullptr : &previous);
         std::fill(force.begin(), force.end(), Vec2::Zero());
+        std::fill(forceZ.begin(), forceZ.end(), 0.0);
         for (std::size_t k = 0; k < links.size(); ++k) {
             const double f = N(static_cast<Eigen::Index>(k));
-            if (links[k].a >= 0) force[static_cast<std::size_t>(links[k].a)] -= f * links[k].normal;
-            if (links[k].b >= 0) force[static_cast<std::size_t>(links[k].b)] += f * links[k].normal;
+            if (links[k].a >= 0) {
+                force[static_cast<std::size_t>(links[k].a)] -= f * links[k].normal;
+                forceZ[static_cast<std::size_t>(links[k].a)] -= f * links[k].nz;
+            }
+            if (links[k].b >= 0) {
+                force[static_cast<std::size_t>(links[k].b)] += f * links[k].normal;
+                forceZ[static_cast<std::size_t>(links[k].b)] += f * links[k].nz;
+            }
         }
     };
     // No fixed point within 16 rounds (the direction a ball at rest would roll off in keeps changing
@@ -319,10 +362,16 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
     out.force.resize(links.size());
     for (std::size_t k = 0; k < links.size(); ++k) out.force[k] = N(static_cast<Eigen::Index>(k));
     out.push.assign(n, Vec2::Zero());
+    out.pushZ.assign(n, 0.0);
     out.label.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const BallState& s = balls[i].state;
         out.label[i] = s.motion;
+        if (resp[i].flying) {  // it flies on, pushed in 3-D (Flight.h's held flight)
+            out.push[i] = force[i] / balls[i].mass;
+            out.pushZ[i] = forceZ[i] / balls[i].mass;
+            continue;
+        }
         if (resp[i].c == 0.0 || force[i].isZero(0.0)) {
             if (resp[i].atRest) out.label[i] = classify(s, balls[i].radius);
             continue;

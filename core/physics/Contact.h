@@ -106,10 +106,16 @@ struct ContactBall {
 };
 
 // A contact for the solver: balls by their place in the group's list; `b` < 0 for a fixed body.
+// A link of two balls on the cloth lies in the plane. A link with a flying ball (state.motion
+// Airborne: a ball pressed from above on a ball of the group, issue 23) has a tilted normal: `normal`
+// is then its horizontal part and `nz` its vertical part, (normal, nz) unit. The flying ball answers
+// a force in all three directions (1/m, and gravity is its free acceleration); a ball on the cloth
+// answers only its horizontal part (the cloth takes the vertical one).
 struct ContactLink {
     int a = -1;
     int b = -1;
-    Vec2 normal = Vec2::Zero();  // unit, from a towards the other body
+    Vec2 normal = Vec2::Zero();  // unit, from a towards the other body (its horizontal part: above)
+    double nz = 0.0;             // the normal's vertical part, up (0 for a link in the plane)
     // m/s^2: |v_t|^2 / D, the relative tangential speed squared over the distance between the centre of
     // a and the other body's centre (or, for a straight cushion, 0). Two bodies that slide past each
     // other at the distance D part with this normal acceleration even with no force between them: the
@@ -136,6 +142,7 @@ struct ContactSolution {
     std::vector<char> active;        // per link: held (carries the constraint g = 0)
     std::vector<double> accel;       // m/s^2, per link: the relative normal acceleration g (>= 0)
     std::vector<Vec2> push;          // m/s^2, per ball: its net contact force over its mass
+    std::vector<double> pushZ;       // m/s^2, per ball: its vertical part (a flying ball's; else 0)
     std::vector<MotionState> label;  // per ball: the motion label of its pushed segment
     // false when the pivoting ran out of steps: then the forces are the projected Gauss-Seidel
     // iteration's (non-negative, complementary to rounding only approximately), never dropped.

@@ -119,7 +119,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     auto relabel = [&](std::size_t m) {
         ContactBall& cb = balls[m];
         BallState& st = cb.state;
-        if (isOutOfPlay(st.motion)) return;
+        if (isOutOfPlay(st.motion) || st.motion == MotionState::Airborne) return;  // (flying: it keeps flying)
         if (st.motion == MotionState::Sliding && (slipHasEnded(st, cb.radius) || tiny(m, st, cb.radius))) rollOut(st, cb.radius);
         st.motion = classify(st, cb.radius);
     };
@@ -129,7 +129,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         const auto ev = std::find(eventBalls.begin(), eventBalls.end(), b);
         if (ev != eventBalls.end()) {
             balls[m].state = eventStates[static_cast<std::size_t>(ev - eventBalls.begin())];
-        } else if (end_[at(b)] <= t) {
+        } else if (end_[at(b)] <= t && !flying(b)) {  // (a flying ball's end is its landing: an event)
             // Its own transition is due at this very instant: it happens first (its event is logged
             // here, so that solving the group now does not swallow it).
             Event tr;
@@ -150,6 +150,11 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         relabel(m);
     }
 
+    // A link with a flying ball (ContactLink::nz; only ball-ball links fly).
+    auto inSpace = [&](const ContactLink& l) {
+        return balls[at(l.a)].state.motion == MotionState::Airborne ||
+               (l.b >= 0 && balls[at(l.b)].state.motion == MotionState::Airborne);
+    };
     // The contacts that may hold: touching (within kHeldGap), no faster normal relative speed than
     // kHoldSpeed, nobody pocketed (the others are released here), and the candidate.
     std::vector<HeldContact> contacts;
@@ -166,9 +171,24 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         if (h.body == ContactBody::Ball) {
             const BallState& sb = balls[at(local(h.other))].state;
             if (isOutOfPlay(sb.motion)) return false;
+            link.b = local(h.other);
+            if (sa.motion == MotionState::Airborne || sb.motion == MotionState::Airborne) {
+                // A flying ball pressed on a ball of the group (issue 23): the contact in space, its
+                // normal tilted (ContactLink::nz).
+                const Vec3 d(sb.position.x() - sa.position.x(), sb.position.y() - sa.position.y(),
+                             (radius(h.other) + sb.z) - (radius(h.a) + sa.z));
+                const Vec3 v(sb.velocity.x() - sa.velocity.x(), sb.velocity.y() - sa.velocity.y(), sb.vz - sa.vz);
+                const double dist = d.norm();
+                const Vec3 n = d / dist;
+                link.normal = n.head<2>();
+                link.nz = n.z();
+                gap = dist - (radius(h.a) + radius(h.other));
+                vn = v.dot(n);
+                link.curvature = std::max(0.0, v.squaredNorm() - vn * vn) / dist;
+                return dist > 0.0;
+            }
             const Vec2 d = sb.position - sa.position;
             const Vec2 v = sb.velocity - sa.velocity;
-            link.b = local(h.other);
             link.normal = d.normalized();
             gap = d.norm() - touchDistance(radius(h.a), radius(h.other));
             vn = v.dot(link.normal);
@@ -366,7 +386,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             if (!keep[k]) continue;
             const HeldContact& h = contacts[k];
             ContactLink& link = keptLinks[r++];
-            if (h.body == ContactBody::Cushion || flat[k]) continue;
+            if (h.body == ContactBody::Cushion || flat[k] || inSpace(link)) continue;  // (in space: turnLimit)
             const Path& pa = paths[at(local(h.a))];
             CircleLimits l;
             if (h.body == ContactBody::Ball) {
@@ -422,6 +442,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         for (std::size_t k = 0; k < links.size(); ++k) {
             if (keep[k] || approaching[k]) continue;
             const HeldContact& h = contacts[k];
+            if (inSpace(links[k])) continue;  // (a flying ball let go parts: its forces no longer press it)
             const Path pa = pathOfMember(links[k].a);
             constexpr double kNow = 1e-300;  // s: detection's horizon, "at once"
             double when = kNever;
@@ -468,11 +489,13 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         const int b = members[m];
         BallState s = balls[m].state;
         Vec2 push = Vec2::Zero();
+        double pushZ = 0.0;  // (a flying member's)
         if (!keptLinks.empty() && heldCount_[at(b)] > 0 && !isOutOfPlay(s.motion)) {
             push = sol.push[m];
+            pushZ = sol.pushZ[m];
             s.motion = sol.label[m];
         }
-        if (push_[at(b)].isZero(0.0) && push.isZero(0.0) &&
+        if (push_[at(b)].isZero(0.0) && push.isZero(0.0) && pushZ_[at(b)] == 0.0 && pushZ == 0.0 &&
             std::find(eventBalls.begin(), eventBalls.end(), b) == eventBalls.end()) {
             const BallState now = stateNow(b, t);
             idle[m] = now.motion == s.motion && now.position == s.position && now.velocity == s.velocity && now.spin == s.spin;
@@ -482,16 +505,20 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         noteStop(state_[at(b)].motion, s.motion, t);
         state_[at(b)] = s;
         push_[at(b)] = push;
+        pushZ_[at(b)] = pushZ;
         path_[at(b)] = pathOf(s, radius(b), p_, push);
     }
     bool pushed = false;
-    for (int b : members) pushed = pushed || !push_[at(b)].isZero(0.0);
+    for (int b : members) pushed = pushed || !push_[at(b)].isZero(0.0) || pushZ_[at(b)] != 0.0;
     // (Held contacts without force still turn their normals: the segment is bounded for them too.)
     const double limit = pushed || !kept.empty() ? t + turnLimit(t, members, kept) : kNever;
     for (std::size_t m = 0; m < members.size(); ++m) {
         const int b = members[m];
         regroupAt_[at(b)] = heldCount_[at(b)] > 0 ? limit : kNever;
-        if (!idle[m]) {
+        if (!idle[m] && heldFlight(b)) {  // a flying member held on the group: Flight.h's held flight
+            beginHeldFlight(b, t, state_[at(b)], push3(b));
+            box_[at(b)] = boxOf(path_[at(b)], std::min(end_[at(b)], regroupAt_[at(b)]) - t);
+        } else if (!idle[m]) {
             beginSegment(b, t, state_[at(b)], push_[at(b)]);
         } else {  // its window of predictions ends at its own transition or at the group's next solve
             const double s0 = start_[at(b)];

@@ -40,7 +40,7 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
     for (int m : members) {
         const BallState& s = state_[at(m)];
         const Vec2& q = push_[at(m)];
-        if (q.isZero(0.0)) continue;
+        if (q.isZero(0.0) || s.motion == MotionState::Airborne) continue;  // (a flying ball has no cloth friction)
         Vec2 x0 = Vec2::Zero(), rate = Vec2::Zero();  // the frozen vector and how fast it changes
         if (s.motion == MotionState::Sliding) {
             x0 = slipVelocity(s, radius(m));
@@ -85,6 +85,13 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             // up, so a ball held on a rail never rides the rail's line past its end over a mouth.
             const double f0 = (pa.c0 - seg.a).dot(tHat), f1 = pa.c1.dot(tHat), f2 = pa.c2.dot(tHat);
             limit = std::min({limit, firstCrossing(f0, f1, f2, -kContactTolerance), firstCrossing(f0, f1, f2, L + kContactTolerance)});
+            continue;
+        }
+        if (h.body == ContactBody::Ball && (flying(h.a) || flying(h.other))) {
+            // A flying ball pressed on a ball of the group: the same limits in space.
+            const SpacePath sa = spaceNow(h.a, t), sb = spaceNow(h.other, t);
+            const CircleLimits l = circleLimits<Vec3>(sb.c0 - sa.c0, sb.c1 - sa.c1, sb.c2 - sa.c2, radius(h.a) + radius(h.other));
+            limit = std::min({limit, l.gap, l.drop});
             continue;
         }
         Vec2 rel0, rel1, rel2;

@@ -129,7 +129,10 @@ double Simulator::pairTime(int i, int j, double now) const
     if (isOutOfPlay(a.motion) || isOutOfPlay(b.motion)) return kNever;
     if (series_[at(i)] || series_[at(j)]) return seriesPairTime(i, j, now);
     if (airHeld_[at(i)] == j) return kNever;  // held together in the air
-    if (a.motion == MotionState::Airborne || b.motion == MotionState::Airborne) return airPairTime(i, j, now);
+    if (a.motion == MotionState::Airborne || b.motion == MotionState::Airborne) {
+        if (heldCount_[at(i)] > 0 && heldCount_[at(j)] > 0 && heldPair(i, j)) return kNever;  // held together in a group
+        return airPairTime(i, j, now);
+    }
     const bool aMoves = a.motion == MotionState::Sliding || a.motion == MotionState::Rolling;
     const bool bMoves = b.motion == MotionState::Sliding || b.motion == MotionState::Rolling;
     if (!aMoves && !bMoves) return kNever;

@@ -135,6 +135,9 @@ private:
     // Flying ball a and ball b on the cloth may be held together: neither is held by the cloth, in a
     // bounce series or held in the air with a third ball.
     bool airHoldable(int a, int b) const;
+    // A flying ball a pressed on a ball b of the cloth that a group holds (or a itself held on one):
+    // their contact joins the group (settle) as a row in space.
+    bool groupHoldable(int a, int b) const;
     struct AirHoldForce {
         double force = 0.0;          // N, along the normal (> 0 pressed)
         double gap = 0.0;            // m

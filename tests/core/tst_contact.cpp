@@ -1,6 +1,7 @@
 // Sustained contact (Contact.h): pushes are held contacts, not cascades of micro-collisions. Closed
 // forms of a push derived by hand, the event counts of the push cases, and the invariants (no
-// overlap, energy never rising) on pushes along and off the line of centres.
+// overlap, energy never rising) on pushes along and off the line of centres; a flying ball pressed on
+// a ball of a group (a row in space).
 
 #include "Contact.h"
 #include "Motion.h"
@@ -79,6 +80,8 @@ private slots:
     void pushCasesCostFewEvents();
     void pushOffTheLineOfCentres();
     void solverComplementarity();
+    void flyingBallOnAGroupMember_data();
+    void flyingBallOnAGroupMember();
 };
 
 // A ball with topspin and no speed touching a ball at rest: its cloth friction mu_s g drives it into
@@ -260,6 +263,52 @@ void TestContact::solverComplementarity()
         const Path path = pathOf(s, R, p, sol.push[k]);
         QVERIFY2(std::abs(path.c2.x()) <= 1e-12, qPrintable(QString::number(k)));
     }
+}
+
+void TestContact::flyingBallOnAGroupMember_data()
+{
+    QTest::addColumn<double>("angle");  // degrees of the line from b's centre to a's above the cloth
+    QTest::newRow("30") << 30.0;
+    QTest::newRow("60") << 60.0;
+    QTest::newRow("90 (on top)") << 90.0;
+}
+
+// A flying ball a pressed on the shoulder of a ball b at rest on the cloth, b against a wall on the
+// far side (issue 23: the flying ball's contact as a row in space, ContactLink::nz). The wall and the
+// cloth hold b, so a slides down b's surface as down a fixed sphere: by hand, with the line from b to
+// a at angle theta above the cloth, N = m g sin(theta) and a's acceleration -g cos(theta) (sin, cos)
+// in the (x, z) plane, along the tangent (no normal part: the pair stays in contact).
+void TestContact::flyingBallOnAGroupMember()
+{
+    QFETCH(double, angle);
+    const double theta = angle * M_PI / 180.0, c = std::cos(theta), s = std::sin(theta);
+    PhysicsParams p;
+    const double R = 0.028575, m = 0.170097;
+    std::vector<ContactBall> balls(2);
+    for (ContactBall& b : balls) {
+        b.radius = R;
+        b.mass = m;
+    }
+    balls[1].state.position = Vec2(0.5, 0.5);
+    balls[1].state.motion = MotionState::Stationary;
+    balls[0].state.position = Vec2(0.5 - 2 * R * c, 0.5);
+    balls[0].state.z = 2 * R * s;
+    balls[0].state.motion = MotionState::Airborne;
+    ContactLink onShoulder{0, 1, Vec2(c, 0.0)};  // from a towards b: (cos, 0, -sin)
+    onShoulder.nz = -s;
+    const std::vector<ContactLink> links = {onShoulder, {1, -1, Vec2(1, 0)}};
+    const ContactSolution sol = solveContacts(balls, links, p);
+    QVERIFY(sol.converged);
+    const double g = p.gravity;
+    QVERIFY2(std::abs(sol.force[0] - m * g * s) <= 1e-12, qPrintable(QString::number(sol.force[0], 'g', 17)));
+    QVERIFY(std::abs(sol.push[0].x() + g * s * c) <= 1e-12);
+    QVERIFY(std::abs(sol.push[0].y()) <= 1e-15);
+    QVERIFY(std::abs(sol.pushZ[0] - g * s * s) <= 1e-12);
+    QVERIFY(sol.label[0] == MotionState::Airborne);
+    // b does not move: the wall and the cloth take the push.
+    QVERIFY(sol.push[1].isZero(0.0));
+    QCOMPARE(sol.pushZ[1], 0.0);
+    QVERIFY(sol.accel[0] >= -1e-12 && sol.accel[0] <= 1e-12);
 }
 
 QTEST_APPLESS_MAIN(TestContact)
