@@ -32,12 +32,6 @@
 
 namespace cuelab::detail {
 
-namespace {
-
-Vec3 velocity3(const BallState& s) { return Vec3(s.velocity.x(), s.velocity.y(), s.vz); }
-
-}  // namespace
-
 SpacePath Simulator::spaceNow(int i, double now) const
 {
     const double r = radius(i);
@@ -67,17 +61,14 @@ Simulator::AirHoldForce Simulator::airHoldForce(int a, int b, const BallState& s
 {
     AirHoldForce f;
     const double Ra = radius(a), Rb = radius(b), ma = mass(a), mb = mass(b), g = p_.gravity;
-    const Vec3 d(sa.position.x() - sb.position.x(), sa.position.y() - sb.position.y(), (Ra + sa.z) - (Rb + sb.z));
-    const double dist = d.norm();
-    if (!(dist > 0.0)) return f;
-    const Vec3 n = d / dist;
-    f.gap = dist - (Ra + Rb);
-    const Vec3 v = velocity3(sa) - velocity3(sb);
-    f.normalSpeed = v.dot(n);
-    const double vt2 = std::max(0.0, v.squaredNorm() - f.normalSpeed * f.normalSpeed);
+    const SpaceContact sc = spaceContact(sb, Rb, sa, Ra);  // (n from b to a)
+    if (!(sc.distance > 0.0)) return f;
+    const Vec3& n = sc.normal;
+    f.gap = sc.gap;
+    f.normalSpeed = sc.normalSpeed;
     const Vec2 nh = n.head<2>();
     const double nh2 = nh.squaredNorm(), nhLength = std::sqrt(nh2);
-    const double curvature = kHeldCurvatureShare * vt2 / dist;
+    const double curvature = kHeldCurvatureShare * sc.tangentSpeed2 / sc.distance;
     double c = 0.0;
     Vec2 friction = Vec2::Zero();  // b's cloth friction along its frozen direction (m/s^2)
     f.labelB = sb.motion;

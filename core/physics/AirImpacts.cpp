@@ -9,8 +9,6 @@ namespace cuelab {
 
 namespace {
 
-Vec3 velocity3(const AirState& s) { return Vec3(s.velocity.x(), s.velocity.y(), s.vz); }
-
 void setVelocity3(AirState& s, const Vec3& v)
 {
     s.velocity = v.head<2>();

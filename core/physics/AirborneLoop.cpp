@@ -30,8 +30,6 @@ bool boxesWithin(const Box& a, const Box& b, double distance)
            && b.lo.y() - distance <= a.hi.y();
 }
 
-Vec3 velocity3(const BallState& s) { return Vec3(s.velocity.x(), s.velocity.y(), s.vz); }
-
 // Whether the box comes within `reach` of a cushion's slab: the region behind its nose line (and up
 // to reach in front of it) over the segment's length (and reach past its ends). A flying ball can
 // meet the slab anywhere behind the line (its top, its ends: airCushionContact), not only near the
@@ -446,12 +444,15 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
     // begins and changes no velocity.
     if (res.approachSpeed <= kRestingSpeed && res.impulse.isZero(0.0)) {
         const int a = flying(i) ? i : j, b = a == i ? j : i;
+        // A held event marks where the hold begins and changes no velocity (the fall-through below
+        // sets every one of these fields again for the law's result).
+        e.after[0] = e.before[0];
+        e.after[1] = e.before[1];
+        e.normal = res.normal.head<2>().norm() > 0.0 ? Vec2(res.normal.head<2>().normalized()) : Vec2(Vec2::Zero());
+        e.contactPoint = e.before[0].position + radius(i) * res.normal.head<2>();
+        e.approachSpeed = res.approachSpeed;
+        e.impulse = Vec3::Zero();
         if (airHoldable(a, b)) {
-            e.after[0] = e.before[0];
-            e.after[1] = e.before[1];
-            e.normal = res.normal.head<2>().norm() > 0.0 ? Vec2(res.normal.head<2>().normalized()) : Vec2(Vec2::Zero());
-            e.contactPoint = e.before[0].position + radius(i) * res.normal.head<2>();
-            e.approachSpeed = res.approachSpeed;
             e.held = true;  // (with no hold impulse: a pressed pair may part by a few nm/s, Detection.h)
             const std::size_t index = r_.events.size();
             r_.events.push_back(e);
@@ -485,14 +486,8 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
             return;
         } else if (groupHoldable(a, b)) {
             // b is held by the cloth in a group (or a is held on one): a's contact joins that group as
-            // a row in space (Contact.h's ContactLink::nz), held as the group's others are. The event
-            // marks where the hold begins; the group's re-seating may take away a rounding's approach.
-            e.after[0] = e.before[0];
-            e.after[1] = e.before[1];
-            e.normal = res.normal.head<2>().norm() > 0.0 ? Vec2(res.normal.head<2>().normalized()) : Vec2(Vec2::Zero());
-            e.contactPoint = e.before[0].position + radius(i) * res.normal.head<2>();
-            e.approachSpeed = res.approachSpeed;
-            e.impulse = Vec3::Zero();
+            // a row in space (Contact.h's ContactLink::nz), held as the group's others are (its
+            // re-seating may take away a rounding's approach).
             if (holdCollision(e, HeldContact{i, ContactBody::Ball, j}, 0.0)) return;
         }
     }

@@ -103,4 +103,18 @@ double mechanicalEnergy(const AirState& s, double radius, double mass, double gr
     return kineticEnergy(s, radius, mass) + mass * gravity * s.z;
 }
 
+SpaceContact spaceContact(const AirState& a, double ra, const AirState& b, double rb)
+{
+    SpaceContact c;
+    const Vec3 d(b.position.x() - a.position.x(), b.position.y() - a.position.y(), (rb + b.z) - (ra + a.z));
+    c.distance = d.norm();
+    if (!(c.distance > 0.0)) return c;
+    c.normal = d / c.distance;
+    c.gap = c.distance - (ra + rb);
+    const Vec3 v = velocity3(b) - velocity3(a);
+    c.normalSpeed = v.dot(c.normal);
+    c.tangentSpeed2 = std::max(0.0, v.squaredNorm() - c.normalSpeed * c.normalSpeed);
+    return c;
+}
+
 }  // namespace cuelab

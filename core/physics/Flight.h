@@ -19,6 +19,23 @@ namespace cuelab {
 // building blocks that speak of flight.
 using AirState = BallState;
 
+// The velocity in space, (vx, vy, vz).
+inline Vec3 velocity3(const AirState& s) { return Vec3(s.velocity.x(), s.velocity.y(), s.vz); }
+
+// Two balls' contact measured in space (their centres at heights R + z): the unit normal from a's
+// centre to b's, the gap |d| - (Ra + Rb), the relative normal speed (v_b - v_a) . n (> 0 parting) and
+// the curvature |v_t|^2 / |d| with which their tangential motion opens the gap. The held contacts of a
+// flying ball (AirHold.cpp, HeldContacts.cpp) share it.
+struct SpaceContact {
+    Vec3 normal = Vec3::Zero();
+    double distance = 0.0;     // m, |d| (0: the normal is undefined)
+    double gap = 0.0;          // m
+    double normalSpeed = 0.0;  // m/s
+    double tangentSpeed2 = 0.0;  // m^2/s^2, |v_t|^2
+    double curvature() const { return tangentSpeed2 / distance; }
+};
+SpaceContact spaceContact(const AirState& a, double ra, const AirState& b, double rb);
+
 // The state `s` at height z with vertical velocity vz.
 AirState lifted(const BallState& s, double z = 0.0, double vz = 0.0);
 

@@ -175,17 +175,14 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             if (sa.motion == MotionState::Airborne || sb.motion == MotionState::Airborne) {
                 // A flying ball pressed on a ball of the group (issue 23): the contact in space, its
                 // normal tilted (ContactLink::nz).
-                const Vec3 d(sb.position.x() - sa.position.x(), sb.position.y() - sa.position.y(),
-                             (radius(h.other) + sb.z) - (radius(h.a) + sa.z));
-                const Vec3 v(sb.velocity.x() - sa.velocity.x(), sb.velocity.y() - sa.velocity.y(), sb.vz - sa.vz);
-                const double dist = d.norm();
-                const Vec3 n = d / dist;
-                link.normal = n.head<2>();
-                link.nz = n.z();
-                gap = dist - (radius(h.a) + radius(h.other));
-                vn = v.dot(n);
-                link.curvature = std::max(0.0, v.squaredNorm() - vn * vn) / dist;
-                return dist > 0.0;
+                const SpaceContact c = spaceContact(sa, radius(h.a), sb, radius(h.other));
+                if (!(c.distance > 0.0)) return false;
+                link.normal = c.normal.head<2>();
+                link.nz = c.normal.z();
+                gap = c.gap;
+                vn = c.normalSpeed;
+                link.curvature = c.curvature();
+                return true;
             }
             const Vec2 d = sb.position - sa.position;
             const Vec2 v = sb.velocity - sa.velocity;
