@@ -117,19 +117,24 @@ void Simulator::beginHeldFlight(int i, double t, const BallState& s, const Vec3&
     r_.timelines[at(i)].push_back(seg);
 }
 
-bool Simulator::airHold(int a, int b, double t, bool atEvent)
+bool Simulator::airHold(int a, int b, double t)
 {
     BallState sa = stateNow(a, t);
     BallState sb = stateNow(b, t);
     if (!(sa.z > 0.0) || !airHoldable(a, b)) return false;
-    // A slip that has as good as ended (or, solved again, one that the cloth would end within
-    // kSlipRollOutLength) has a direction of rounding, and so would the friction the force is solved
-    // with: it rolls out, as a held group's member does (HeldContacts.cpp; not the tiny slip of an
-    // event's ball, whose pair's momentum the event keeps).
-    if (sb.motion == MotionState::Sliding && (slipHasEnded(sb, radius(b)) || (!atEvent && slipRollsOut(sb, radius(b), p_)))) {
-        rollOut(sb, radius(b));
-        sb.motion = classify(sb, radius(b));
-    }
+    // A slip that has as good as ended, or one that the cloth would end within kSlipRollOutLength, has a
+    // direction of rounding, and so would the friction the force is solved with: the re-seat's
+    // impulse of a micronewton-second can turn it about and the force's sign with it (seed12-shot78694:
+    // 0.29 N, then -0.018 N, and the contact met again at the same instant). It rolls out, as a held
+    // group's member does (HeldContacts.cpp), at the hold's event too (an air event's momentum is the
+    // cloth's as well as the pair's: AirImpacts.h), and again after the re-seat.
+    auto settleSlip = [&](BallState& s) {
+        if (s.motion == MotionState::Sliding && (slipHasEnded(s, radius(b)) || slipRollsOut(s, radius(b), p_))) {
+            rollOut(s, radius(b));
+            s.motion = classify(s, radius(b));
+        }
+    };
+    settleSlip(sb);
     AirHoldForce f = airHoldForce(a, b, sa, sb);
     if (!(f.force > 0.0) || std::abs(f.gap) > kHeldGap || std::abs(f.normalSpeed) > kHoldSpeed) return false;
     if (f.normalSpeed != 0.0) {
@@ -147,6 +152,7 @@ bool Simulator::airHold(int a, int b, double t, bool atEvent)
         sa.velocity += dv.head<2>();
         sa.vz += dv.z();
         applyContactImpulse(sb, Rb, mb, J * nh);
+        settleSlip(sb);
         f = airHoldForce(a, b, sa, sb);
         if (!(f.force > 0.0)) return false;
     }

@@ -456,7 +456,7 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
             e.held = true;  // (with no hold impulse: a pressed pair may part by a few nm/s, Detection.h)
             const std::size_t index = r_.events.size();
             r_.events.push_back(e);
-            if (airHold(a, b, e.time, true)) {
+            if (airHold(a, b, e.time)) {
                 r_.events[index].after[0] = state_[at(i)];
                 r_.events[index].after[1] = state_[at(j)];
                 return;

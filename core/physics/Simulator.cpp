@@ -259,7 +259,7 @@ void Simulator::process(const Candidate& c)
     if (c.agent == Agent::Refresh) {
         if (c.index == 2) {  // a hold in the air is solved again (no event)
             const int other = airHeld_[at(i)], edge = airEdge_[at(i)];
-            if (other >= 0 && !airHold(flying(i) ? i : other, flying(i) ? other : i, t, false)) airRelease(i, t);
+            if (other >= 0 && !airHold(flying(i) ? i : other, flying(i) ? other : i, t)) airRelease(i, t);
             if (edge >= 0 && !airEdgeHold(i, edge, t, stateNow(i, t))) airRelease(i, t);
             if (other < 0 && edge < 0) {
                 regroupAt_[at(i)] = kNever;

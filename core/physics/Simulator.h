@@ -150,8 +150,7 @@ private:
     AirHoldForce airHoldForce(int a, int b, const BallState& sa, const BallState& sb) const;
     // Solves the pair at t and begins its held segments; false (and nothing changed) when it is not
     // pressed, has parted or cannot be held.
-    // `atEvent`: the hold begins at an event of the pair (else it is solved again).
-    bool airHold(int a, int b, double t, bool atEvent);
+    bool airHold(int a, int b, double t);
     // Ends ball i's hold in the air at t: both balls go on freely from their states then (no event),
     // but `keep` and `keep2` (an event's balls, whose event at t ends their segments) keep theirs.
     void airRelease(int i, double t, int keep = -1, int keep2 = -1);
