@@ -128,13 +128,7 @@ bool Simulator::airHold(int a, int b, double t)
     // 0.29 N, then -0.018 N, and the contact met again at the same instant). It rolls out, as a held
     // group's member does (HeldContacts.cpp), at the hold's event too (an air event's momentum is the
     // cloth's as well as the pair's: AirImpacts.h), and again after the re-seat.
-    auto settleSlip = [&](BallState& s) {
-        if (s.motion == MotionState::Sliding && (slipHasEnded(s, radius(b)) || slipRollsOut(s, radius(b), p_))) {
-            rollOut(s, radius(b));
-            s.motion = classify(s, radius(b));
-        }
-    };
-    settleSlip(sb);
+    rollOutRounding(sb, radius(b), p_);
     AirHoldForce f = airHoldForce(a, b, sa, sb);
     if (!(f.force > 0.0) || std::abs(f.gap) > kHeldGap || std::abs(f.normalSpeed) > kHoldSpeed) return false;
     if (f.normalSpeed != 0.0) {
@@ -152,7 +146,7 @@ bool Simulator::airHold(int a, int b, double t)
         sa.velocity += dv.head<2>();
         sa.vz += dv.z();
         applyContactImpulse(sb, Rb, mb, J * nh);
-        settleSlip(sb);
+        rollOutRounding(sb, radius(b), p_);
         f = airHoldForce(a, b, sa, sb);
         if (!(f.force > 0.0)) return false;
     }

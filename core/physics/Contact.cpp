@@ -1,5 +1,7 @@
 #include "Contact.h"
 
+#include "Motion.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -226,6 +228,14 @@ bool slipRollsOut(const BallState& s, double radius, const PhysicsParams& p)
 {
     return s.motion == MotionState::Sliding &&
            slipVelocity(s, radius).squaredNorm() <= 2.0 * 3.5 * p.muSlide * p.gravity * kSlipRollOutLength;
+}
+
+bool rollOutRounding(BallState& s, double radius, const PhysicsParams& p)
+{
+    if (s.motion != MotionState::Sliding || !(slipHasEnded(s, radius) || slipRollsOut(s, radius, p))) return false;
+    rollOut(s, radius);
+    s.motion = classify(s, radius);
+    return true;
 }
 
 void applyContactImpulse(BallState& s, double radius, double mass, const Vec2& J)

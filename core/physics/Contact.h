@@ -78,6 +78,10 @@ inline constexpr double kRollOffSpeed = 1e-9;
 inline constexpr double kSlipRollOutLength = 1e-12;
 // A sliding ball whose slip the cloth would end within kSlipRollOutLength: |u|^2 <= 7 mu_s g times it.
 bool slipRollsOut(const BallState& s, double radius, const PhysicsParams& p);
+// A sliding ball whose slip has as good as ended (Motion.h's slipHasEnded) or rolls out
+// (slipRollsOut) rolls out now (Motion.h's rollOut) and is labelled again; true if it did. The air
+// hold settles the ball on the cloth with it (AirHold.cpp).
+bool rollOutRounding(BallState& s, double radius, const PhysicsParams& p);
 
 // s: the longest held segment (the group is solved again at least this often).
 inline constexpr double kMaxHeldSegment = 0.25;
