@@ -21,7 +21,8 @@
 // row in space of the group's problem, HeldContacts.cpp, Contact.h's ContactLink::nz).
 //
 // Left out: friction between the balls while held (mu_b about 0.05 against the press), a B pressed
-// by a second flying ball (detection meets it as before), and a flying ball held on a jaw's rim.
+// by a second flying ball (detection meets it as before), and a ball held on two contacts at once
+// (a ball between two balls, a ball and a rail, or two nose edges: docs/dev/issue-23-open).
 
 #include "Simulator.h"
 
@@ -236,6 +237,60 @@ bool Simulator::airEdgeHold(int a, int k, double t, const BallState& s)
     const Vec2 tHat = along / L;
     const double f0 = (pa.c0.head<2>() - seg.a).dot(tHat), f1 = pa.c1.head<2>().dot(tHat), f2 = pa.c2.head<2>().dot(tHat);
     limit = std::min({limit, firstCrossing(f0, f1, f2, 0.0), firstCrossing(f0, f1, f2, L)});
+    limit = std::max(limit, 1e-9);
+    regroupAt_[at(a)] = t + limit;
+    box_[at(a)] = boxOf(path_[at(a)], std::min(end_[at(a)], regroupAt_[at(a)]) - t);
+    predictOwn(a, t);
+    predictPairs(a, t);
+    return true;
+}
+
+// A flying ball held on a jaw's rim, the circle at the nose height (seed12-shot810097: bounces ever
+// lower on it until a root at 6e-9 s was lost in the rim's polynomial and the ball sank 2.2 cm into
+// the jaw), as on a nose edge above.
+bool Simulator::airRimHold(int a, int k, double t, const BallState& s)
+{
+    if (!flying(a) || series_[at(a)] || heldCount_[at(a)] > 0 || airHeld_[at(a)] >= 0 || !(s.z > 0.0)) return false;
+    const JawTip& jaw = table_.jaws[at(k)];
+    const double R = radius(a), h = table_.cushionHeight, g = p_.gravity, rj = jaw.radius;
+    // In the plane through the jaw's axis and the centre: nh out from the rim (horizontally), w up.
+    const Vec2 rel = s.position - jaw.centre;
+    const double rho = rel.norm();
+    if (!(rho > rj) || !onJawArc(jaw, s.position, kContactTolerance)) return false;
+    const Vec2 u = rel / rho;
+    const double nh = rho - rj, w = (R + s.z) - h;
+    const double dist = std::hypot(nh, w);
+    if (w < 0.0 || !(dist > 0.0)) return false;
+    const Vec3 n = (nh / dist) * Vec3(u.x(), u.y(), 0.0) + Vec3(0.0, 0.0, w / dist);
+    const Vec3 v = velocity3(s);
+    const double vn = v.dot(n);
+    // The centre keeps its distance from the rim on a torus: across the rim its curvature is 1/dist,
+    // along it (nh/dist)/rho; the force takes kHeldCurvatureShare of the normal acceleration the
+    // motion along the torus needs.
+    const Vec3 alongRim(-u.y(), u.x(), 0.0);
+    const double vAlong = v.dot(alongRim);
+    const Vec3 vAcross = v - vn * n - vAlong * alongRim;
+    const double curvature = vAcross.squaredNorm() / dist + vAlong * vAlong * (nh / dist) / rho;
+    const double force = mass(a) * (g * n.z() - kHeldCurvatureShare * curvature);
+    if (!(force > 0.0) || std::abs(dist - R) > kHeldGap || std::abs(vn) > kHoldSpeed) return false;
+    BallState st = s;
+    if (vn != 0.0) {  // re-seated (as in airEdgeHold): the fixed rim takes the impulse
+        st.velocity -= vn * n.head<2>();
+        st.vz -= vn * n.z();
+    }
+    airEdge_[at(a)] = static_cast<int>(table_.cushions.size()) + k;
+    beginHeldFlight(a, t, st, (force / mass(a)) * n);
+    // The segment: the frozen normal turns about the rim point (CircleLimits: the distance from that
+    // point bounds the distance from the rim), and the centre stays over the tip's arc.
+    const SpacePath pa = spaceNow(a, t);
+    const Vec3 rim(jaw.centre.x() + rj * u.x(), jaw.centre.y() + rj * u.y(), h);
+    const CircleLimits l = circleLimits<Vec3>(rim - pa.c0, -pa.c1, -pa.c2, R);
+    double limit = std::min({kMaxHeldSegment, l.gap, l.drop});
+    for (const Vec2& run : jaw.runs) {
+        if (run.isZero(0.0)) continue;
+        const double f0 = (pa.c0.head<2>() - jaw.centre).dot(run), f1 = pa.c1.head<2>().dot(run), f2 = pa.c2.head<2>().dot(run);
+        limit = std::min(limit, firstCrossing(f0, f1, f2, 0.0));
+    }
     limit = std::max(limit, 1e-9);
     regroupAt_[at(a)] = t + limit;
     box_[at(a)] = boxOf(path_[at(a)], std::min(end_[at(a)], regroupAt_[at(a)]) - t);

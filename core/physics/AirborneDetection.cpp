@@ -62,6 +62,15 @@ bool touchingContactNow(const V& d0, const V& d1, const V& d2, double reach, dou
            2.0 * normalSpeed <= -curvature * horizon;
 }
 
+// Touching now (within kContactTolerance) and approaching faster than kRestingSpeed: the rule of a
+// fixed edge or corner, which no hold takes (the nose edge's, below).
+template <typename V>
+bool approachingNow(const V& d0, const V& d1, double reach)
+{
+    const double dist = d0.norm();
+    return std::abs(dist - reach) <= kContactTolerance && dist > 0.0 && d0.dot(d1) < -kRestingSpeed * dist;
+}
+
 // The horizontal normal distance n(s) = (c(s) - a) . N and the height above the nose w(s) = z_c(s) - h
 // of a path relative to one cushion, as quadratics (constant, linear, square coefficients).
 struct CushionFrame {
@@ -216,7 +225,44 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
         }
     }
 
-    if (best.kind == CushionContactKind::Face) {
+    // The front corner past either end: in front of the nose line (n >= 0) with the foot beyond the
+    // end (behind the line the end is crossed as above). Its vertical edge below h, its top corner at h.
+    // A path on the cloth meets a segment's end at its jaw (Detection.h's), as above.
+    Vec3 endNormal = Vec3::Zero();
+    if (p.c1.z() != 0.0 || p.c2.z() != 0.0) {
+        const Vec2 along = seg.b - seg.a;
+        const double L2 = along.squaredNorm();
+        for (const double end : {0.0, 1.0}) {
+            const Vec2 corner = seg.a + end * along;
+            auto beyond = [&](double s) {
+                const double lambda = (p.at(s).head<2>() - seg.a).dot(along);
+                return f.nAt(s) >= 0.0 && (end == 0.0 ? lambda <= 0.0 : lambda >= L2);
+            };
+            const Vec2 e0 = p.c0.head<2>() - corner, e1 = p.c1.head<2>(), e2 = p.c2.head<2>();
+            auto edgeValid = [&](double s) { return f.wAt(s) <= kBoundaryTolerance && beyond(s); };
+            double s = edgeValid(0.0) && approachingNow<Vec2>(e0, e1, radius)
+                           ? 0.0
+                           : firstFallingRootWhere(distanceQuartic<Vec2>(e0, e1, e2, radius), horizon, edgeValid);
+            if (s < best.time && s <= horizon) {
+                offer(s, CushionContactKind::End);
+                const Vec2 d = e0 + s * (e1 + s * e2);
+                endNormal = Vec3(d.x(), d.y(), 0.0);
+            }
+            const Vec3 c0 = p.c0 - Vec3(corner.x(), corner.y(), noseHeight);
+            auto topValid = [&](double t) { return f.wAt(t) >= -kBoundaryTolerance && beyond(t); };
+            s = topValid(0.0) && approachingNow<Vec3>(c0, p.c1, radius)
+                    ? 0.0
+                    : firstFallingRootWhere(distanceQuartic<Vec3>(c0, p.c1, p.c2, radius), horizon, topValid);
+            if (s < best.time && s <= horizon) {
+                offer(s, CushionContactKind::End);
+                endNormal = c0 + s * (p.c1 + s * p.c2);
+            }
+        }
+    }
+
+    if (best.kind == CushionContactKind::End) {
+        best.normal = endNormal.norm() > 0.0 ? Vec3(endNormal.normalized()) : faceNormal;
+    } else if (best.kind == CushionContactKind::Face) {
         best.normal = faceNormal;
     } else if (best.kind == CushionContactKind::Nose) {
         const double n = std::max(0.0, f.nAt(best.time)), w = std::max(0.0, f.wAt(best.time));

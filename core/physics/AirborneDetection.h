@@ -23,7 +23,12 @@
 //               rail top (z_c - R >= h): the ball leaves the table (`ball-off-table`, state `off-table`);
 //               so does a ball whose bottom comes down to the rail top (z_c - R = h, descending) with
 //               its centre behind the nose line (it came there past the segment's end).
-// In each case the foot of the perpendicular must lie on the segment, as on the cloth.
+// In each case the foot of the perpendicular must lie on the segment, as on the cloth. Past an end of
+// the segment, in front of its nose line, the slab's corner is met: its vertical edge (the horizontal
+// distance from the end point is R, the centre at or below h) or its top corner (the distance from
+// the end point at height h is R, the centre at or above h), quartics as a ball's. A rail's ends are
+// inside its jaws (tangent there), which are met first; a pocket facing's far end, behind the pocket,
+// is bare, and a ball flying over the pocket can come to it.
 
 #include "Detection.h"
 #include "Flight.h"
@@ -44,13 +49,14 @@ enum class CushionContactKind : std::uint8_t {
     Face,      // the ball meets the cushion's face below the nose (as on the cloth)
     Nose,      // the ball meets the nose edge from above it
     OffTable,  // the ball clears the rail: `ball-off-table`
+    End,       // the ball meets the front corner of the segment's end (its vertical edge or top corner)
 };
 
 struct AirCushionContact {
     double time = kNever;  // s
     CushionContactKind kind = CushionContactKind::None;
     // The contact normal at `time`, unit, from the cushion towards the centre (Face: (N, 0); Nose:
-    // tilted; OffTable: zero).
+    // tilted; End: from the corner; OffTable: zero).
     Vec3 normal = Vec3::Zero();
 };
 

@@ -100,7 +100,9 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     // It drops into a pocket when its centre comes down to the cloth's level over the pocket's
     // circle (there is no cloth there): at its landing, instead of a bounce. A ball over a pocket
     // higher up flies over it.
-    if (landing != kNever) {
+    // (Only in place of the landing itself: a held flight's refresh before it stays the ball's own
+    // next event.)
+    if (landing != kNever && landing <= best.time) {
         const Vec2 down = heldFlight(i) ? Vec2(sp.at(landing - now).head<2>()) : Vec2(s.position + (landing - now) * s.velocity);
         for (std::size_t k = 0; k < table_.pockets.size(); ++k) {
             const Pocket& pk = table_.pockets[k];
@@ -123,7 +125,7 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     }
     for (std::size_t k = 0; k < table_.jaws.size(); ++k) {
         const JawTip& jaw = table_.jaws[k];
-        if (!boxNearCircle(box, R + jaw.radius, jaw.centre)) continue;
+        if (!boxNearCircle(box, R + jaw.radius, jaw.centre) || airEdge_[at(i)] == static_cast<int>(table_.cushions.size() + k)) continue;  // (held on its rim)
         // Its side, its top or its rim (airJawContact).
         const AirCushionContact c = airJawContact(sp, R, jaw, table_.cushionHeight, horizon);
         if (c.kind == CushionContactKind::None || c.time == kNever) continue;
@@ -379,7 +381,9 @@ void Simulator::airCushion(const Candidate& c, Event& e)
             return;
         }
         e.kind = EventKind::BallCushion;
-        normal = contact.kind == CushionContactKind::Nose ? contact.normal : Vec3(seg.normal.x(), seg.normal.y(), 0.0);
+        normal = contact.kind == CushionContactKind::Nose || contact.kind == CushionContactKind::End
+                     ? contact.normal
+                     : Vec3(seg.normal.x(), seg.normal.y(), 0.0);
     } else {
         // Its side, top or rim, along the normal its prediction found.
         e.kind = EventKind::BallJaw;
@@ -396,7 +400,9 @@ void Simulator::airCushion(const Candidate& c, Event& e)
     // presses it on: it would bounce ever lower (a Zeno run of impacts that the clock cannot resolve).
     // The edge holds it instead (AirHold.cpp), the rebound taken away (which only removes energy), as
     // the cloth's hold rule does for a collision on the cloth.
-    if (c.agent == Agent::Cushion && airContact_[at(i)].kind == CushionContactKind::Nose && e.after[0].motion == MotionState::Airborne) {
+    // The same on a jaw's rim (its top is flat: a ball on it is not held).
+    const bool rim = c.agent == Agent::Jaw && normal.head<2>().norm() > 0.0;
+    if ((rim || c.agent == Agent::Cushion) && airContact_[at(i)].kind == CushionContactKind::Nose && e.after[0].motion == MotionState::Airborne) {
         const double separation = Vec3(e.after[0].velocity.x(), e.after[0].velocity.y(), e.after[0].vz).dot(normal);
         if (separation < kHoldSpeed) {
             BallState seated = e.after[0];
@@ -414,7 +420,7 @@ void Simulator::airCushion(const Candidate& c, Event& e)
             held.approachSpeed = res.approachSpeed;
             held.impulse = res.impulse - mass(i) * std::max(0.0, separation) * normal;
             r_.events.push_back(held);
-            if (airEdgeHold(i, c.index, e.time, seated)) {
+            if (c.agent == Agent::Cushion ? airEdgeHold(i, c.index, e.time, seated) : airRimHold(i, c.index, e.time, seated)) {
                 r_.events[index].after[0] = state_[at(i)];
                 return;
             }

@@ -260,7 +260,9 @@ void Simulator::process(const Candidate& c)
         if (c.index == 2) {  // a hold in the air is solved again (no event)
             const int other = airHeld_[at(i)], edge = airEdge_[at(i)];
             if (other >= 0 && !airHold(flying(i) ? i : other, flying(i) ? other : i, t)) airRelease(i, t);
-            if (edge >= 0 && !airEdgeHold(i, edge, t, stateNow(i, t))) airRelease(i, t);
+            const int cushions = static_cast<int>(table_.cushions.size());
+            if (edge >= 0 && !(edge < cushions ? airEdgeHold(i, edge, t, stateNow(i, t)) : airRimHold(i, edge - cushions, t, stateNow(i, t))))
+                airRelease(i, t);
             if (other < 0 && edge < 0) {
                 regroupAt_[at(i)] = kNever;
                 predictOwn(i, t);

@@ -158,6 +158,8 @@ private:
     // A flying ball held on cushion k's nose edge (it would bounce on it ever lower, a Zeno run): from
     // its state `s` at t; false (nothing changed) when the edge does not press it or it is off the edge.
     bool airEdgeHold(int a, int k, double t, const BallState& s);
+    // The same on jaw k's rim (the circle at the nose height): airEdge_ is then cushions + k.
+    bool airRimHold(int a, int k, double t, const BallState& s);
     bool airHeldAny(int i) const { return airHeld_[at(i)] >= 0 || airEdge_[at(i)] >= 0; }
 
     // Sustained contact (Contact.h).
@@ -222,7 +224,7 @@ private:
     std::vector<int> bounces_;
     std::vector<double> pushZ_;   // m/s^2, the vertical part of a held flight's contact force per mass
     std::vector<int> airHeld_;    // the ball it is held with in the air (AirHold.cpp), -1 if none
-    std::vector<int> airEdge_;    // the cushion whose nose edge holds it in the air, -1 if none
+    std::vector<int> airEdge_;    // the cushion whose nose edge holds it in the air (cushions + k: jaw k's rim), -1 if none
     double lastCandidateImpulse_ = 0.0;  // N s, the last settle()'s re-seating impulse at its candidate
                                          // (> 0 pushing apart, < 0 drawing together: the hold)
 };

@@ -70,6 +70,7 @@ private slots:
     void cushionOnTheClothIsDetectionsFace();
     void cushionMissesNothing();
     void railTopAndEndByHand();
+    void segmentEndCornerByHand();
     void pocketsByHand();
     void jawSideByHand();
     void jawTopAndRimByHand();
@@ -352,6 +353,35 @@ void TestAirborneDetection::cushionMissesNothing()
     QVERIFY2(counts[1] > 100 && counts[2] > 100 && counts[3] > 100,
              qPrintable(QString("%1 %2 %3 %4").arg(counts[0]).arg(counts[1]).arg(counts[2]).arg(counts[3])));
     qInfo("flights at a rail: %d face, %d nose, %d off the table, %d landing first", counts[1], counts[2], counts[3], counts[0]);
+}
+
+// Past a segment's end, in front of its nose line, a flying ball meets the slab's front corner: its
+// vertical edge below the nose height, its top corner at it (seed12-shot563450: a ball flying over a
+// pocket came to a facing's bare far end and was found 2.5 cm inside it).
+void TestAirborneDetection::segmentEndCornerByHand()
+{
+    const CushionSegment shortRail{"short", Vec2(2.0, 0.0), Vec2(3.0, 0.0), Vec2(0.0, 1.0)};
+    // Below the nose, 1 cm in front of the line, towards the end at (3, 0) at 1 m/s: the edge at
+    // (0.2 - s)^2 + 0.01^2 = R^2 (the fall does not change the horizontal distance).
+    const SpacePath low{Vec3(3.2, 0.01, kNose - 0.01), Vec3(-1.0, 0.0, 0.0), Vec3(0.0, 0.0, -0.5 * kG)};
+    const AirCushionContact edge = airCushionContact(low, kR, shortRail, kNose, 0.2);
+    QVERIFY(edge.kind == CushionContactKind::End);
+    const double along = std::sqrt(kR * kR - 1e-4);
+    QVERIFY(std::abs(edge.time - (0.2 - along)) <= 1e-14);
+    QVERIFY((edge.normal - Vec3(along / kR, 0.01 / kR, 0.0)).norm() <= 1e-12);
+    // A centre passing over the corner's height: the top corner, at distance R from (3, 0, h), with
+    // the normal from it to the centre.
+    const SpacePath high{Vec3(3.2, 0.01, kNose + 0.01), Vec3(-10.0, 0.0, 0.0), Vec3(0.0, 0.0, -0.5 * kG)};
+    const AirCushionContact top = airCushionContact(high, kR, shortRail, kNose, 0.05);
+    QVERIFY(top.kind == CushionContactKind::End);
+    const Vec3 d = high.at(top.time) - Vec3(3.0, 0.0, kNose);
+    QVERIFY(std::abs(d.norm() - kR) <= 1e-12);
+    QVERIFY(d.z() >= 0.0);
+    QVERIFY((top.normal - d.normalized()).norm() <= 1e-12);
+    // Behind the end's line (the foot on the segment) it is the face or nose, and on the cloth the
+    // end is the jaw's: nothing here.
+    const SpacePath rolling{Vec3(3.2, 0.01, kR), Vec3(-1.0, 0.0, 0.0), Vec3::Zero()};
+    QVERIFY(airCushionContact(rolling, kR, shortRail, kNose, 0.2).kind == CushionContactKind::None);
 }
 
 void TestAirborneDetection::railTopAndEndByHand()
