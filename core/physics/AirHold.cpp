@@ -122,7 +122,9 @@ bool Simulator::airHold(int a, int b, double t)
 {
     BallState sa = stateNow(a, t);
     BallState sb = stateNow(b, t);
-    if (!(sa.z > 0.0) || !airHoldable(a, b)) return false;
+    // (In the air, or on the cloth and leaving it: a ball jumping off the cloth beside a ball whose
+    // sliding friction brings it back against it, seed14-shot381639.)
+    if (!(sa.z > 0.0 || sa.vz > 0.0) || !airHoldable(a, b)) return false;
     // A slip that has as good as ended, or one that the cloth would end within kSlipRollOutLength, has a
     // direction of rounding, and so would the friction the force is solved with: the re-seat's
     // impulse of a micronewton-second can turn it about and the force's sign with it (seed12-shot78694:
@@ -186,6 +188,9 @@ void Simulator::airRelease(int i, double t, int keep, int keep2)
     if (other < 0) return;
     airHeld_[at(i)] = -1;
     airHeld_[at(other)] = -1;
+    airLetGo_[at(i)] = airLetGo_[at(other)] = t;
+    airLetGoOf_[at(i)] = other;
+    airLetGoOf_[at(other)] = i;
     for (int k : {i, other}) {
         regroupAt_[at(k)] = kNever;
         if (k == keep || k == keep2) continue;

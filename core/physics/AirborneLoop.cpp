@@ -458,7 +458,15 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
         e.contactPoint = e.before[0].position + radius(i) * res.normal.head<2>();
         e.approachSpeed = res.approachSpeed;
         e.impulse = Vec3::Zero();
-        if (airHoldable(a, b)) {
+        // A flying ball that another ball let go at this instant (this event's, Simulator.cpp's
+        // process) and that is pressed on this one too is wedged between them: the pairwise air holds
+        // would hand it back and forth at this instant until the event cap (seed12-shot655830: a
+        // ball dropping between two rolling balls). It is held with this contact as a row in space
+        // of a group instead (HeldContacts.cpp); the other contact, met at once, joins that group
+        // (groupHoldable), and the two rows are solved together.
+        const bool wedged = airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b && !flying(b);
+        if (wedged && holdCollision(e, HeldContact{i, ContactBody::Ball, j}, 0.0)) return;
+        if (!wedged && airHoldable(a, b)) {
             e.held = true;  // (with no hold impulse: a pressed pair may part by a few nm/s, Detection.h)
             const std::size_t index = r_.events.size();
             r_.events.push_back(e);

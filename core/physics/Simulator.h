@@ -55,6 +55,8 @@ public:
         regroupAt_.assign(n, kNever);
         pushZ_.assign(n, 0.0);
         airHeld_.assign(n, -1);
+        airLetGo_.assign(n, kNever);
+        airLetGoOf_.assign(n, -1);
         airEdge_.assign(n, -1);
         series_.assign(n, 0);
         seriesOf_.resize(n);
@@ -224,6 +226,8 @@ private:
     std::vector<int> bounces_;
     std::vector<double> pushZ_;   // m/s^2, the vertical part of a held flight's contact force per mass
     std::vector<int> airHeld_;    // the ball it is held with in the air (AirHold.cpp), -1 if none
+    std::vector<double> airLetGo_;  // s, when its last hold in the air with a ball ended (kNever if none)
+    std::vector<int> airLetGoOf_;   // the ball it was held with then
     std::vector<int> airEdge_;    // the cushion whose nose edge holds it in the air (cushions + k: jaw k's rim), -1 if none
     double lastCandidateImpulse_ = 0.0;  // N s, the last settle()'s re-seating impulse at its candidate
                                          // (> 0 pushing apart, < 0 drawing together: the hold)
