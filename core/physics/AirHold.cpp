@@ -204,6 +204,14 @@ void Simulator::airRelease(int i, double t, int keep, int keep2)
     }
 }
 
+void Simulator::heldFixedUntil(int a, double t, double limit)
+{
+    regroupAt_[at(a)] = t + std::max(limit, 1e-9);
+    box_[at(a)] = boxOf(path_[at(a)], std::min(end_[at(a)], regroupAt_[at(a)]) - t);
+    predictOwn(a, t);
+    predictPairs(a, t);
+}
+
 bool Simulator::airEdgeHold(int a, int k, double t, const BallState& s)
 {
     if (!flying(a) || series_[at(a)] || heldCount_[at(a)] > 0 || airHeld_[at(a)] >= 0 || !(s.z > 0.0)) return false;
@@ -242,11 +250,7 @@ bool Simulator::airEdgeHold(int a, int k, double t, const BallState& s)
     const Vec2 tHat = along / L;
     const double f0 = (pa.c0.head<2>() - seg.a).dot(tHat), f1 = pa.c1.head<2>().dot(tHat), f2 = pa.c2.head<2>().dot(tHat);
     limit = std::min({limit, firstCrossing(f0, f1, f2, 0.0), firstCrossing(f0, f1, f2, L)});
-    limit = std::max(limit, 1e-9);
-    regroupAt_[at(a)] = t + limit;
-    box_[at(a)] = boxOf(path_[at(a)], std::min(end_[at(a)], regroupAt_[at(a)]) - t);
-    predictOwn(a, t);
-    predictPairs(a, t);
+    heldFixedUntil(a, t, limit);
     return true;
 }
 
@@ -296,11 +300,7 @@ bool Simulator::airRimHold(int a, int k, double t, const BallState& s)
         const double f0 = (pa.c0.head<2>() - jaw.centre).dot(run), f1 = pa.c1.head<2>().dot(run), f2 = pa.c2.head<2>().dot(run);
         limit = std::min(limit, firstCrossing(f0, f1, f2, 0.0));
     }
-    limit = std::max(limit, 1e-9);
-    regroupAt_[at(a)] = t + limit;
-    box_[at(a)] = boxOf(path_[at(a)], std::min(end_[at(a)], regroupAt_[at(a)]) - t);
-    predictOwn(a, t);
-    predictPairs(a, t);
+    heldFixedUntil(a, t, limit);
     return true;
 }
 

@@ -162,6 +162,8 @@ private:
     bool airEdgeHold(int a, int k, double t, const BallState& s);
     // The same on jaw k's rim (the circle at the nose height): airEdge_ is then cushions + k.
     bool airRimHold(int a, int k, double t, const BallState& s);
+    // Ball a, held on a fixed edge or rim from t, is solved again after `limit` (at least 1e-9 s).
+    void heldFixedUntil(int a, double t, double limit);
     bool airHeldAny(int i) const { return airHeld_[at(i)] >= 0 || airEdge_[at(i)] >= 0; }
 
     // Sustained contact (Contact.h).
