@@ -65,6 +65,7 @@ Simulator::AirHoldForce Simulator::airHoldForce(int a, int b, const BallState& s
     const SpaceContact sc = spaceContact(sb, Rb, sa, Ra);  // (n from b to a)
     if (!(sc.distance > 0.0)) return f;
     const Vec3& n = sc.normal;
+    f.normal = n;
     f.gap = sc.gap;
     f.normalSpeed = sc.normalSpeed;
     const Vec2 nh = n.head<2>();
@@ -140,9 +141,8 @@ bool Simulator::airHold(int a, int b, double t)
         // or approaching when the tangential motion slowed over it (the pair would sink into each
         // other). An impulse along the normal takes it away (inelastic: the energy falls), b
         // answering by Contact.h's rule (the cloth takes the rest).
-        const double Ra = radius(a), Rb = radius(b), ma = mass(a), mb = mass(b);
-        Vec3 n(sa.position.x() - sb.position.x(), sa.position.y() - sb.position.y(), (Ra + sa.z) - (Rb + sb.z));
-        n.normalize();
+        const double Rb = radius(b), ma = mass(a), mb = mass(b);
+        const Vec3 n = f.normal;
         const Vec2 nh = n.head<2>();
         const double J = f.normalSpeed / (1.0 / ma + contactResponse(sb) * nh.squaredNorm() / mb);
         const Vec3 dv = -(J / ma) * n;

@@ -144,6 +144,7 @@ private:
         double force = 0.0;          // N, along the normal (> 0 pressed)
         double gap = 0.0;            // m
         double normalSpeed = 0.0;    // m/s, (v_a - v_b) . n (> 0 parting)
+        Vec3 normal = Vec3::Zero();  // n, unit, from b's centre to a's (zero if they coincide)
         Vec3 pushA = Vec3::Zero();   // m/s^2 on a
         Vec2 pushB = Vec2::Zero();   // m/s^2 on b (the cloth takes the vertical part)
         MotionState labelB = MotionState::Stationary;  // b's pushed label (Rolling when it rolls off)
