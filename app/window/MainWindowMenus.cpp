@@ -10,6 +10,7 @@
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
 #include "editor/TransportBar.h"
+#include "i18n/ExampleTexts.h"
 #include "view/TableView.h"
 
 #include "SetupFile.h"
@@ -70,7 +71,7 @@ void MainWindow::createMenus()
         QString ignored;
         if (f.open(QIODevice::ReadOnly))
             if (const auto setup = io::parseSetup(f.readAll(), title, &ignored); setup && !setup->name.empty())
-                title = QString::fromStdString(setup->name);
+                title = translatedExampleText(setup->name);
         QAction* a = examplesMenu_->addAction(title, this, [this, path] { openExample(path); });
         a->setToolTip(tr("Open the bundled example %1 as a new, untitled setup").arg(QFileInfo(path).fileName()));
     }

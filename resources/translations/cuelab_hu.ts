@@ -4747,6 +4747,129 @@ Kimaradt kérdés: %1</translation>
     </message>
 </context>
 <context>
+    <name>cuelab::examples</name>
+    <message>
+        <source>8-ball break</source>
+        <translation>8-as nyitás</translation>
+    </message>
+    <message>
+        <source>Fifteen balls racked frozen (every neighbour touching) with the 1 on the foot spot, the cue ball on the head spot, a hard centre-ball hit straight at the 1. The impact runs through the frozen rack as a chain of collisions at the same instant, resolved one touching pair at a time, and spreads the balls over the table.</source>
+        <translation>Tizenöt golyó szorosan gúlába rakva (minden szomszéd érinti egymást), az 1-es a lábponton, a fehér golyó a fejponton; erős, középre mért lökés egyenesen az 1-esre. Az ütközés ugyanabban a pillanatban ütközések láncaként fut végig az egymáshoz simuló gúlán, amelyet a szimuláció egyszerre egy érintkező párt feloldva követ, és szétszórja a golyókat az asztalon.</translation>
+    </message>
+    <message>
+        <source>9-ball break</source>
+        <translation>9-es nyitás</translation>
+    </message>
+    <message>
+        <source>Nine balls in a frozen diamond, the 1 on the foot spot and the 9 in the middle, broken from the side of the head string (a cut break, as many players prefer): the cue ball hits the 1 full in the face at 5.5 m/s cue speed.</source>
+        <translation>Kilenc golyó egymáshoz simuló rombuszban, az 1-es a lábponton, a 9-es középen; a nyitás a fejvonal széléről indul (vágott nyitás, ahogy sok játékos szereti): a fehér golyó 5,5 m/s dákósebességgel telibe találja az 1-est.</translation>
+    </message>
+    <message>
+        <source>Draw shot</source>
+        <translation>Húzott ütés</translation>
+    </message>
+    <message>
+        <source>The stun shot&apos;s position, struck well below centre (height -0.55) and harder. The cue ball still spins backwards when it meets the 1; after the collision the backspin pulls it back along its path, about 15 cm. More speed or a lower tip draws it further.</source>
+        <translation>A stopütés felállása, jóval a közép alatt (magasság -0,55) és erősebben megütve. A fehér golyó még visszafelé pörög, amikor eléri az 1-est; az ütközés után a hátrapörgés visszahúzza a pályáján, körülbelül 15 cm-t. Nagyobb sebesség vagy lejjebb vett dákóvég messzebbre húzza.</translation>
+    </message>
+    <message>
+        <source>Fast graze</source>
+        <translation>Gyors súrolás</translation>
+    </message>
+    <message>
+        <source>The 2011 lesson: a hard, very thin hit. The cue ball leaves at 10 m/s and overlaps the 5 by 2 mm of its width; the 5 goes off almost square and drops in the top side pocket. The fixed-step method of the 2011 game (Compare, discrete, 60 Hz with 10 sub-steps) tests the balls every 17 mm of travel, while they overlap for only 15 mm while approaching: it tunnels through the 5 and the cue ball runs on untouched. At 1 ms it finds the hit. Box2D&apos;s continuous collision finds it at 60 Hz, but resolves it with the balls 1.5 mm deep (three of its linear slops), so the 5 leaves at the wrong angle and misses the pocket.</source>
+        <translation>A 2011-es lecke: erős, nagyon vékony találat. A fehér golyó 10 m/s-mal indul, és szélességéből 2 mm-rel fedi az 5-öst; az 5-ös majdnem derékszögben indul el, és a felső középső lyukba esik. A 2011-es játék rögzített lépésközű módszere (Összehasonlítás, diszkrét, 60 Hz 10 allépéssel) 17 mm-enként vizsgálja a golyókat, közeledés közben viszont csak 15 mm-en át fedik egymást: a fehér golyó átlép az 5-ösön (alagúthatás), és érintetlenül fut tovább. 1 ms-os lépéssel a módszer megtalálja a találatot. A Box2D folytonos ütközésvizsgálata 60 Hz-en is megtalálja, de úgy oldja fel, hogy a golyók 1,5 mm mélyen egymásba hatolnak (lineáris tűréshatárának háromszorosa), így az 5-ös rossz szögben indul el, és elkerüli a lyukat.</translation>
+    </message>
+    <message>
+        <source>Follow shot</source>
+        <translation>Utánfutó ütés</translation>
+    </message>
+    <message>
+        <source>The stun shot&apos;s position, struck above centre (height 0.4, natural roll). The cue ball rolls into the 1; the collision takes its speed but not its topspin, which grips the cloth and drives it forward again until it rolls at 2/7 of its impact speed. It follows the 1 towards the side pocket and stops in front of it.</source>
+        <translation>A stopütés felállása, a közép fölött megütve (magasság 0,4, természetes gördülés). A fehér golyó gördülve éri el az 1-est; az ütközés elveszi a sebességét, de a felső pörgetését nem, amely belekap a posztóba, és újra előre hajtja, amíg ütközési sebességének 2/7-ével nem gördül. Követi az 1-est a középső lyuk felé, és előtte megáll.</translation>
+    </message>
+    <message>
+        <source>Half-ball cut (the 30° rule)</source>
+        <translation>Félgolyós vágás (a 30°-os szabály)</translation>
+    </message>
+    <message>
+        <source>The cue ball&apos;s centre line passes the object ball&apos;s edge: a half-ball hit, cut angle 30°. The 1 leaves along the line of centres into the top-right corner pocket. Struck with natural roll (tip 0.4 R above centre), the cue ball is deflected from its aim line once it rolls again by the same angle whatever the speed: 33.7° with perfectly elastic balls, 32.3° here with restitution 0.95. That is the 30° rule: a rolling cue ball&apos;s path turns by roughly 30° for every cut between a quarter-ball and a three-quarter-ball hit.</source>
+        <translation>A fehér golyó középvonala a célgolyó szélén halad át: félgolyós találat, 30°-os vágási szög. Az 1-es a centrálegyenes mentén a jobb felső sarok lyukába indul. Természetes gördüléssel megütve (a dákóvég 0,4 R-rel a közép fölött) a fehér golyó, amint újra gördül, a sebességtől függetlenül ugyanakkora szöggel tér el a célvonalától: tökéletesen rugalmas golyókkal 33,7°-kal, itt, 0,95-ös ütközési számmal 32,3°-kal. Ez a 30°-os szabály: a gördülő fehér golyó pályája nagyjából 30°-kal fordul el minden vágásnál a negyedgolyós és a háromnegyed-golyós találat között.</translation>
+    </message>
+    <message>
+        <source>Massé around a ball</source>
+        <translation>Masszé egy golyó körül</translation>
+    </message>
+    <message>
+        <source>The 2 sits right on the line from the cue ball to the 1: a level stroke at the 1 hits the 2 first. A massé goes around it. The cue is raised 47° and strikes left of centre (side -0.5) at 3.75 m/s, aimed 16.5° below the x axis, some 30° right of the 1. The elevated cue tilts the ball&apos;s spin axis, so the slip of its contact point points away from its motion; while it slides, the cloth&apos;s friction pushes along that slip and bends the path into a parabola to the left (towards the english), around the 2 and into the 1, which drops in the top-right pocket. Once the slip is gone the ball rolls straight on, with the velocity v0 − (2/7) u0 it had from the start: select the slide-to-roll event to read it. Change the heading by one degree and the shot fails: massé is a hard stroke.</source>
+        <translation>A 2-es pontosan a fehér golyót az 1-essel összekötő egyenesen áll: egy vízszintes lökés az 1-es felé először a 2-est találja el. Egy masszé megkerüli. A dákó 47°-kal megemelve, a középtől balra (oldal -0,5) 3,75 m/s-mal találja a golyót, 16,5°-kal az x tengely alá célozva, mintegy 30°-kal az 1-estől jobbra. A megemelt dákó megdönti a golyó forgástengelyét, így érintkezési pontjának csúszása a mozgásától elfelé mutat; amíg csúszik, a posztó súrlódása e csúszás irányába tol, és parabolává hajlítja a pályát balra (az oldalpörgetés felé), a 2-es körül és bele az 1-esbe, amely a jobb felső lyukba esik. Amint a csúszás megszűnik, a golyó egyenesen gördül tovább azzal a v0 − (2/7) u0 sebességgel, amely kezdettől fogva megvolt: a csúszásból gördülés eseményt kijelölve leolvasható. Egy fokkal más irány, és az ütés nem sikerül: a masszé nehéz ütés.</translation>
+    </message>
+    <message>
+        <source>Newton&apos;s cradle</source>
+        <translation>Newton-bölcső</translation>
+    </message>
+    <message>
+        <source>Five balls frozen in a line, hit straight by a stunned cue ball. With perfectly elastic balls (ball-ball restitution 1 in this file) the impulse travels down the line, one touching pair after another at the same instant, and only the last ball leaves, at the cue ball&apos;s speed. It rebounds from the foot rail, comes back into the line, and the cue ball is knocked back in turn. Set the restitution back to 0.95 to see the energy spread along the line instead.</source>
+        <translation>Öt egymáshoz simuló golyó egy sorban, amelyet egy stoppolt fehér golyó egyenesen eltalál. Tökéletesen rugalmas golyókkal (ebben a fájlban a golyó–golyó ütközési szám 1) a lökés végigfut a soron, ugyanabban a pillanatban egyik érintkező párról a másikra, és csak az utolsó golyó indul el, a fehér golyó sebességével. Visszapattan a hátsó mantinelről, visszaér a sorba, és ezúttal a fehér golyót lökik vissza. Állítsa vissza az ütközési számot 0,95-re, és az energia ehelyett szétoszlik a sor mentén.</translation>
+    </message>
+    <message>
+        <source>One-cushion bank</source>
+        <translation>Egymantineles bank</translation>
+    </message>
+    <message>
+        <source>Bank the 1 off the top rail into the bottom side pocket. The mirror method aims at the pocket&apos;s image behind the rail: 81.7° from here. A real rail is no mirror: the 1 leaves it with less speed along the normal than it came in with (restitution 0.85), sliding, with the rail&apos;s friction acting on it. In this setup headings from about 80.4° to 82.0° make the bank; 81.2° is the middle of that window, a little below the mirror aim.</source>
+        <translation>Lökje az 1-est a felső mantinelről az alsó középső lyukba. A tükörmódszer a lyuknak a mantinel mögötti tükörképére céloz: innen 81,7°. Egy valódi mantinel nem tükör: az 1-es a normális mentén kisebb sebességgel hagyja el, mint amellyel érkezett (ütközési szám 0,85), csúszva, a mantinel súrlódásától érintve. Ebben a felállásban nagyjából 80,4° és 82,0° közötti irányok hozzák a bankot; 81,2° ennek az ablaknak a közepe, kicsivel a tükörirány alatt.</translation>
+    </message>
+    <message>
+        <source>Snooker plant</source>
+        <translation>Snooker-kombináció (plant)</translation>
+    </message>
+    <message>
+        <source>Two reds touching, their line of centres pointing at the top-right corner pocket. The cue ball drives the first red at 25° to that line, yet the second red goes straight along the line and into the pocket: between touching balls the impulse can only act along their line of centres (friction between the balls is off here). Aim the pair, not the first ball.</source>
+        <translation>Két egymáshoz érő piros, centrálegyenesük a jobb felső sarok lyukára mutat. A fehér golyó ehhez a vonalhoz képest 25°-os szögben löki meg az első pirosat, a második piros mégis egyenesen a vonal mentén indul, és a lyukba esik: egymáshoz érő golyók között a lökés csak a centrálegyenesük mentén hathat (a golyók közötti súrlódás itt ki van kapcsolva). A párra célozzon, ne az első golyóra.</translation>
+    </message>
+    <message>
+        <source>Straight shot</source>
+        <translation>Egyenes lökés</translation>
+    </message>
+    <message>
+        <source>Cue ball, object ball and the top-right corner pocket on one line: aim through the centre of the 1 and it goes straight in. Struck at the centre, the cue ball slides, then rolls; a rolling cue ball keeps its forward spin through the collision and follows the 1 at about 2/7 of its speed, here stopping about half a metre short of the pocket. Raise the speed to 1.2 m/s and it follows the 1 into the pocket: a scratch.</source>
+        <translation>A fehér golyó, a célgolyó és a jobb felső sarok lyuka egy egyenesen: az 1-es közepén át célozva az egyenesen beesik. Középen megütve a fehér golyó csúszik, majd gördül; a gördülő fehér golyó az ütközésen át is megtartja előre pörgését, és sebessége körülbelül 2/7-ével követi az 1-est, itt mintegy fél méterrel a lyuk előtt megállva. Emelje a sebességet 1,2 m/s-ra, és az 1-est a lyukba követi: a fehér lyukba esik.</translation>
+    </message>
+    <message>
+        <source>Stun cut (the 90° rule)</source>
+        <translation>Stopvágás (a 90°-os szabály)</translation>
+    </message>
+    <message>
+        <source>The half-ball cut of half-ball-cut.json with the cue ball closer and struck slightly below centre, so that it arrives sliding without spin. A stunned cue ball leaves at 90° to the object ball&apos;s path: exactly 90° with perfectly elastic balls, 87.5° here with restitution 0.95 (tan θ = 2 tan 30° / (1 - e)). The 1 goes into the top-right corner pocket; the cue ball runs along the tangent line to the bottom rail, just short of the bottom-right pocket.</source>
+        <translation>A half-ball-cut.json félgolyós vágása, közelebb álló és kissé a közép alatt megütött fehér golyóval, hogy pörgés nélkül, csúszva érkezzen. A stoppolt fehér golyó a célgolyó pályájára merőlegesen távozik: tökéletesen rugalmas golyókkal pontosan 90°-ban, itt, 0,95-ös ütközési számmal 87,5°-ban (tg θ = 2 tg 30° / (1 - e)). Az 1-es a jobb felső sarok lyukába esik; a fehér golyó az érintő mentén az alsó mantinelig fut, épp a jobb alsó lyuk előtt.</translation>
+    </message>
+    <message>
+        <source>Stun shot</source>
+        <translation>Stopütés</translation>
+    </message>
+    <message>
+        <source>A straight shot into the top side pocket, struck a little below centre (height -0.18). The backspin wears off on the way, so the cue ball arrives sliding without spin: it hands its whole speed to the 1 and stops dead (with restitution 0.95 it keeps 2.5 % of its speed and creeps on a few millimetres). Compare the follow and draw shots: same balls, different tip height.</source>
+        <translation>Egyenes lökés a felső középső lyukba, kissé a közép alatt megütve (magasság -0,18). A hátrapörgés útközben elfogy, így a fehér golyó pörgés nélkül, csúszva érkezik: teljes sebességét átadja az 1-esnek, és megáll (0,95-ös ütközési számmal sebességének 2,5 %-át megtartja, és néhány millimétert továbbkúszik). Hasonlítsa össze az utánfutó és a húzott ütéssel: ugyanazok a golyók, más dákómagasság.</translation>
+    </message>
+    <message>
+        <source>Three-cushion carom</source>
+        <translation>Háromfalas karambol</translation>
+    </message>
+    <message>
+        <source>Carom table, no pockets. To score, the white must hit both other balls and touch at least three cushions before it reaches the second one. Here it hits the red first, then runs along the right rail, the bottom rail and the left rail, and comes up into the yellow. Right-hand side spin (side 0.3) lengthens the angle off each rail; headings from about 23.4° to 23.7° score.</source>
+        <translation>Karambolasztal, lyukak nélkül. A pontszerzéshez a fehérnek mindkét másik golyót el kell találnia, és legalább három mantinelt érintenie, mielőtt a másodikat eléri. Itt először a pirosat találja el, aztán végigfut a jobb, az alsó és a bal mantinelen, majd felfelé jövet eltalálja a sárgát. A jobb oldalpörgetés (oldal 0,3) minden mantinelnél nyújtja a visszapattanás szögét; nagyjából 23,4° és 23,7° közötti irányokkal lesz pont.</translation>
+    </message>
+    <message>
+        <source>Two-rail kick</source>
+        <translation>Kerülés két mantinelről</translation>
+    </message>
+    <message>
+        <source>The 9 hides the 1 from the cue ball. Kick at it off two rails: the bottom rail, then the left rail, and the cue ball comes back into the 1. Headings from about 221.5° to 223.5° find it; the rails take speed and add spin at every contact, so the path is not the mirror path of a ray of light.</source>
+        <translation>A 9-es eltakarja az 1-est a fehér golyó elől. Kerülje meg két mantinelről: előbb az alsó, aztán a bal mantinelről, és a fehér golyó visszatér az 1-esre. Nagyjából 221,5° és 223,5° közötti irányok találják el; a mantinelek minden érintkezéskor sebességet vesznek el és pörgetést adnak, ezért a pálya nem egy fénysugár tükörpályája.</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::explain</name>
     <message>
         <source>Motion after</source>

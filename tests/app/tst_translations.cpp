@@ -8,12 +8,20 @@
 #include "SetupFile.h"
 #include "export/ShotFacts.h"
 #include "i18n/DisplayNames.h"
+#include "i18n/ExampleTexts.h"
+#include "editor/Document.h"
 #include "outcome/OutcomePanel.h"
 
 #include <QAction>
+#include <algorithm>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QMenu>
+#include <QPlainTextEdit>
+#include <QUndoStack>
 #include <QLibraryInfo>
 #include <QMenuBar>
 #include <QProcess>
@@ -51,6 +59,7 @@ private slots:
     void hungarianWindow();
     void qtOwnStrings();
     void hungarianOutcomeAndHandouts();
+    void exampleLessons();
     void englishWindow_data();
     void englishWindow();
     void systemLocaleChooses_data();
@@ -113,6 +122,50 @@ void TestTranslations::hungarianWindow()
     QCOMPARE(displayName(MotionState::Rolling), QStringLiteral("gördül"));
     QCOMPARE(displayName(EventKind::BallCushion), QStringLiteral("golyó–mantinel"));
     QCOMPARE(displayName(EventKind::SlideToRoll), QStringLiteral("csúszásból gördülés"));
+}
+
+// Issue 23's list: the example lessons are translated. The generated string table
+// (scripts/example-strings.py) is as current as the files, every name and note has its Hungarian, and
+// an example opened from the menu reads in the window's language without counting as an edit.
+void TestTranslations::exampleLessons()
+{
+    const QDir examples(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples"));
+    const QStringList files = examples.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    QVERIFY(files.size() >= 10);
+    QCOMPARE(exampleStrings().size(), static_cast<std::size_t>(files.size()));
+    QCOMPARE(installTranslations(QLocale(QStringLiteral("hu_HU"))), QStringLiteral("hu"));
+    for (const QString& name : files) {
+        QFile file(examples.filePath(name));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QJsonObject setup = QJsonDocument::fromJson(file.readAll()).object();
+        const auto row = std::find_if(exampleStrings().begin(), exampleStrings().end(),
+                                      [&](const ExampleString& s) { return name == QLatin1String(s.file); });
+        QVERIFY2(row != exampleStrings().end(), qPrintable(name + QStringLiteral(": run scripts/example-strings.py")));
+        QVERIFY2(setup.value(QStringLiteral("name")).toString() == QString::fromUtf8(row->name)
+                     && setup.value(QStringLiteral("notes")).toString() == QString::fromUtf8(row->notes),
+                 qPrintable(name + QStringLiteral(" changed: run scripts/example-strings.py, then translate")));
+        for (const char* english : {row->name, row->notes}) {
+            const QString hungarian = translatedExampleText(english);
+            QVERIFY2(!hungarian.isEmpty() && hungarian != QString::fromUtf8(english),
+                     qPrintable(name + QStringLiteral(": no Hungarian for \"%1\"").arg(QString::fromUtf8(english).left(60))));
+        }
+    }
+
+    MainWindow window;
+    QStringList titles;
+    for (const QAction* action : window.examplesMenu()->actions()) titles << action->text();
+    QVERIFY2(titles.contains(QStringLiteral("Stopütés")), qPrintable(titles.join(QStringLiteral(", "))));
+    QVERIFY(window.openExample(QStringLiteral(":/examples/stun-shot.json")));
+    const auto* notes = window.findChild<QPlainTextEdit*>(QStringLiteral("lessonNotes"));
+    QVERIFY(notes);
+    QVERIFY2(notes->toPlainText().startsWith(QStringLiteral("Egyenes lökés a felső középső lyukba")), qPrintable(notes->toPlainText()));
+    QCOMPARE(QString::fromStdString(window.document()->setup().name), QStringLiteral("Stopütés"));
+    QVERIFY(window.document()->undoStack()->isClean());
+    QCOMPARE(window.document()->undoStack()->count(), 0);
+
+    // English (and any language without the string) keeps the file's text.
+    installTranslations(QLocale::c());
+    QCOMPARE(translatedExampleText(exampleStrings().front().notes), QString::fromUtf8(exampleStrings().front().notes));
 }
 
 // Issue 21, item 5: the outcome line, the Outcome dock, the table's elements and the handouts' shot

@@ -1,4 +1,5 @@
 #include "Document.h"
+#include "i18n/ExampleTexts.h"
 
 #include "LessonIds.h"
 
@@ -128,8 +129,10 @@ bool Document::load(const QString& path, QString* error)
 {
     std::optional<Setup> loaded = io::loadSetup(path, error);
     if (!loaded) return false;
+    const bool example = isExampleFolder(QFileInfo(path).absolutePath());
+    if (example) translateExample(*loaded);  // a lesson reads in the window's language
     replace(*loaded, QFileInfo(path).absoluteFilePath(), QString());
-    example_ = isExampleFolder(QFileInfo(path).absolutePath());
+    example_ = example;
     return true;
 }
 
@@ -137,6 +140,7 @@ bool Document::loadData(const QByteArray& json, const QString& title, QString* e
 {
     std::optional<Setup> loaded = io::parseSetup(json, title, error);
     if (!loaded) return false;
+    translateExample(*loaded);  // a lesson reads in the window's language
     replace(*loaded, QString(), title);
     example_ = true;  // the Examples menu
     return true;

@@ -67,7 +67,8 @@ public:
     // loader's message in *error.
     void newDocument();
     bool load(const QString& path, QString* error);
-    // Opens setup text as a new untitled document (bundled examples); `title` names it.
+    // Opens setup text as a new untitled document (bundled examples); `title` names it. An example's
+    // name and notes are shown in the window's language (i18n/ExampleTexts.h), here and in load().
     bool loadData(const QByteArray& json, const QString& title, QString* error);
     bool save(const QString& path, QString* error);
 
