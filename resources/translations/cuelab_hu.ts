@@ -3297,7 +3297,7 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     </message>
     <message>
         <source>Ends</source>
-        <translation>Végső hely</translation>
+        <translation>Vége</translation>
     </message>
     <message>
         <source>x, y (m)</source>

@@ -2,6 +2,7 @@
 
 #include "BallEditor.h"
 #include "i18n/DisplayNames.h"
+#include "layout/ColumnFit.h"
 #include "Document.h"
 #include "Quantities.h"
 
@@ -13,6 +14,7 @@
 #include <QSplitter>
 #include <QSignalBlocker>
 #include <QStyledItemDelegate>
+#include <QEvent>
 #include <QTableWidget>
 #include <QToolBar>
 #include <QToolButton>
@@ -73,11 +75,11 @@ BallsPanel::BallsPanel(Document* document, QWidget* parent) : QWidget(parent), d
     // Columns are sized when the balls change, not on every frame of playback (ResizeToContents
     // would measure every row each time a speed changes).
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
-    table_->horizontalHeader()->setStretchLastSection(true);
     table_->setAlternatingRowColors(true);
     auto* delegate = new CoordinateDelegate(table_);
     table_->setItemDelegateForColumn(XColumn, delegate);
     table_->setItemDelegateForColumn(YColumn, delegate);
+    table_->viewport()->installEventFilter(this);
 
     add_ = new QAction(QIcon::fromTheme(QStringLiteral("list-add")), tr("&Add Ball"), this);
     add_->setToolTip(tr("Add a ball on a free spot near the centre of the table"));
@@ -219,6 +221,14 @@ void BallsPanel::fitColumns()
     };
     atLeast(StateColumn, QStringLiteral("stationary"));
     atLeast(PositionColumn, QStringLiteral("(0.000, 0.000)"));
+    // A narrow dock: the columns give up what they have beyond their texts rather than scroll sideways.
+    fitColumnsToWidth(table_, ColumnText::OneLine);
+}
+
+bool BallsPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == table_->viewport() && event->type() == QEvent::Resize) fitColumns();
+    return QWidget::eventFilter(watched, event);
 }
 
 void BallsPanel::refreshMotion()

@@ -36,6 +36,9 @@ public slots:
 signals:
     void ballSelected(int index);
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;  // the table's width: fitColumns()
+
 private:
     void rebuild();         // rows from the setup
     void refreshMotion();   // the columns that depend on the time

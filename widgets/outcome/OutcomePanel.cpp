@@ -1,8 +1,10 @@
 #include "OutcomePanel.h"
+#include "layout/ColumnFit.h"
 
 #include "OutcomeLine.h"
 #include "i18n/DisplayNames.h"
 
+#include <QEvent>
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -42,14 +44,12 @@ OutcomePanel::OutcomePanel(QWidget* parent) : QWidget(parent)
     facts_ = new QTableWidget(0, 2, this);
     facts_->setObjectName(QStringLiteral("outcomeFacts"));
     facts_->setHorizontalHeaderLabels({tr("What"), tr("Outcome")});
-    facts_->horizontalHeader()->setStretchLastSection(true);
     facts_->verticalHeader()->hide();
     facts_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     facts_->setToolTip(tr("Double-click the first contact or a pocketing to go to that event"));
     balls_ = new QTableWidget(0, 4, this);
     balls_->setObjectName(QStringLiteral("outcomeBalls"));
     balls_->setHorizontalHeaderLabels({tr("Ball"), tr("Cushions"), tr("Ends"), tr("x, y (m)")});
-    balls_->horizontalHeader()->setStretchLastSection(true);
     balls_->verticalHeader()->hide();
     balls_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     balls_->setToolTip(tr("Per ball: ball-cushion contacts (jaws included) and where it ends; double-click selects it"));
@@ -64,6 +64,8 @@ OutcomePanel::OutcomePanel(QWidget* parent) : QWidget(parent)
         if (event >= 0) emit eventActivated(event);
     });
     connect(balls_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) { emit ballActivated(row); });
+    facts_->viewport()->installEventFilter(this);
+    balls_->viewport()->installEventFilter(this);
     setResult(nullptr);
 }
 
@@ -117,7 +119,6 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
     if (!recordingResidual_.isEmpty())
         addFact(tr("Against the recording"), recordingResidual_, -1,
                 tr("RMSE (cm) of the recorded samples against the simulated balls (the Recording dock has the details)"));
-    facts_->resizeColumnToContents(0);
 
     for (int b = 0; b < static_cast<int>(r.balls.size()); ++b) {
         balls_->insertRow(b);
@@ -132,7 +133,21 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
                                    : QStringLiteral("%1, %2").arg(s.position.x(), 0, 'f', 4).arg(s.position.y(), 0, 'f', 4),
                                    tr("Final position in metres (table frame)")));
     }
-    balls_->resizeColumnsToContents();
+    fitColumns();
+}
+
+void OutcomePanel::fitColumns()
+{
+    fitColumnsToWidth(facts_);
+    fitColumnsToWidth(balls_);
+}
+
+bool OutcomePanel::eventFilter(QObject* watched, QEvent* event)
+{
+    // The tables' viewports: a narrower dock (or a vertical scroll bar appearing) refits the columns.
+    if (event->type() == QEvent::Resize && (watched == facts_->viewport() || watched == balls_->viewport()))
+        fitColumnsToWidth(watched == facts_->viewport() ? facts_ : balls_);
+    return QWidget::eventFilter(watched, event);
 }
 
 }  // namespace cuelab

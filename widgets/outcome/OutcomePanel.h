@@ -32,7 +32,12 @@ signals:
     void eventActivated(int index);  // the first contact's or a pocketing's event
     void ballActivated(int index);
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
+    void fitColumns();  // to the dock's width, wrapping instead of scrolling sideways (ColumnFit.h)
+
     std::shared_ptr<const SimulationResult> result_;
     ShotOutcome outcome_;
     QString summary_;
