@@ -195,8 +195,16 @@ void Simulator::airRelease(int i, double t, int keep, int keep2)
         regroupAt_[at(k)] = kNever;
         if (k == keep || k == keep2) continue;
         const bool pushed = heldFlight(k) || !push_[at(k)].isZero(0.0);
-        if (pushed) {
-            beginSegment(k, t, stateNow(k, t));
+        // The ball on the cloth goes on as the hold judged it: a slip of rounding rolled out
+        // (airHold). Left sliding, its friction (a few um/s of slip, ending within a microsecond)
+        // would press it back on the flying ball that the hold just let go for want of that very
+        // press: detection met the pair at once, the law (parting) and the hold (no force) left
+        // it as it was, and it was met again at that instant until the event cap
+        // (seed14-shot150029: a ball jumping off the cloth beside one whose slip had run out).
+        BallState s = stateNow(k, t);
+        const bool rolled = !flying(k) && rollOutRounding(s, radius(k), p_);
+        if (pushed || rolled) {
+            beginSegment(k, t, s);
             r_.timelines[at(k)].back().held = true;
         }
         predictOwn(k, t);

@@ -507,6 +507,14 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
     }
     e.after[0] = res.a;
     e.after[1] = res.b;
+    if (res.approachSpeed <= kRestingSpeed && res.impulse.isZero(0.0)) {
+        // Touching with no approach and not held: the ball on the cloth goes on as the air hold
+        // judged it, a slip of rounding rolled out (as airRelease's). Left sliding, its friction
+        // would press it back at once on the flying ball the hold found no force for: met again at
+        // this instant until the event cap (seed14-shot150029).
+        for (std::size_t k = 0; k < 2; ++k)
+            if (e.before[k].motion != MotionState::Airborne) rollOutRounding(e.after[k], radius(e.balls[k]), p_);
+    }
     e.after[0].motion = classify(e.after[0], radius(i));
     e.after[1].motion = classify(e.after[1], radius(j));
     const Vec2 flat = res.normal.head<2>();
