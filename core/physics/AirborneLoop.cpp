@@ -115,6 +115,7 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     const double horizon = landing - now;
     for (std::size_t k = 0; k < table_.cushions.size(); ++k) {
         if (!boxNearSlab(box, R, table_.cushions[k]) || airEdge_[at(i)] == static_cast<int>(k)) continue;  // (held on its edge)
+        if (heldCount_[at(i)] > 0 && heldWall(i, ContactBody::Cushion, static_cast<int>(k))) continue;  // (its face held by a group)
         const AirCushionContact c = airCushionContact(sp, R, table_.cushions[k], table_.cushionHeight, horizon);
         if (c.kind == CushionContactKind::None || c.time == kNever) continue;
         const Candidate cand{now + c.time, 1, i, Agent::Cushion, static_cast<int>(k)};
@@ -396,6 +397,24 @@ void Simulator::airCushion(const Candidate& c, Event& e)
     const FixedImpactResult res = resolveFixedImpact(before, R, mass(i), normal, p_.cushionRestitution, p_.cushionFriction);
     e.after[0] = res.after;
     e.after[0].motion = classify(e.after[0], R);
+    // A flying ball that a held group presses on a cushion's face, or that a ball's hold in the air
+    // let go at this instant (its push pressed it there): the face would answer each press alone, the
+    // group (or the other ball, met again at once) press it back, and the two hand it back and forth
+    // at this instant until the event cap. The face is held as a row of the ball's group instead (a
+    // horizontal normal, HeldContacts.cpp), solved with its other contacts, when the law leaves it
+    // parting slower than kHoldSpeed (Contact.h's hold rule).
+    if (c.agent == Agent::Cushion && airContact_[at(i)].kind == CushionContactKind::Face && e.after[0].motion == MotionState::Airborne &&
+        (heldCount_[at(i)] > 0 || airLetGo_[at(i)] == e.time)) {
+        const Vec2 out = table_.cushions[at(c.index)].normal;
+        const double separation = e.after[0].velocity.dot(out);
+        if (separation < kHoldSpeed) {
+            e.normal = -out;
+            e.contactPoint = before.position - R * out;
+            e.approachSpeed = res.approachSpeed;
+            e.impulse = res.impulse;
+            if (holdCollision(e, HeldContact{i, ContactBody::Cushion, c.index}, separation)) return;
+        }
+    }
     // A bounce on a nose edge that leaves the ball parting slower than kHoldSpeed while gravity
     // presses it on: it would bounce ever lower (a Zeno run of impacts that the clock cannot resolve).
     // The edge holds it instead (AirHold.cpp), the rebound taken away (which only removes energy), as

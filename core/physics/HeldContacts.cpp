@@ -199,6 +199,9 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             vn = -sa.velocity.dot(link.normal);
             link.curvature = 0.0;
             const double foot = (sa.position - seg.a).dot((seg.b - seg.a).normalized());
+            // A flying ball's face (issue 23): the same vertical plane, up to the nose's height (above
+            // it the nose edge is the body touched).
+            if (sa.motion == MotionState::Airborne && radius(h.a) + sa.z > table_.cushionHeight + kContactTolerance) return false;
             return foot >= -kContactTolerance && foot <= (seg.b - seg.a).norm() + kContactTolerance;  // (as detection)
         }
         const JawTip& jaw = table_.jaws[at(h.other)];

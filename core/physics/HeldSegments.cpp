@@ -85,6 +85,10 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             // up, so a ball held on a rail never rides the rail's line past its end over a mouth.
             const double f0 = (pa.c0 - seg.a).dot(tHat), f1 = pa.c1.dot(tHat), f2 = pa.c2.dot(tHat);
             limit = std::min({limit, firstCrossing(f0, f1, f2, -kContactTolerance), firstCrossing(f0, f1, f2, L + kContactTolerance)});
+            if (flying(h.a)) {  // a flying ball's face: until its centre rises to the nose's height
+                const SpacePath sp = spaceNow(h.a, t);
+                limit = std::min(limit, firstCrossing(sp.c0.z(), sp.c1.z(), sp.c2.z(), table_.cushionHeight));
+            }
             continue;
         }
         if (h.body == ContactBody::Ball && (flying(h.a) || flying(h.other))) {

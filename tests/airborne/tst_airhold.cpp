@@ -53,6 +53,7 @@ private slots:
     void forceIsTheHoldsClosedForm();
     void heldStillByTheCloth();
     void slipOfRoundingRollsOutWhenNotHeld();
+    void wedgedAgainstACushionFace();
 };
 
 void TestAirHold::heldOnAShoulder_data()
@@ -199,6 +200,50 @@ void TestAirHold::slipOfRoundingRollsOutWhenNotHeld()
         if (e.kind != EventKind::BallBall || e.time != 0.0) continue;
         QVERIFY2(k == 1 && e.approachSpeed > 1e-9, qPrintable(QStringLiteral("event %1 at t = 0").arg(k)));
     }
+}
+
+void TestAirHold::wedgedAgainstACushionFace()
+{
+    // Ball "top" at rest low on the side of ball "low" (85 degrees from the vertical, its centre below
+    // the nose) and touching the face of the rail at x = 0: the hold's force on it, along the line of
+    // centres, presses it into the face. Held pairwise, the face met it at once and its event let the
+    // pair go, the pair was met and held again, and so on at t = 0 until the event cap
+    // (seed12-shot726376). The face is a row of the ball's group, solved with the ball's contact.
+    const double theta = 85.0 * M_PI / 180.0;
+    Setup setup;
+    Ball low;
+    low.id = "low";
+    low.state.position = Vec2(kR + 2.0 * kR * std::sin(theta), 0.6);
+    Ball top;
+    top.id = "top";
+    top.state.position = Vec2(kR, 0.6);
+    top.state.z = 2.0 * kR * std::cos(theta);
+    setup.balls = {low, top};
+    for (Ball& b : setup.balls) b.state.motion = isAirborne(b.state) ? MotionState::Airborne : classify(b.state, b.radius);
+    const SimulationResult r = simulate(setup);
+    QVERIFY2(r.status == SimulationStatus::AllAtRest, r.error.c_str());
+    QVERIFY2(r.events.size() < 1000, qPrintable(QString::number(r.events.size())));
+    // The face is held at t = 0 (with the pair, in one group).
+    bool faceHeld = false;
+    for (const Event& e : r.events) faceHeld = faceHeld || (e.kind == EventKind::BallCushion && e.time == 0.0 && e.held);
+    QVERIFY(faceHeld);
+    const double end = r.endTime;
+    double last = mechanicalEnergyAt(r, 0.0);
+    for (int k = 0; k <= 4000; ++k) {
+        const double t = end * k / 4000.0;
+        const std::vector<BallState> s = r.statesAt(t);
+        QVERIFY2(centreDistance(s[0], s[1]) >= 2.0 * kR - 1e-9,
+                 qPrintable(QStringLiteral("t = %1: distance %2").arg(t).arg(centreDistance(s[0], s[1]) - 2.0 * kR)));
+        QVERIFY2(s[1].position.x() >= kR - 1e-9, qPrintable(QStringLiteral("t = %1: %2 m into the face").arg(t).arg(kR - s[1].position.x())));
+        QVERIFY(s[1].z >= -1e-12);
+        const double e = mechanicalEnergyAt(r, t);
+        QVERIFY2(e <= last + 1e-12, qPrintable(QStringLiteral("t = %1: energy rose by %2 J").arg(t).arg(e - last)));
+        last = e;
+    }
+    // The top ball came down on the cloth by the rail and pushed the low ball away from it.
+    const std::vector<BallState> rest = r.statesAt(end);
+    QCOMPARE(rest[1].z, 0.0);
+    QVERIFY(rest[0].position.x() > setup.balls[0].state.position.x());
 }
 
 QTEST_APPLESS_MAIN(TestAirHold)
