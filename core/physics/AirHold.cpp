@@ -259,22 +259,28 @@ bool Simulator::airEdgeHold(int a, int k, double t, const BallState& s)
 bool Simulator::airEdgeGeometry(int a, const CushionSegment& seg, const BallState& s, ContactLink& link, double& gap,
                                 double& vn) const
 {
+    // The nose edge is the segment at the nose height, its ends the slab's top corners
+    // (CushionContactKind::End's): the contact is with its nearest point.
     const double R = radius(a), h = table_.cushionHeight;
     const Vec2 along = seg.b - seg.a;
     const double L = along.norm();
-    const double foot = (s.position - seg.a).dot(along) / L;
+    const Vec2 tHat = along / L;
+    const double foot = (s.position - seg.a).dot(tHat);
     const double nh = (s.position - seg.a).dot(seg.normal), w = (R + s.z) - h;
-    const double dist = std::hypot(nh, w);
-    if (!(foot >= -kContactTolerance && foot <= L + kContactTolerance) || nh < 0.0 || w < 0.0 || !(dist > 0.0)) return false;
-    const Vec3 out = (nh / dist) * Vec3(seg.normal.x(), seg.normal.y(), 0.0) + Vec3(0.0, 0.0, w / dist);
+    const Vec2 nearest = seg.a + std::clamp(foot, 0.0, L) * tHat;
+    const Vec3 rel(s.position.x() - nearest.x(), s.position.y() - nearest.y(), w);
+    const double dist = rel.norm();
+    if (nh < 0.0 || w < 0.0 || !(dist > 0.0)) return false;
+    const Vec3 out = rel / dist;
     const Vec3 v = velocity3(s);
-    const Vec3 e(along.x() / L, along.y() / L, 0.0);
     link.normal = -out.head<2>();
     link.nz = -out.z();
     gap = dist - R;
     vn = v.dot(out);
-    const double alongSpeed = v.dot(e);
-    link.curvature = std::max(0.0, v.squaredNorm() - vn * vn - alongSpeed * alongSpeed) / dist;  // (about the edge)
+    // The curvature of the motion about the edge (its speed along the edge excluded) or the corner.
+    const bool onEdge = foot >= 0.0 && foot <= L;
+    const double alongSpeed = onEdge ? v.head<2>().dot(tHat) : 0.0;
+    link.curvature = std::max(0.0, v.squaredNorm() - vn * vn - alongSpeed * alongSpeed) / dist;
     return true;
 }
 

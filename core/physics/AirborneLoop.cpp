@@ -403,10 +403,14 @@ void Simulator::airCushion(const Candidate& c, Event& e)
     // the cloth's hold rule does for a collision on the cloth.
     // The same on a jaw's rim (its top is flat: a ball on it is not held).
     const bool rim = c.agent == Agent::Jaw && normal.head<2>().norm() > 0.0;
-    if ((rim || c.agent == Agent::Cushion) && airContact_[at(i)].kind == CushionContactKind::Nose && e.after[0].motion == MotionState::Airborne) {
+    // (A segment's bare end: its top corner, the nose edge's end, is held as the edge is, in a group.)
+    const bool topCorner = c.agent == Agent::Cushion && airContact_[at(i)].kind == CushionContactKind::End && normal.z() > 0.0;
+    if ((((rim || c.agent == Agent::Cushion) && airContact_[at(i)].kind == CushionContactKind::Nose) || topCorner) &&
+        e.after[0].motion == MotionState::Airborne) {
         const double separation = Vec3(e.after[0].velocity.x(), e.after[0].velocity.y(), e.after[0].vz).dot(normal);
         if (separation < kHoldSpeed && c.agent == Agent::Cushion &&
-            (heldCount_[at(i)] > 0 || airLetGo_[at(i)] == e.time || (airEdgeLetGo_[at(i)] == e.time && airEdgeLetGoOf_[at(i)] != c.index))) {
+            (topCorner || heldCount_[at(i)] > 0 || airLetGo_[at(i)] == e.time ||
+             (airEdgeLetGo_[at(i)] == e.time && airEdgeLetGoOf_[at(i)] != c.index))) {
             // Held in a group (on a ball, or on another edge), or let go at this instant by a hold on
             // another body that presses it on this edge too: it is wedged between the two, and pairwise
             // holds would hand it back and forth (seed12-shot988364: two nose edges in a corner;
@@ -421,7 +425,7 @@ void Simulator::airCushion(const Candidate& c, Event& e)
             e.impulse = res.impulse;
             if (holdCollision(e, HeldContact{i, ContactBody::Cushion, c.index}, std::max(0.0, separation))) return;
         }
-        if (separation < kHoldSpeed) {
+        if (separation < kHoldSpeed && !topCorner) {
             BallState seated = e.after[0];
             if (separation > 0.0) {
                 seated.velocity -= separation * normal.head<2>();

@@ -11,6 +11,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace cuelab;
@@ -53,6 +54,7 @@ private slots:
     void forceIsTheHoldsClosedForm();
     void heldStillByTheCloth();
     void wedgedOnTwoNoseEdges();
+    void wedgedOnTwoSegmentEnds();
 };
 
 void TestAirHold::heldOnAShoulder_data()
@@ -185,6 +187,49 @@ void TestAirHold::wedgedOnTwoNoseEdges()
     bool heldOnBoth = false;
     for (const Event& e : r.events) heldOnBoth = heldOnBoth || (e.kind == EventKind::BallCushion && e.held && e.grouped);
     QVERIFY(heldOnBoth);
+}
+
+// A ball set down 1 um above the far ends of a side pocket's two facings (snooker), past both: it
+// falls onto the two top corners (CushionContactKind::End) at once. The bare ends were never held:
+// it bounced between them ever lower until a root was lost and it sank 1.2 mm into a facing's nose
+// (seed15-shot877329). Held on both (airEdgeGeometry: the nose edge's nearest point, its end), it
+// slides down between them into the pocket's mouth, never into either.
+void TestAirHold::wedgedOnTwoSegmentEnds()
+{
+    Setup setup;
+    setup.table.kind = TableKind::Snooker;
+    const Table table = makeTable(setup.table);
+    const CushionSegment &left = table.cushions[13], &right = table.cushions[11];  // the top side pocket's facings
+    const double R = 0.02625, h = table.cushionHeight, dy = 0.002;
+    QVERIFY(std::abs(left.b.y() - right.b.y()) <= 1e-12);
+    const Vec2 mid = 0.5 * (left.b + right.b);
+    const double dx = 0.5 * (right.b - left.b).norm();
+    Ball b;
+    b.id = "wedged";
+    b.radius = R;
+    b.state.position = mid + Vec2(0.0, dy);  // (past both ends)
+    b.state.z = h + std::sqrt(R * R - dx * dx - dy * dy) - R + 1e-6;
+    b.state.motion = MotionState::Airborne;
+    setup.balls = {b};
+    const SimulationResult r = simulate(setup);
+    QVERIFY2(r.status == SimulationStatus::AllAtRest, r.error.c_str());
+    // Against each facing's nose edge and its ends, above the nose: never an overlap.
+    for (int k = 0; k <= 20000; ++k) {
+        const double t = r.endTime * k / 20000.0;
+        const BallState s = r.stateAt(0, t);
+        if (isOutOfPlay(s.motion)) break;
+        for (const CushionSegment* seg : {&left, &right}) {
+            const Vec2 along = seg->b - seg->a;
+            const double L = along.norm(), foot = (s.position - seg->a).dot(along / L);
+            const Vec2 nearest = seg->a + std::clamp(foot, 0.0, L) * (along / L);
+            if ((s.position - seg->a).dot(seg->normal) < 0.0 || R + s.z < h) continue;
+            const double overlap = R - std::hypot((s.position - nearest).norm(), R + s.z - h);
+            QVERIFY2(overlap <= 1e-9, qPrintable(QStringLiteral("t = %1: overlap %2 m").arg(t).arg(overlap)));
+        }
+    }
+    int held = 0;
+    for (const Event& e : r.events) held += e.kind == EventKind::BallCushion && e.held ? 1 : 0;
+    QVERIFY(held >= 2);
 }
 
 QTEST_APPLESS_MAIN(TestAirHold)
