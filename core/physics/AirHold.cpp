@@ -174,6 +174,8 @@ bool Simulator::airHold(int a, int b, double t)
 void Simulator::airRelease(int i, double t, int keep, int keep2)
 {
     if (airEdge_[at(i)] >= 0) {  // held on a nose edge: only the ball itself goes on freely
+        airEdgeLetGo_[at(i)] = t;
+        airEdgeLetGoOf_[at(i)] = airEdge_[at(i)];
         airEdge_[at(i)] = -1;
         regroupAt_[at(i)] = kNever;
         if (i != keep && i != keep2) {
@@ -259,6 +261,34 @@ bool Simulator::airEdgeHold(int a, int k, double t, const BallState& s)
     const double f0 = (pa.c0.head<2>() - seg.a).dot(tHat), f1 = pa.c1.head<2>().dot(tHat), f2 = pa.c2.head<2>().dot(tHat);
     limit = std::min({limit, firstCrossing(f0, f1, f2, 0.0), firstCrossing(f0, f1, f2, L)});
     heldFixedUntil(a, t, limit);
+    return true;
+}
+
+bool Simulator::airEdgeGeometry(int a, const CushionSegment& seg, const BallState& s, ContactLink& link, double& gap,
+                                double& vn) const
+{
+    // The nose edge is the segment at the nose height, its ends the slab's top corners
+    // (CushionContactKind::End's): the contact is with its nearest point.
+    const double R = radius(a), h = table_.cushionHeight;
+    const Vec2 along = seg.b - seg.a;
+    const double L = along.norm();
+    const Vec2 tHat = along / L;
+    const double foot = (s.position - seg.a).dot(tHat);
+    const double nh = (s.position - seg.a).dot(seg.normal), w = (R + s.z) - h;
+    const Vec2 nearest = seg.a + std::clamp(foot, 0.0, L) * tHat;
+    const Vec3 rel(s.position.x() - nearest.x(), s.position.y() - nearest.y(), w);
+    const double dist = rel.norm();
+    if (nh < 0.0 || w < 0.0 || !(dist > 0.0)) return false;
+    const Vec3 out = rel / dist;
+    const Vec3 v = velocity3(s);
+    link.normal = -out.head<2>();
+    link.nz = -out.z();
+    gap = dist - R;
+    vn = v.dot(out);
+    // The curvature of the motion about the edge (its speed along the edge excluded) or the corner.
+    const bool onEdge = foot >= 0.0 && foot <= L;
+    const double alongSpeed = onEdge ? v.head<2>().dot(tHat) : 0.0;
+    link.curvature = std::max(0.0, v.squaredNorm() - vn * vn - alongSpeed * alongSpeed) / dist;
     return true;
 }
 

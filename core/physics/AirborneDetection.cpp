@@ -63,7 +63,7 @@ bool touchingContactNow(const V& d0, const V& d1, const V& d2, double reach, dou
 }
 
 // Touching now (within kContactTolerance) and approaching faster than kRestingSpeed: the rule of a
-// fixed edge or corner, which no hold takes (the nose edge's, below).
+// segment end's corners (the nose edge's is touchingContactNow, below).
 template <typename V>
 bool approachingNow(const V& d0, const V& d1, double reach)
 {
@@ -161,8 +161,12 @@ AirCushionContact airCushionContact(const SpacePath& p, double radius, const Cus
     {
         const double n0 = f.n[0], w0 = f.w[0];
         const double dist = std::hypot(n0, w0);
+        // Touching now: Detection.cpp's rule, as a face's and a ball's (a ball set or held on the edge
+        // with no approach while gravity or another hold presses it on: its root at s = 0 is no root
+        // after 0, and it sank through the nose; the edge holds it, AirHold.cpp).
+        const Vec2 e0(n0, w0), e1(f.n[1], f.w[1]), e2(f.n[2], f.w[2]);
         if (std::abs(dist - radius) <= kContactTolerance && n0 >= -kBoundaryTolerance && w0 >= -kBoundaryTolerance &&
-            n0 * f.n[1] + w0 * f.w[1] < -kRestingSpeed * dist && onSegment(0.0))
+            touchingContactNow<Vec2>(e0, e1, e2, radius, horizon) && onSegment(0.0))
             offer(0.0, CushionContactKind::Nose);
         const double s = firstFallingRootWhere(cushionNoseGap(p, radius, seg, noseHeight), horizon, [&](double t) {
             return f.nAt(t) >= -kBoundaryTolerance && f.wAt(t) >= -kBoundaryTolerance && onSegment(t);

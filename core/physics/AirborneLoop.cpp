@@ -115,7 +115,7 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     const double horizon = landing - now;
     for (std::size_t k = 0; k < table_.cushions.size(); ++k) {
         if (!boxNearSlab(box, R, table_.cushions[k]) || airEdge_[at(i)] == static_cast<int>(k)) continue;  // (held on its edge)
-        if (heldCount_[at(i)] > 0 && heldWall(i, ContactBody::Cushion, static_cast<int>(k))) continue;  // (its face held by a group)
+        if (heldCount_[at(i)] > 0 && heldWall(i, ContactBody::Cushion, static_cast<int>(k))) continue;  // (a row of its group: a face or an edge)
         const AirCushionContact c = airCushionContact(sp, R, table_.cushions[k], table_.cushionHeight, horizon);
         if (c.kind == CushionContactKind::None || c.time == kNever) continue;
         const Candidate cand{now + c.time, 1, i, Agent::Cushion, static_cast<int>(k)};
@@ -421,9 +421,29 @@ void Simulator::airCushion(const Candidate& c, Event& e)
     // the cloth's hold rule does for a collision on the cloth.
     // The same on a jaw's rim (its top is flat: a ball on it is not held).
     const bool rim = c.agent == Agent::Jaw && normal.head<2>().norm() > 0.0;
-    if ((rim || c.agent == Agent::Cushion) && airContact_[at(i)].kind == CushionContactKind::Nose && e.after[0].motion == MotionState::Airborne) {
+    // (A segment's bare end: its top corner, the nose edge's end, is held as the edge is, in a group.)
+    const bool topCorner = c.agent == Agent::Cushion && airContact_[at(i)].kind == CushionContactKind::End && normal.z() > 0.0;
+    if ((((rim || c.agent == Agent::Cushion) && airContact_[at(i)].kind == CushionContactKind::Nose) || topCorner) &&
+        e.after[0].motion == MotionState::Airborne) {
         const double separation = Vec3(e.after[0].velocity.x(), e.after[0].velocity.y(), e.after[0].vz).dot(normal);
-        if (separation < kHoldSpeed) {
+        if (separation < kHoldSpeed && c.agent == Agent::Cushion &&
+            (topCorner || heldCount_[at(i)] > 0 || airLetGo_[at(i)] == e.time ||
+             (airEdgeLetGo_[at(i)] == e.time && airEdgeLetGoOf_[at(i)] != c.index))) {
+            // Held in a group (on a ball, or on another edge), or let go at this instant by a hold on
+            // another body that presses it on this edge too: it is wedged between the two, and pairwise
+            // holds would hand it back and forth (seed12-shot988364: two nose edges in a corner;
+            // seed14-shot652328: a ball on the cloth and a nose edge), each time a little into the
+            // other, until a root was lost and the ball sank through the nose. The edge becomes a row
+            // in space of a group (HeldContacts.cpp, airEdgeGeometry); the other contact, met at once,
+            // joins it (groupHoldable, or this branch), and the rows are solved together.
+            const Vec2 flat = normal.head<2>();
+            e.normal = flat.norm() > 0.0 ? Vec2(-flat.normalized()) : Vec2(Vec2::Zero());
+            e.contactPoint = before.position - R * flat;
+            e.approachSpeed = res.approachSpeed;
+            e.impulse = res.impulse;
+            if (holdCollision(e, HeldContact{i, ContactBody::Cushion, c.index}, std::max(0.0, separation))) return;
+        }
+        if (separation < kHoldSpeed && !topCorner) {
             BallState seated = e.after[0];
             if (separation > 0.0) {
                 seated.velocity -= separation * normal.head<2>();

@@ -192,6 +192,15 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             link.curvature = separationCurvature(d, v);
             return true;
         }
+        if (h.body == ContactBody::Cushion && sa.motion == MotionState::Airborne && radius(h.a) + sa.z > table_.cushionHeight) {
+            // A flying ball on a nose edge (issue 23; airEdgeHold's geometry): the contact in space, its
+            // normal from the edge to the centre in the plane across the edge, tilted up. The slab's
+            // nearest point to a centre above the nose is on its edge (or an end's top corner); below
+            // the nose it is on the face (next).
+            const CushionSegment& seg = table_.cushions[at(h.other)];
+            if (!airEdgeGeometry(h.a, seg, sa, link, gap, vn)) return false;
+            return true;
+        }
         if (h.body == ContactBody::Cushion) {
             const CushionSegment& seg = table_.cushions[at(h.other)];
             link.normal = -seg.normal;

@@ -84,10 +84,33 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             // Until the foot leaves the segment: past the tolerance the held geometry (settle) gives
             // up, so a ball held on a rail never rides the rail's line past its end over a mouth.
             const double f0 = (pa.c0 - seg.a).dot(tHat), f1 = pa.c1.dot(tHat), f2 = pa.c2.dot(tHat);
+            const double h0 = table_.cushionHeight;
+            if (flying(h.a) && spaceNow(h.a, t).c0.z() > h0) {
+                // A flying ball on the nose edge (its centre above the nose: settle's geometry): its
+                // frozen normal turns about the edge (CircleLimits in the plane across it, as
+                // airEdgeHold's), or about the end's top corner (airEdgeGeometry) until the foot comes
+                // onto the segment; and until the centre comes down to the nose, where the face takes over.
+                const SpacePath sp = spaceNow(h.a, t);
+                const Vec3 e(tHat.x(), tHat.y(), 0.0);
+                limit = std::min(limit, firstCrossing(sp.c0.z(), sp.c1.z(), sp.c2.z(), h0));
+                CircleLimits l;
+                if (f0 >= 0.0 && f0 <= L) {
+                    auto acrossOf = [&](const Vec3& x) { return Vec3(x - x.dot(e) * e); };
+                    const Vec3 edge0(seg.a.x(), seg.a.y(), h0);
+                    l = circleLimits<Vec3>(acrossOf(edge0 - sp.c0), acrossOf(-sp.c1), acrossOf(-sp.c2), radius(h.a));
+                    limit = std::min({limit, firstCrossing(f0, f1, f2, 0.0), firstCrossing(f0, f1, f2, L)});
+                } else {
+                    const Vec2 end = f0 < 0.0 ? seg.a : seg.b;
+                    l = circleLimits<Vec3>(Vec3(end.x(), end.y(), h0) - sp.c0, -sp.c1, -sp.c2, radius(h.a));
+                    limit = std::min(limit, firstCrossing(f0, f1, f2, f0 < 0.0 ? 0.0 : L));
+                }
+                limit = std::min({limit, l.gap, l.drop});
+                continue;
+            }
             limit = std::min({limit, firstCrossing(f0, f1, f2, -kContactTolerance), firstCrossing(f0, f1, f2, L + kContactTolerance)});
             if (flying(h.a)) {  // a flying ball's face: until its centre rises to the nose's height
                 const SpacePath sp = spaceNow(h.a, t);
-                limit = std::min(limit, firstCrossing(sp.c0.z(), sp.c1.z(), sp.c2.z(), table_.cushionHeight));
+                limit = std::min(limit, firstCrossing(sp.c0.z(), sp.c1.z(), sp.c2.z(), h0));
             }
             continue;
         }

@@ -57,6 +57,8 @@ public:
         airHeld_.assign(n, -1);
         airLetGo_.assign(n, kNever);
         airLetGoOf_.assign(n, -1);
+        airEdgeLetGo_.assign(n, kNever);
+        airEdgeLetGoOf_.assign(n, -1);
         airEdge_.assign(n, -1);
         series_.assign(n, 0);
         seriesOf_.resize(n);
@@ -161,6 +163,11 @@ private:
     // A flying ball held on cushion k's nose edge (it would bounce on it ever lower, a Zeno run): from
     // its state `s` at t; false (nothing changed) when the edge does not press it or it is off the edge.
     bool airEdgeHold(int a, int k, double t, const BallState& s);
+    // A flying ball's contact with a nose edge as a row of a held group (settle): its link (normal from
+    // the centre to the edge, tilted: ContactLink::nz; the curvature of its motion about the edge),
+    // gap and relative normal speed (> 0 parting); false when its foot is off the segment (past
+    // kContactTolerance, as detection) or it is not above the nose in front of the nose line.
+    bool airEdgeGeometry(int a, const CushionSegment& seg, const BallState& s, ContactLink& link, double& gap, double& vn) const;
     // The same on jaw k's rim (the circle at the nose height): airEdge_ is then cushions + k.
     bool airRimHold(int a, int k, double t, const BallState& s);
     // Ball a, held on a fixed edge or rim from t, is solved again after `limit` (at least 1e-9 s).
@@ -231,6 +238,8 @@ private:
     std::vector<int> airHeld_;    // the ball it is held with in the air (AirHold.cpp), -1 if none
     std::vector<double> airLetGo_;  // s, when its last hold in the air with a ball ended (kNever if none)
     std::vector<int> airLetGoOf_;   // the ball it was held with then
+    std::vector<double> airEdgeLetGo_;  // s, when its last hold on a nose edge or rim ended (kNever if none)
+    std::vector<int> airEdgeLetGoOf_;   // that edge (airEdge_'s numbering)
     std::vector<int> airEdge_;    // the cushion whose nose edge holds it in the air (cushions + k: jaw k's rim), -1 if none
     double lastCandidateImpulse_ = 0.0;  // N s, the last settle()'s re-seating impulse at its candidate
                                          // (> 0 pushing apart, < 0 drawing together: the hold)

@@ -37,8 +37,13 @@ void printTrace(const SimulationResult& r)
 {
     for (std::size_t k = 0; k < r.events.size(); ++k) {
         const Event& e = r.events[k];
-        std::printf("  #%zu t=%.17g %s balls %d %d%s%s\n", k, e.time, std::string(toString(e.kind)).c_str(), e.balls[0],
+        std::printf("  #%zu t=%.17g %s balls %d %d%s%s", k, e.time, std::string(toString(e.kind)).c_str(), e.balls[0],
                     e.balls[1], e.held ? " held" : "", e.grouped ? " grouped" : "");
+        if (e.cushion >= 0) std::printf(" cushion %d", e.cushion);
+        if (e.jaw >= 0) std::printf(" jaw %d", e.jaw);
+        if (isCollision(e.kind))
+            std::printf(" n=(%.6g, %.6g) approach=%.6g", e.normal.x(), e.normal.y(), e.approachSpeed);
+        std::printf("\n");
         for (std::size_t b = 0; b < 2; ++b) {
             if (e.balls[b] < 0) continue;
             printState("before", e.before[b]);
