@@ -3688,7 +3688,7 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     </message>
     <message>
         <source>Show all</source>
-        <translation>Minden mutatása</translation>
+        <translation>Összes</translation>
     </message>
     <message>
         <source>Zoom out to the whole shot (double-click the chart)</source>
@@ -4355,7 +4355,7 @@ Kimaradt kérdés: %1</translation>
     <name>cuelab::ShotPanel</name>
     <message>
         <source>Strike a ball at t = 0</source>
-        <translation>Egy golyó megütése t = 0-kor</translation>
+        <translation>Ütés t = 0-kor</translation>
     </message>
     <message>
         <source>Without a strike the balls move only with the velocities and spins they are set up with.</source>
@@ -4427,7 +4427,7 @@ Kimaradt kérdés: %1</translation>
     </message>
     <message>
         <source>Cue mass</source>
-        <translation>Dákótömeg</translation>
+        <translation>Dákósúly</translation>
     </message>
     <message>
         <source>Add the cue strike</source>
@@ -4463,7 +4463,7 @@ Kimaradt kérdés: %1</translation>
     </message>
     <message>
         <source>End mass</source>
-        <translation>Végtömeg</translation>
+        <translation>Végsúly</translation>
     </message>
     <message>
         <source>Aim at</source>
@@ -4474,11 +4474,11 @@ Kimaradt kérdés: %1</translation>
     <name>cuelab::SquirtControl</name>
     <message>
         <source>Squirt</source>
-        <translation>Elcsúszás</translation>
+        <translation>Kitérés</translation>
     </message>
     <message>
         <source>Squirt: side english sends the cue ball off the cue line, away from the side of the english, by an angle that grows as the tip&apos;s end mass grows (Alciatore TP A-31). Off: the ball leaves along the cue line.</source>
-        <translation>Elcsúszás (squirt): az oldalpörgetés a dákó vonalától elviszi a fehér golyót, a pörgetéssel ellentétes oldalra, annál nagyobb szögben, minél nagyobb a dákóvég tömege (Alciatore TP A-31). Kikapcsolva: a golyó a dákó vonalában indul.</translation>
+        <translation>Kitérés (squirt): az oldalpörgetés a dákó vonalától elviszi a fehér golyót, a pörgetéssel ellentétes oldalra, annál nagyobb szögben, minél nagyobb a dákóvég tömege (Alciatore TP A-31). Kikapcsolva: a golyó a dákó vonalában indul.</translation>
     </message>
     <message>
         <source>g</source>
@@ -4486,15 +4486,15 @@ Kimaradt kérdés: %1</translation>
     </message>
     <message>
         <source>End mass of the cue tip in grams, the part of the shaft that moves with the tip during the hit (about 5.7 g for a pool cue, a thirtieth of the ball; low-squirt shafts are lighter)</source>
-        <translation>A dákóvég végtömege grammban: a szár azon része, amely az ütés alatt a dákóvéggel együtt mozog (pooldákónál kb. 5,7 g, a golyó harmincad része; a kis elcsúszású szárak könnyebbek)</translation>
+        <translation>A dákóvég végtömege grammban: a szár azon része, amely az ütés alatt a dákóvéggel együtt mozog (pooldákónál kb. 5,7 g, a golyó harmincad része; a kis kitérésű szárak könnyebbek)</translation>
     </message>
     <message>
         <source>Turn squirt on</source>
-        <translation>Az elcsúszás bekapcsolása</translation>
+        <translation>A kitérés bekapcsolása</translation>
     </message>
     <message>
         <source>Turn squirt off</source>
-        <translation>Az elcsúszás kikapcsolása</translation>
+        <translation>A kitérés kikapcsolása</translation>
     </message>
     <message>
         <source>Change the end mass</source>

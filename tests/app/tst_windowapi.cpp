@@ -3,6 +3,7 @@
 
 #include "DockLayout.h"
 #include "MainWindow.h"
+#include "Translations.h"
 #include "ShortcutsDialog.h"
 
 #include "editor/BallEditor.h"
@@ -304,6 +305,7 @@ private slots:
         QTest::addColumn<int>("arrangement");
         QTest::addColumn<QSize>("size");
         QTest::addColumn<double>("least");  // of the window's area
+        QTest::addColumn<QString>("language");
         const std::pair<const char*, Arrangement> layouts[] = {
             {"Default", Arrangement::Default}, {"Teach", Arrangement::Teach}, {"Coach", Arrangement::Coach}, {"Edit", Arrangement::Edit}};
         for (const auto& [name, a] : layouts)
@@ -313,7 +315,11 @@ private slots:
                 const double least = a == Arrangement::Teach ? (large ? 0.33 : 0.22)
                                      : a == Arrangement::Default ? (large ? 0.5 : 1.0 / 3.0)
                                                                  : (large ? 0.4 : 1.0 / 3.0);
-                QTest::addRow("%s %dx%d", name, size.width(), size.height()) << int(a) << size << least;
+                QTest::addRow("%s %dx%d", name, size.width(), size.height()) << int(a) << size << least << QStringLiteral("en");
+                // Hungarian's longer words at the smallest size (a Hungarian lesson on a small screen).
+                // Not yet Coach: its Analysis dock still wants ~20 px more in Hungarian.
+                if (size == QSize(800, 600) && a != Arrangement::Coach)
+                    QTest::addRow("%s %dx%d hu", name, size.width(), size.height()) << int(a) << size << least << QStringLiteral("hu");
             }
     }
 
@@ -322,7 +328,10 @@ private slots:
         QFETCH(int, arrangement);
         QFETCH(QSize, size);
         QFETCH(double, least);
+        QFETCH(QString, language);
         QSettings().clear();
+        installTranslations(QLocale(language == QLatin1String("hu") ? QStringLiteral("hu_HU") : QStringLiteral("C")));
+        const auto english = qScopeGuard([] { installTranslations(QLocale::c()); });
         MainWindow window;
         window.resize(size);
         window.show();
