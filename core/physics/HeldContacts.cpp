@@ -197,9 +197,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             // normal from the edge to the centre in the plane across the edge, tilted up. The slab's
             // nearest point to a centre above the nose is on its edge (or an end's top corner); below
             // the nose it is on the face (next).
-            const CushionSegment& seg = table_.cushions[at(h.other)];
-            if (!airEdgeGeometry(h.a, seg, sa, link, gap, vn)) return false;
-            return true;
+            return airEdgeGeometry(h.a, table_.cushions[at(h.other)], sa, link, gap, vn);
         }
         if (h.body == ContactBody::Cushion) {
             const CushionSegment& seg = table_.cushions[at(h.other)];
@@ -208,9 +206,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             vn = -sa.velocity.dot(link.normal);
             link.curvature = 0.0;
             const double foot = (sa.position - seg.a).dot((seg.b - seg.a).normalized());
-            // A flying ball's face (issue 23): the same vertical plane, up to the nose's height (above
-            // it the nose edge is the body touched).
-            if (sa.motion == MotionState::Airborne && radius(h.a) + sa.z > table_.cushionHeight + kContactTolerance) return false;
+            // (A flying ball's face, issue 23: the same vertical plane; above the nose, the branch
+            // before takes the nose edge.)
             return foot >= -kContactTolerance && foot <= (seg.b - seg.a).norm() + kContactTolerance;  // (as detection)
         }
         const JawTip& jaw = table_.jaws[at(h.other)];
