@@ -41,11 +41,11 @@ SpacePath Simulator::spaceNow(int i, double now) const
     return heldFlight(i) ? heldFlightPath(s, r, p_.gravity, push3(i)) : flightPath(s, r, p_.gravity);
 }
 
-bool Simulator::airHoldable(int a, int b) const
+bool Simulator::airHoldable(int a, int b, bool onCloth) const
 {
     if (!flying(a) || series_[at(a)] || series_[at(b)]) return false;
     const MotionState mb = state_[at(b)].motion;
-    if (mb == MotionState::Airborne || isOutOfPlay(mb)) return false;
+    if ((mb == MotionState::Airborne && !onCloth) || isOutOfPlay(mb)) return false;
     if (heldCount_[at(a)] > 0 || heldCount_[at(b)] > 0) return false;
     if (airEdge_[at(a)] >= 0 || airEdge_[at(b)] >= 0) return false;
     return (airHeld_[at(a)] < 0 || airHeld_[at(a)] == b) && (airHeld_[at(b)] < 0 || airHeld_[at(b)] == a);
@@ -119,13 +119,13 @@ void Simulator::beginHeldFlight(int i, double t, const BallState& s, const Vec3&
     r_.timelines[at(i)].push_back(seg);
 }
 
-bool Simulator::airHold(int a, int b, double t)
+bool Simulator::airHold(int a, int b, double t) { return airHold(a, b, t, stateNow(a, t), stateNow(b, t), false); }
+
+bool Simulator::airHold(int a, int b, double t, BallState sa, BallState sb, bool onCloth)
 {
-    BallState sa = stateNow(a, t);
-    BallState sb = stateNow(b, t);
     // (In the air, or on the cloth and leaving it: a ball jumping off the cloth beside a ball whose
     // sliding friction brings it back against it, seed14-shot381639.)
-    if (!(sa.z > 0.0 || sa.vz > 0.0) || !airHoldable(a, b)) return false;
+    if (!(sa.z > 0.0 || sa.vz > 0.0) || !airHoldable(a, b, onCloth)) return false;
     // A slip that has as good as ended, or one that the cloth would end within kSlipRollOutLength, has a
     // direction of rounding, and so would the friction the force is solved with: the re-seat's
     // impulse of a micronewton-second can turn it about and the force's sign with it (seed12-shot78694:

@@ -56,8 +56,9 @@ bool touchingContactNow(const V& d0, const V& d1, const V& d2, double reach, dou
     const double normalSpeed = d0.dot(d1) / dist;
     if (normalSpeed < -kRestingSpeed) return true;
     const double press = d1.squaredNorm() + 2.0 * d0.dot(d2);
-    if (normalSpeed <= kRestingSpeed && press < 0.0) return true;
     const double curvature = (press - normalSpeed * normalSpeed) / dist;
+    if (normalSpeed <= 0.0 && press < 0.0) return true;
+    if (normalSpeed <= kRestingSpeed && press < 0.0) return 2.0 * normalSpeed <= -curvature * horizon;
     return curvature < 0.0 && (dist - reach) + normalSpeed * normalSpeed / (-2.0 * curvature) <= kContactTolerance &&
            2.0 * normalSpeed <= -curvature * horizon;
 }
@@ -106,6 +107,14 @@ double spaceBallBallTime(const SpacePath& a, double ra, const SpacePath& b, doub
     const Vec3 d0 = b.c0 - a.c0, d1 = b.c1 - a.c1, d2 = b.c2 - a.c2;
     if (touchingContactNow<Vec3>(d0, d1, d2, ra + rb, horizon)) return 0.0;
     return firstFallingRootWhere(spaceBallBallGap(a, ra, b, rb), horizon, [](double) { return true; });
+}
+
+bool spaceBallBallWithin(const SpacePath& a, double ra, const SpacePath& b, double rb, double depth, double horizon)
+{
+    if (!(horizon >= 0.0) || horizon == kNever) return false;
+    const Quartic q = distanceQuartic<Vec3>(b.c0 - a.c0, b.c1 - a.c1, b.c2 - a.c2, ra + rb - depth);
+    // Apart at the start and no root on the way (a root that only touches counts too: conservative).
+    return q[4] > 0.0 && smallestRootInInterval(q, 0.0, horizon) == kNever;
 }
 
 Quartic cushionNoseGap(const SpacePath& p, double radius, const CushionSegment& seg, double noseHeight)

@@ -43,6 +43,9 @@ namespace cuelab {
 Quartic spaceBallBallGap(const SpacePath& a, double ra, const SpacePath& b, double rb);
 // The first contact of two balls in space (either may fly).
 double spaceBallBallTime(const SpacePath& a, double ra, const SpacePath& b, double rb, double horizon);
+// Whether the centres stay at least Ra + Rb - depth apart over [0, horizon] (a finite horizon):
+// the deepest the two paths would press into each other, unanswered, is within `depth`.
+bool spaceBallBallWithin(const SpacePath& a, double ra, const SpacePath& b, double rb, double depth, double horizon);
 
 enum class CushionContactKind : std::uint8_t {
     None,

@@ -127,6 +127,7 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     for (std::size_t k = 0; k < table_.jaws.size(); ++k) {
         const JawTip& jaw = table_.jaws[k];
         if (!boxNearCircle(box, R + jaw.radius, jaw.centre) || airEdge_[at(i)] == static_cast<int>(table_.cushions.size() + k)) continue;  // (held on its rim)
+        if (heldCount_[at(i)] > 0 && heldWall(i, ContactBody::Jaw, static_cast<int>(k))) continue;  // (its side a row of its group)
         // Its side, its top or its rim (airJawContact).
         const AirCushionContact c = airJawContact(sp, R, jaw, table_.cushionHeight, horizon);
         if (c.kind == CushionContactKind::None || c.time == kNever) continue;
@@ -139,6 +140,12 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
     (void)p;
 }
 
+bool Simulator::riding(int a, int b) const
+{
+    return airRide_[at(a)] == b && airRideSegments_[at(a)] == r_.timelines[at(a)].size() &&
+           airRidePartnerSegments_[at(a)] == r_.timelines[at(b)].size();
+}
+
 double Simulator::airPairTime(int i, int j, double now) const
 {
     const double ri = radius(i), rj = radius(j);
@@ -147,6 +154,7 @@ double Simulator::airPairTime(int i, int j, double now) const
     if (!boxesWithin(window_[at(i)], window_[at(j)], ri + rj + kSeriesSlack)) return kNever;
     const double horizon = std::min(horizon_[at(i)], horizon_[at(j)]) - now;
     if (horizon < 0.0) return kNever;
+    if (riding(i, j) || riding(j, i)) return kNever;
     const double s = spaceBallBallTime(spaceNow(i, now), ri, spaceNow(j, now), rj, horizon);
     return s == kNever ? kNever : now + s;
 }
@@ -403,16 +411,18 @@ void Simulator::airCushion(const Candidate& c, Event& e)
     // at this instant until the event cap. The face is held as a row of the ball's group instead (a
     // horizontal normal, HeldContacts.cpp), solved with its other contacts, when the law leaves it
     // parting slower than kHoldSpeed (Contact.h's hold rule).
-    if (c.agent == Agent::Cushion && airContact_[at(i)].kind == CushionContactKind::Face && e.after[0].motion == MotionState::Airborne &&
-        (heldCount_[at(i)] > 0 || airLetGo_[at(i)] == e.time)) {
-        const Vec2 out = table_.cushions[at(c.index)].normal;
+    // The same for a jaw's side (its vertical cylinder below the nose; seed21-shot106191).
+    if (airContact_[at(i)].kind == CushionContactKind::Face && e.after[0].motion == MotionState::Airborne &&
+        (heldCount_[at(i)] > 0 || airLetGo_[at(i)] == e.time) && normal.head<2>().norm() > 0.0) {
+        const Vec2 out = c.agent == Agent::Cushion ? table_.cushions[at(c.index)].normal : Vec2(normal.head<2>().normalized());
         const double separation = e.after[0].velocity.dot(out);
         if (separation < kHoldSpeed) {
             e.normal = -out;
             e.contactPoint = before.position - R * out;
             e.approachSpeed = res.approachSpeed;
             e.impulse = res.impulse;
-            if (holdCollision(e, HeldContact{i, ContactBody::Cushion, c.index}, separation)) return;
+            const ContactBody body = c.agent == Agent::Cushion ? ContactBody::Cushion : ContactBody::Jaw;
+            if (holdCollision(e, HeldContact{i, body, c.index}, separation)) return;
         }
     }
     // A bounce on a nose edge that leaves the ball parting slower than kHoldSpeed while gravity
@@ -523,6 +533,20 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
             // stays within kHeldGap of the cloth (a frictional law's vertical throw of a few
             // nanometres: seed7-shot190, 1.9e-9 m): the cloth takes the hop, as a landing does, and
             // the pair meets again on the cloth, where the group holds it. The event is that landing.
+            // First, the hop rides out its flight to its own landing (no jump in height) when the
+            // two paths, left unanswered, press no deeper than kContactTolerance into each other
+            // until then or until either ball's next segment (seed15-shot244191: a ball thrown up
+            // 4 nm beside a ball it nudges along at a few nm/s, whose rolling resistance brings it
+            // back within nanoseconds). Nothing changes and there is no event: the pair is not met
+            // again while the ride lasts (riding), and after it the paths are predicted again.
+            const double rideEnd = std::min({end_[at(a)], end_[at(b)], horizon_[at(a)], horizon_[at(b)]}) - e.time;
+            if (spaceBallBallWithin(spaceNow(a, e.time), radius(a), spaceNow(b, e.time), radius(b), kContactTolerance, rideEnd)) {
+                airRide_[at(a)] = b;
+                airRideSegments_[at(a)] = r_.timelines[at(a)].size();
+                airRidePartnerSegments_[at(a)] = r_.timelines[at(b)].size();
+                predictPairs(a, e.time);
+                return;
+            }
             const BallState before = e.before[a == i ? 0 : 1];
             Event land;
             land.kind = EventKind::BallTable;
@@ -544,6 +568,7 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
             if (holdCollision(e, HeldContact{i, ContactBody::Ball, j}, 0.0)) return;
         }
     }
+    if (!(res.approachSpeed <= kRestingSpeed && res.impulse.isZero(0.0)) && airHoldRule(e, res)) return;
     e.after[0] = res.a;
     e.after[1] = res.b;
     if (res.approachSpeed <= kRestingSpeed && res.impulse.isZero(0.0)) {
@@ -562,6 +587,67 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
     e.approachSpeed = res.approachSpeed;
     e.impulse = res.impulse;
     finishEvent(e.time, e);
+}
+
+bool Simulator::airHoldRule(Event& e, const AirBallBallResult& res)
+{
+    // Contact.h's hold rule for a flying ball a that comes down on a ball b on the cloth: when the
+    // law leaves them parting slower than kHoldSpeed, with b's hop off the cloth within kHeldGap
+    // (the cloth's answer to the law's push into it: its rebound is the cloth's restitution of a
+    // rounding), the pair is pressed (a's weight) and would meet again and again, each time a
+    // little slower, b bouncing on the cloth in between: a Zeno run of impacts to the event cap
+    // (seed14-shot161368: a ball come to rest on top of a rolling ball). The micro-bounce is dropped
+    // instead, as on the cloth: b's hop goes into the cloth (as a landing's, only energy is lost),
+    // and the air hold takes the pair (its re-seat takes the parting away, an inelastic impulse along
+    // the normal); if the forces do not press it, the law's result stands.
+    const int i = e.balls[0], j = e.balls[1];
+    const int ka = res.a.z >= res.b.z ? 0 : 1;  // a: the higher ball
+    const int a = ka == 0 ? i : j, b = ka == 0 ? j : i;
+    const BallState& beforeB = e.before[1 - ka];
+    BallState sa = ka == 0 ? res.a : res.b;
+    BallState sb = ka == 0 ? res.b : res.a;
+    // (a is in the air, its weight pressing it on b: a ball leaving the cloth beside b, z = 0, is
+    // pressed only by b's cloth friction, and held it was let go and met again at once until the
+    // event cap, seed17-shot562088, 564948.)
+    if (sa.motion != MotionState::Airborne || !(sa.z > 0.0) || beforeB.z != 0.0 || sb.z != 0.0 ||
+        apexHeight(sb, p_.gravity) > kHeldGap)
+        return false;
+    sb.z = 0.0;
+    sb.vz = 0.0;
+    sb.motion = classify(sb, radius(b));
+    // (n from b's centre to a's: > 0 parting)
+    const Vec3 n = ka == 0 ? Vec3(-res.normal) : res.normal;
+    const double separation = (velocity3(sa) - velocity3(sb)).dot(n);
+    if (!(separation < kHoldSpeed)) return false;
+    const std::size_t index = r_.events.size();
+    e.after[ka] = sa;
+    e.after[1 - ka] = sb;
+    const Vec2 flat = res.normal.head<2>();
+    e.normal = flat.norm() > 0.0 ? Vec2(flat.normalized()) : Vec2(Vec2::Zero());
+    e.contactPoint = e.before[0].position + radius(i) * flat;
+    e.approachSpeed = res.approachSpeed;
+    e.impulse = res.impulse;
+    // A pair that a group touches (b held by the cloth with a third body, or a held on one): the
+    // contact is a row in space of that group (settle), solved with the group's other rows; a
+    // pairwise hold would hand a back and forth with the group (seed16-shot68467, 585155).
+    // So too a flying ball that another ball's hold let go at this instant: wedged between the two, it
+    // would be handed back and forth by pairwise holds (seed16-shot260322), as in the wedge rule above.
+    const bool wedged = airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b;
+    if (wedged || heldCount_[at(a)] > 0 || heldCount_[at(b)] > 0) {
+        if (holdCollision(e, HeldContact{i, ContactBody::Ball, j}, separation)) return true;
+        e.held = false;
+        return false;
+    }
+    e.held = true;
+    r_.events.push_back(e);
+    if (airHold(a, b, e.time, sa, sb, true)) {
+        r_.events[index].after[0] = state_[at(i)];
+        r_.events[index].after[1] = state_[at(j)];
+        return true;
+    }
+    r_.events.pop_back();
+    e.held = false;
+    return false;
 }
 
 }  // namespace cuelab::detail

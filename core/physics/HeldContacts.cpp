@@ -216,6 +216,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         gap = d.norm() - radius(h.a) - jaw.radius;
         vn = -sa.velocity.dot(link.normal);
         link.curvature = separationCurvature(d, -sa.velocity);
+        // A flying ball's jaw side (issue 23): the same vertical cylinder, up to the nose's height.
+        if (sa.motion == MotionState::Airborne && radius(h.a) + sa.z > table_.cushionHeight + kContactTolerance) return false;
         return onJawArc(jaw, sa.position, kContactTolerance);  // (as detection: past the arc, the piece there)
     };
     auto consider = [&](const HeldContact& h, bool isCandidate) {

@@ -140,6 +140,10 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             for (const Vec2& run : jaw.runs)
                 if (!run.isZero(0.0))
                     limit = std::min(limit, firstCrossing(-rel0.dot(run), pa.c1.dot(run), pa.c2.dot(run), kContactTolerance));
+            if (flying(h.a)) {  // a flying ball's jaw side: until its centre rises to the nose's height
+                const SpacePath sp = spaceNow(h.a, t);
+                limit = std::min(limit, firstCrossing(sp.c0.z(), sp.c1.z(), sp.c2.z(), table_.cushionHeight));
+            }
         }
         const CircleLimits l = circleLimits<Vec2>(rel0, rel1, rel2, D);
         limit = std::min(limit, l.gap);

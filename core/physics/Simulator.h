@@ -5,6 +5,7 @@
 
 #include "Simulation.h"
 
+#include "AirImpacts.h"
 #include "AirborneDetection.h"
 #include "BallBallCollision.h"
 #include "BallContact.h"
@@ -57,6 +58,9 @@ public:
         airHeld_.assign(n, -1);
         airLetGo_.assign(n, kNever);
         airLetGoOf_.assign(n, -1);
+        airRide_.assign(n, -1);
+        airRideSegments_.assign(n, 0);
+        airRidePartnerSegments_.assign(n, 0);
         airEdgeLetGo_.assign(n, kNever);
         airEdgeLetGoOf_.assign(n, -1);
         airEdge_.assign(n, -1);
@@ -111,6 +115,9 @@ private:
     void predictAirContacts(int i, double now, const Path& p, Candidate& best);
     // A pair with a flying ball (neither in a bounce series): the first contact in space.
     double airPairTime(int i, int j, double now) const;
+    // Flying ball a rides out a nanometre hop beside b (airBallBall): the pair is not met while
+    // neither begins a segment.
+    bool riding(int a, int b) const;
     // A pair with a ball in a bounce series: `now` when the other may come near the series (the series
     // is then split into its flights, splitSeries), else kNever.
     double seriesPairTime(int i, int j, double now) const;
@@ -128,6 +135,9 @@ private:
     void splitSeries(int i, double t);  // the series goes on as one flight at a time (no event)
     void airCushion(const Candidate& c, Event& e);  // face, nose, jaw or off the table
     void airBallBall(const Candidate& c, Event& e);
+    // A flying ball coming down on a ball on the cloth that the law leaves parting slower than
+    // kHoldSpeed: held (the hold rule in the air); false, and nothing changed, when not.
+    bool airHoldRule(Event& e, const AirBallBallResult& res);
     void strike(int i, const CueStrike& shot);
 
     // A flying ball held against a ball on the cloth it presses on with no approach (AirHold.cpp;
@@ -138,7 +148,9 @@ private:
     SpacePath spaceNow(int i, double now) const;
     // Flying ball a and ball b on the cloth may be held together: neither is held by the cloth, in a
     // bounce series or held in the air with a third ball.
-    bool airHoldable(int a, int b) const;
+    // (`onCloth`: b's state to be held is on the cloth whatever its segment says, a hop the cloth
+    // takes, airBallBall's hold rule.)
+    bool airHoldable(int a, int b, bool onCloth = false) const;
     // A flying ball a pressed on a ball b of the cloth that a group holds (or a itself held on one):
     // their contact joins the group (settle) as a row in space.
     bool groupHoldable(int a, int b) const;
@@ -156,6 +168,9 @@ private:
     // Solves the pair at t and begins its held segments; false (and nothing changed) when it is not
     // pressed, has parted or cannot be held.
     bool airHold(int a, int b, double t);
+    // The same from the states sa, sb at t (a collision's result: airBallBall's hold rule); b's is on
+    // the cloth.
+    bool airHold(int a, int b, double t, BallState sa, BallState sb, bool onCloth);
     // Ends ball i's hold in the air at t: both balls go on freely from their states then (no event),
     // but `keep` and `keep2` (an event's balls, whose event at t ends their segments) keep theirs.
     void airRelease(int i, double t, int keep = -1, int keep2 = -1);
@@ -238,6 +253,12 @@ private:
     std::vector<int> airHeld_;    // the ball it is held with in the air (AirHold.cpp), -1 if none
     std::vector<double> airLetGo_;  // s, when its last hold in the air with a ball ended (kNever if none)
     std::vector<int> airLetGoOf_;   // the ball it was held with then
+    // A nanometre hop left touching a ball with no force and no impulse, riding out its flight to its
+    // own landing (airBallBall): that ball, -1 if none, and both timelines' lengths then (the ride
+    // lasts while neither ball begins a segment).
+    std::vector<int> airRide_;
+    std::vector<std::size_t> airRideSegments_;
+    std::vector<std::size_t> airRidePartnerSegments_;
     std::vector<double> airEdgeLetGo_;  // s, when its last hold on a nose edge or rim ended (kNever if none)
     std::vector<int> airEdgeLetGoOf_;   // that edge (airEdge_'s numbering)
     std::vector<int> airEdge_;    // the cushion whose nose edge holds it in the air (cushions + k: jaw k's rim), -1 if none
