@@ -62,8 +62,11 @@ private slots:
 
 void TestMasse::slidingPathIsAParabola()
 {
+    // The level massé (the strike's vertical part dropped): the slide from t = 0 is the whole story.
     const Setup setup = oneBall(70.0, 0.5);
-    const SimulationResult r = simulate(setup);
+    SimulationOptions level;
+    level.strikeKeepsElevation = false;
+    const SimulationResult r = simulate(setup, level);
     const BallState s0 = r.events.front().after[0];
     QCOMPARE(int(s0.motion), int(MotionState::Sliding));
     const Event* roll = slideToRoll(r);

@@ -47,6 +47,16 @@ struct Checker {
         }
         same(key, q->value, want, scale);
     }
+    // A number the explanation reads off the event (a step's input).
+    void given(const std::string& key, double want, double scale = 0.0)
+    {
+        const explain::Quantity* q = find(key, false);
+        if (!q) {
+            problems.push_back("event " + std::to_string(e.event) + ": no input " + key);
+            return;
+        }
+        same(key, q->value, want, scale);
+    }
     void need(const std::string& key, const Vec2& want)
     {
         need(key + "_x", want.x(), want.norm());
@@ -85,7 +95,13 @@ std::vector<std::string> checkExplanation(const SimulationResult& r, const expla
     Checker c{e, {}};
     const Event& ev = r.events.at(static_cast<std::size_t>(e.event));
     if (e.kind != ev.kind) c.problems.push_back("kind differs");
-    const bool hasToi = isCollision(ev.kind) || ev.kind == EventKind::BallPocket;
+    // A landing has its flight's time of impact (the height, a quadratic); the cloth's answer to an
+    // elevated strike at t = 0 and the end of a summed bounce series have none.
+    const std::size_t index = static_cast<std::size_t>(e.event);
+    const bool strikeBounce = ev.kind == EventKind::BallTable && ev.time == 0.0 && index > 0 &&
+                              r.events[index - 1].kind == EventKind::CueStrike && r.events[index - 1].balls[0] == ev.balls[0];
+    const bool landing = ev.kind == EventKind::BallTable && ev.before[0].vz < 0.0 && !strikeBounce;
+    const bool hasToi = isCollision(ev.kind) || ev.kind == EventKind::BallPocket || landing;
     if (hasToi != e.toi.has_value()) c.problems.push_back("event " + std::to_string(e.event) + ": toi presence");
     if (e.toi) {
         const explain::TimeOfImpact& toi = *e.toi;
@@ -120,6 +136,10 @@ std::vector<std::string> checkExplanation(const SimulationResult& r, const expla
                 scale = (a.position - j.centre).squaredNorm() + (R0 + j.radius) * (R0 + j.radius);
                 break;
             }
+            case EventKind::BallTable:  // the height above the resting height
+                gap = a.z;
+                scale = std::abs(a.z) + R0;
+                break;
             case EventKind::BallPocket: {
                 const Pocket& k = r.table.pockets[static_cast<std::size_t>(ev.pocket)];
                 gap = (a.position - k.centre).squaredNorm() - k.radius * k.radius;
@@ -167,6 +187,21 @@ std::vector<std::string> checkExplanation(const SimulationResult& r, const expla
     case EventKind::BallPocket:
         c.state("", ev.before[0]);
         c.need("r_after", ev.after[0].position);
+        break;
+    case EventKind::BallOffTable:  // where it crossed the rail, and how high
+        c.given("r_x", ev.before[0].position.x(), ev.before[0].position.norm());
+        c.given("r_y", ev.before[0].position.y(), ev.before[0].position.norm());
+        c.given("z", ev.before[0].z);
+        c.given("vz", ev.before[0].vz, std::abs(ev.before[0].vz) + ev.before[0].velocity.norm());
+        break;
+    case EventKind::BallTable:
+        if (ev.before[0].vz < 0.0) {  // a bounce: the impulse law's result
+            c.need("vz_after", ev.after[0].vz, -ev.before[0].vz);
+            c.need("v_after", ev.after[0].velocity);
+            c.need("w_after", ev.after[0].spin);
+        } else {  // a summed series' end
+            c.need("t", ev.time, 1.0);
+        }
         break;
     default:
         c.need("t", ev.time, 1.0);

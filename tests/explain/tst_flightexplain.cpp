@@ -159,12 +159,13 @@ void TestFlightExplain::elevatedStrike()
     QVERIFY(std::abs(resultOf(bounce, "The bounce", "vz_after") - r.events[1].after[0].vz) < 1e-15);
     QVERIFY(r.events[1].after[0].vz > 0.0);  // it jumps
 
-    const SimulationResult level = simulate(setup);
+    options.strikeKeepsElevation = false;
+    const SimulationResult level = simulate(setup, options);
     QVERIFY(!explain::explain(level, 0, shot).step("The vertical part: into the cloth"));
     // A struck ball already flying (a setup may give it vz) keeps its vz when the strike drops its
     // vertical part: no step says it went into the cloth.
     setup.balls[0] = flyingBall("cue", 0.6, 0.6, 0.01, 0.4);
-    const SimulationResult thrown = simulate(setup);
+    const SimulationResult thrown = simulate(setup, options);
     QCOMPARE(thrown.events[0].after[0].vz, 0.4);
     QVERIFY(!explain::explain(thrown, 0, shot).step("The vertical part: into the cloth"));
 }
