@@ -20,6 +20,9 @@
 // A B that the cloth holds in a group takes A into the group instead (groupHoldable: A's contact is a
 // row in space of the group's problem, HeldContacts.cpp, Contact.h's ContactLink::nz).
 //
+// A collision that leaves A coming down on B parting slower than kHoldSpeed is held too, B's
+// micro-bounce dropped (airHoldRule, at the end: the cloth's hold rule in the air).
+//
 // Left out: friction between the balls while held (mu_b about 0.05 against the press), a B pressed
 // by a second flying ball (detection meets it as before), and a ball held on two contacts at once
 // (a ball between two balls, a ball and a rail, or two nose edges: docs/dev/issue-23-open).
@@ -340,6 +343,67 @@ bool Simulator::airRimHold(int a, int k, double t, const BallState& s)
     }
     heldFixedUntil(a, t, limit);
     return true;
+}
+
+bool Simulator::airHoldRule(Event& e, const AirBallBallResult& res)
+{
+    // Contact.h's hold rule for a flying ball a that comes down on a ball b on the cloth: when the
+    // law leaves them parting slower than kHoldSpeed, with b's hop off the cloth within kHeldGap
+    // (the cloth's answer to the law's push into it: its rebound is the cloth's restitution of a
+    // rounding), the pair is pressed (a's weight) and would meet again and again, each time a
+    // little slower, b bouncing on the cloth in between: a Zeno run of impacts to the event cap
+    // (seed14-shot161368: a ball come to rest on top of a rolling ball). The micro-bounce is dropped
+    // instead, as on the cloth: b's hop goes into the cloth (as a landing's, only energy is lost),
+    // and the air hold takes the pair (its re-seat takes the parting away, an inelastic impulse along
+    // the normal); if the forces do not press it, the law's result stands.
+    const int i = e.balls[0], j = e.balls[1];
+    const int ka = res.a.z >= res.b.z ? 0 : 1;  // a: the higher ball
+    const int a = ka == 0 ? i : j, b = ka == 0 ? j : i;
+    const BallState& beforeB = e.before[1 - ka];
+    BallState sa = ka == 0 ? res.a : res.b;
+    BallState sb = ka == 0 ? res.b : res.a;
+    // (a is in the air, its weight pressing it on b: a ball leaving the cloth beside b, z = 0, is
+    // pressed only by b's cloth friction, and held it was let go and met again at once until the
+    // event cap, seed17-shot562088, 564948.)
+    if (sa.motion != MotionState::Airborne || !(sa.z > 0.0) || beforeB.z != 0.0 || sb.z != 0.0 ||
+        apexHeight(sb, p_.gravity) > kHeldGap)
+        return false;
+    sb.z = 0.0;
+    sb.vz = 0.0;
+    sb.motion = classify(sb, radius(b));
+    // (n from b's centre to a's: > 0 parting)
+    const Vec3 n = ka == 0 ? Vec3(-res.normal) : res.normal;
+    const double separation = (velocity3(sa) - velocity3(sb)).dot(n);
+    if (!(separation < kHoldSpeed)) return false;
+    const std::size_t index = r_.events.size();
+    e.after[ka] = sa;
+    e.after[1 - ka] = sb;
+    const Vec2 flat = res.normal.head<2>();
+    e.normal = flat.norm() > 0.0 ? Vec2(flat.normalized()) : Vec2(Vec2::Zero());
+    e.contactPoint = e.before[0].position + radius(i) * flat;
+    e.approachSpeed = res.approachSpeed;
+    e.impulse = res.impulse;
+    // A pair that a group touches (b held by the cloth with a third body, or a held on one): the
+    // contact is a row in space of that group (settle), solved with the group's other rows; a
+    // pairwise hold would hand a back and forth with the group (seed16-shot68467, 585155).
+    // So too a flying ball that another ball's hold let go at this instant: wedged between the two, it
+    // would be handed back and forth by pairwise holds (seed16-shot260322), as in the wedge rule above.
+    const bool wedged = airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b;
+    if (wedged || heldCount_[at(a)] > 0 || heldCount_[at(b)] > 0) {
+        if (holdCollision(e, HeldContact{i, ContactBody::Ball, j}, separation)) return true;
+        e.held = false;
+        return false;
+    }
+    e.held = true;
+    r_.events.push_back(e);
+    if (airHold(a, b, e.time, sa, sb, true)) {
+        r_.events[index].after[0] = state_[at(i)];
+        r_.events[index].after[1] = state_[at(j)];
+        return true;
+    }
+    r_.events.pop_back();
+    e.held = false;
+    return false;
 }
 
 }  // namespace cuelab::detail

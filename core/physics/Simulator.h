@@ -136,7 +136,7 @@ private:
     void airCushion(const Candidate& c, Event& e);  // face, nose, jaw or off the table
     void airBallBall(const Candidate& c, Event& e);
     // A flying ball coming down on a ball on the cloth that the law leaves parting slower than
-    // kHoldSpeed: held (the hold rule in the air); false, and nothing changed, when not.
+    // kHoldSpeed: held (the hold rule in the air, AirHold.cpp); false, and nothing changed, when not.
     bool airHoldRule(Event& e, const AirBallBallResult& res);
     void strike(int i, const CueStrike& shot);
 
