@@ -23,9 +23,11 @@
 // A collision that leaves A coming down on B parting slower than kHoldSpeed is held too, B's
 // micro-bounce dropped (airHoldRule, at the end: the cloth's hold rule in the air).
 //
-// Left out: friction between the balls while held (mu_b about 0.05 against the press), a B pressed
-// by a second flying ball (detection meets it as before), and a ball held on two contacts at once
-// (a ball between two balls, a ball and a rail, or two nose edges: docs/dev/issue-23-open).
+// A ball held on two contacts at once (wedged between two balls, a ball and a rail, a ball and a
+// jaw's rim, or two nose edges) is not held pairwise: both contacts are rows in space of one group
+// (HeldContacts.cpp), solved together (AirborneLoop.cpp's `wedged`, airCushion).
+//
+// Left out: friction between the balls while held (mu_b about 0.05 against the press).
 
 #include "Simulator.h"
 

@@ -436,9 +436,12 @@ void Simulator::airCushion(const Candidate& c, Event& e)
     if ((((rim || c.agent == Agent::Cushion) && airContact_[at(i)].kind == CushionContactKind::Nose) || topCorner) &&
         e.after[0].motion == MotionState::Airborne) {
         const double separation = Vec3(e.after[0].velocity.x(), e.after[0].velocity.y(), e.after[0].vz).dot(normal);
-        if (separation < kHoldSpeed && c.agent == Agent::Cushion &&
+        // (A jaw's rim too: seed16-shot363458, a flying ball on a rim and a hopping ball, the rim's
+        // hold and the ball handing it back and forth.)
+        const int edgeId = c.agent == Agent::Cushion ? c.index : static_cast<int>(table_.cushions.size()) + c.index;
+        if (separation < kHoldSpeed &&
             (topCorner || heldCount_[at(i)] > 0 || airLetGo_[at(i)] == e.time ||
-             (airEdgeLetGo_[at(i)] == e.time && airEdgeLetGoOf_[at(i)] != c.index))) {
+             (airEdgeLetGo_[at(i)] == e.time && airEdgeLetGoOf_[at(i)] != edgeId))) {
             // Held in a group (on a ball, or on another edge), or let go at this instant by a hold on
             // another body that presses it on this edge too: it is wedged between the two, and pairwise
             // holds would hand it back and forth (seed12-shot988364: two nose edges in a corner;
@@ -451,7 +454,8 @@ void Simulator::airCushion(const Candidate& c, Event& e)
             e.contactPoint = before.position - R * flat;
             e.approachSpeed = res.approachSpeed;
             e.impulse = res.impulse;
-            if (holdCollision(e, HeldContact{i, ContactBody::Cushion, c.index}, std::max(0.0, separation))) return;
+            const ContactBody body = c.agent == Agent::Cushion ? ContactBody::Cushion : ContactBody::Jaw;
+            if (holdCollision(e, HeldContact{i, body, c.index}, std::max(0.0, separation))) return;
         }
         if (separation < kHoldSpeed && !topCorner) {
             BallState seated = e.after[0];
@@ -497,7 +501,17 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
     // down a ball's side): the law gives no impulse and the same contact would be met again at this
     // instant, for ever. The pair is held instead (AirHold.cpp): the event marks where the hold
     // begins and changes no velocity.
-    if (res.approachSpeed <= kRestingSpeed && res.impulse.isZero(0.0)) {
+    // So is an approach within kRestingSpeed whose impulse is lost in rounding: the law changes no
+    // velocity (seed21-shot5186: a ball on the cloth whose friction presses it on a ball rising off
+    // the cloth beside it, approaching at 8e-20 m/s, the law's 1e-20 N s lost, met again at that
+    // instant until the event cap). (A law that does change them stands: seed19-shot723846's
+    // 4e-12 m/s joins the group its balls are held in, as a collision.)
+    auto unchanged = [](const BallState& x, const BallState& y) {
+        return x.velocity == y.velocity && x.vz == y.vz && x.spin == y.spin;
+    };
+    const bool resting = res.approachSpeed <= kRestingSpeed &&
+                         (res.impulse.isZero(0.0) || (unchanged(res.a, e.before[0]) && unchanged(res.b, e.before[1])));
+    if (resting) {
         const int a = flying(i) ? i : j, b = a == i ? j : i;
         // A held event marks where the hold begins and changes no velocity (the fall-through below
         // sets every one of these fields again for the law's result).
@@ -513,7 +527,16 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
         // ball dropping between two rolling balls). It is held with this contact as a row in space
         // of a group instead (HeldContacts.cpp); the other contact, met at once, joins that group
         // (groupHoldable), and the two rows are solved together.
-        const bool wedged = airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b && !flying(b);
+        // The same for a flying b let go at this instant by its hold on a third ball that presses it
+        // on a (seed21-shot102774, a break: three balls nearly in a line, the middle one 0.1 mm up,
+        // held on the ball on the cloth and pressed by that hold on the third, itself in the air;
+        // the air hold and this contact handed the middle ball back and forth at one instant).
+        // And for either ball let go at this instant by a nose edge or a jaw's rim that presses it on
+        // the other (seed16-shot363458: a flying ball on a rim and a hopping ball); the edge or rim,
+        // met at once, joins the group (airCushion).
+        const bool wedged = (airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b && !flying(b)) ||
+                            (flying(b) && airLetGo_[at(b)] == e.time && airLetGoOf_[at(b)] != a) ||
+                            airEdgeLetGo_[at(a)] == e.time || (flying(b) && airEdgeLetGo_[at(b)] == e.time);
         if (wedged && holdCollision(e, HeldContact{i, ContactBody::Ball, j}, 0.0)) return;
         if (!wedged && airHoldable(a, b)) {
             e.held = true;  // (with no hold impulse: a pressed pair may part by a few nm/s, Detection.h)
@@ -568,16 +591,28 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
             if (holdCollision(e, HeldContact{i, ContactBody::Ball, j}, 0.0)) return;
         }
     }
-    if (!(res.approachSpeed <= kRestingSpeed && res.impulse.isZero(0.0)) && airHoldRule(e, res)) return;
+    if (!resting && airHoldRule(e, res)) return;
     e.after[0] = res.a;
     e.after[1] = res.b;
-    if (res.approachSpeed <= kRestingSpeed && res.impulse.isZero(0.0)) {
+    if (resting) {
         // Touching with no approach and not held: the ball on the cloth goes on as the air hold
         // judged it, a slip of rounding rolled out (as airRelease's). Left sliding, its friction
         // would press it back at once on the flying ball the hold found no force for: met again at
         // this instant until the event cap (seed14-shot150029).
-        for (std::size_t k = 0; k < 2; ++k)
-            if (e.before[k].motion != MotionState::Airborne) rollOutRounding(e.after[k], radius(e.balls[k]), p_);
+        // So too a ball rolling slower than kRollOffSpeed, which the hold takes as at rest: it
+        // stops (its rolling resistance would end it within nanoseconds, a micrometre's billionth
+        // on). Left rolling, that resistance pressed it on the flying ball until then, and the pair
+        // was met again at this instant until the event cap (seed18-shot346856: 6e-10 m/s).
+        for (std::size_t k = 0; k < 2; ++k) {
+            if (e.before[k].motion == MotionState::Airborne) continue;
+            BallState& s = e.after[k];
+            rollOutRounding(s, radius(e.balls[k]), p_);
+            if (classify(s, radius(e.balls[k])) == MotionState::Rolling && s.velocity.norm() <= kRollOffSpeed) {
+                s.velocity = Vec2::Zero();
+                s.spin.x() = 0.0;
+                s.spin.y() = 0.0;
+            }
+        }
     }
     e.after[0].motion = classify(e.after[0], radius(i));
     e.after[1].motion = classify(e.after[1], radius(j));

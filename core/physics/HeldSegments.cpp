@@ -131,6 +131,28 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             D = touchDistance(radius(h.a), radius(h.other));
         } else {
             const JawTip& jaw = table_.jaws[at(h.other)];
+            const double h0 = table_.cushionHeight;
+            if (flying(h.a) && spaceNow(h.a, t).c0.z() > h0) {
+                // A flying ball on the rim (settle's geometry, airRimHold's limits): its frozen normal
+                // turns about the rim point (the distance from that point bounds the distance from the
+                // rim), the centre stays over the tip's arc, and above the nose (below it the side
+                // takes over).
+                const SpacePath sp = spaceNow(h.a, t);
+                const Vec2 rel = sp.c0.head<2>() - jaw.centre;
+                const double rho = rel.norm();
+                if (rho > 0.0) {
+                    const Vec2 u = rel / rho;
+                    const Vec3 rim(jaw.centre.x() + jaw.radius * u.x(), jaw.centre.y() + jaw.radius * u.y(), h0);
+                    const CircleLimits l = circleLimits<Vec3>(rim - sp.c0, -sp.c1, -sp.c2, radius(h.a));
+                    limit = std::min({limit, l.gap, l.drop});
+                }
+                for (const Vec2& run : jaw.runs)
+                    if (!run.isZero(0.0))
+                        limit = std::min(limit, firstCrossing((sp.c0.head<2>() - jaw.centre).dot(run), sp.c1.head<2>().dot(run),
+                                                              sp.c2.head<2>().dot(run), 0.0));
+                limit = std::min(limit, firstCrossing(sp.c0.z(), sp.c1.z(), sp.c2.z(), h0));
+                continue;
+            }
             rel0 = jaw.centre - pa.c0;
             rel1 = -pa.c1;
             rel2 = -pa.c2;
