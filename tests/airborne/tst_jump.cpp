@@ -257,10 +257,14 @@ void TestJump::levelStrikeStaysOnTheCloth()
     setup.shot->elevationDeg = 0.0;
     const SimulationResult r = flying(setup);
     QVERIFY(eventsOf(r, EventKind::BallTable).empty());
-    // And by default (SimulationOptions) an elevated strike is still taken level, as before.
+    // With the option off (SimulationOptions::strikeKeepsElevation) an elevated strike is taken
+    // level, as before issue 23; by default it jumps.
     Setup steep = setup;
     steep.shot->elevationDeg = 45.0;
-    QVERIFY(eventsOf(simulate(steep), EventKind::BallTable).empty());
+    SimulationOptions level;
+    level.strikeKeepsElevation = false;
+    QVERIFY(eventsOf(simulate(steep, level), EventKind::BallTable).empty());
+    QVERIFY(!eventsOf(simulate(steep), EventKind::BallTable).empty());
     for (const Event& e : r.events)
         for (const BallState& s : {e.before[0], e.after[0], e.before[1], e.after[1]}) {
             QCOMPARE(s.z, 0.0);

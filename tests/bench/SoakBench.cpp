@@ -64,9 +64,10 @@ int usage(const char* why)
 {
     std::fprintf(stderr,
                  "cuelab-bench: %s\nusage: cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] "
-                 "[--class NAME] [--max-events N] [--first K] [--elevation]\n"
-                 "       cuelab-bench --check [--elevation] [--trace] [--max-events N] [--set KEY=VALUE]... FILE...\n"
-                 "--elevation: the strike keeps its vertical part (SimulationOptions::strikeKeepsElevation)\n",
+                 "[--class NAME] [--max-events N] [--first K] [--level]\n"
+                 "       cuelab-bench --check [--level] [--trace] [--max-events N] [--set KEY=VALUE]... FILE...\n"
+                 "--level: the strike drops its vertical part (SimulationOptions::strikeKeepsElevation off; it\n"
+                 "keeps it by default, and --elevation, which turned it on before it was the default, still does)\n",
                  why);
     return 2;
 }
@@ -89,6 +90,7 @@ int soakCommand(int argc, char** argv)
         else if (a == "--out" && k + 1 < argc) o.outDir = argv[++k];
         else if (a == "--no-determinism") o.checks.determinism = false;
         else if (a == "--elevation") o.strikeKeepsElevation = true;
+        else if (a == "--level") o.strikeKeepsElevation = false;
         else if (a == "--class" && k + 1 < argc && soak::parseShotClass(argv[k + 1])) o.onlyClass = soak::parseShotClass(argv[++k]);
         else return usage(("unknown or incomplete option " + a).c_str());
     }
@@ -109,8 +111,8 @@ int checkCommand(int argc, char** argv)
     SimulationOptions simulation;
     bool trace = false;
     for (int k = 0; k < argc; ++k) {
-        if (std::strcmp(argv[k], "--elevation") == 0) {
-            simulation.strikeKeepsElevation = true;
+        if (std::strcmp(argv[k], "--elevation") == 0 || std::strcmp(argv[k], "--level") == 0) {
+            simulation.strikeKeepsElevation = std::strcmp(argv[k], "--elevation") == 0;
         } else if (std::strcmp(argv[k], "--trace") == 0) {
             trace = true;
         } else if (std::strcmp(argv[k], "--max-events") == 0 && k + 1 < argc) {

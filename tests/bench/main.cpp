@@ -8,10 +8,11 @@
 //   cuelab-bench --cushions    the cost of one cushion hit per model, and of mathavan2010 per step count
 //                              with its rebound error against 10^6 steps (issue 20)
 //   cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] [--class NAME] [--max-events N]
-//                              [--first K] [--elevation]
-//                              the random-shot soak's summary (issue 19, docs/soak.md); --elevation: the
-//                              strike keeps its vertical part (SimulationOptions::strikeKeepsElevation)
-//   cuelab-bench --check [--elevation] [--trace] [--max-events N] [--set KEY=VALUE]... FILE...
+//                              [--first K] [--level]
+//                              the random-shot soak's summary (issue 19, docs/soak.md); --level: the
+//                              strike drops its vertical part (SimulationOptions::strikeKeepsElevation,
+//                              on by default; --elevation, from before, is the default)
+//   cuelab-bench --check [--level] [--trace] [--max-events N] [--set KEY=VALUE]... FILE...
 //                              the soak's checks on setup files; exit 1 if any fails
 
 #include "AnalysisBench.h"

@@ -6,6 +6,8 @@
 #include "Simulation.h"
 
 #include <QDir>
+
+#include <algorithm>
 #include <QtTest>
 
 using namespace cuelab;
@@ -87,7 +89,11 @@ void TestCompareEngines::everyEngineRunsEveryExample()
     QVERIFY(!r.samples.empty());
     for (const auto& k : r.samples) QCOMPARE(k.size(), setup.balls.size());
     QCOMPARE(r.finalStates.size(), setup.balls.size());
-    QVERIFY(!r.collisions.empty());
+    // Every example has a collision, but for the exact engine a ball that flies off the table before
+    // meeting anything (off-the-table.json); the discrete method and Box2D cannot fly, so it meets the rail.
+    const SimulationResult exact = simulate(setup);
+    const bool collides = std::any_of(exact.events.begin(), exact.events.end(), [](const Event& e) { return isCollision(e.kind); });
+    QVERIFY(!r.collisions.empty() || (EngineKind(engine) == EngineKind::Exact && !collides));
     for (std::size_t k = 1; k < r.collisions.size(); ++k) QVERIFY(r.collisions[k - 1].time <= r.collisions[k].time);
     for (const Collision& h : r.collisions) {
         QVERIFY(h.ball >= 0 && h.ball < int(setup.balls.size()));

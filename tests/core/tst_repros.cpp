@@ -113,6 +113,7 @@ void TestRepros::repro()
     }
     SimulationOptions options;
     options.maxEvents = kMaxEvents + 1;
+    options.strikeKeepsElevation = false;  // (as the level soak found them; the elevated ones are airborne())
     const SimulationResult r = simulate(*setup, options);
     soak::CheckOptions checks;
 #if defined(__SANITIZE_ADDRESS__) || !defined(NDEBUG)

@@ -68,6 +68,8 @@ private slots:
     void cradleHandsOnTheSpeed();
     void kickAndThreeCushionPaths();
     void masseGoesAroundTheBlocker();
+    void jumpClearsTheBlocker();
+    void offTheTableOverTheRail();
 };
 
 static const QStringList kExamples{
@@ -76,6 +78,7 @@ static const QStringList kExamples{
     QStringLiteral("one-cushion-bank.json"), QStringLiteral("two-rail-kick.json"), QStringLiteral("8-ball-break.json"),
     QStringLiteral("9-ball-break.json"),   QStringLiteral("newtons-cradle.json"), QStringLiteral("snooker-plant.json"),
     QStringLiteral("three-cushion.json"),  QStringLiteral("fast-graze.json"),     QStringLiteral("masse-around-a-ball.json"),
+    QStringLiteral("jump-over-a-ball.json"), QStringLiteral("off-the-table.json"),
 };
 
 void TestExamples::everyFileIsListed()
@@ -91,7 +94,7 @@ void TestExamples::everyFileIsListed()
 void TestExamples::loadsAndSimulatesToRest_data()
 {
     QTest::addColumn<QString>("file");
-    QTest::addColumn<QStringList>("pocketed");  // "ball:pocket" of every ball that ends in a pocket
+    QTest::addColumn<QStringList>("pocketed");  // "ball:pocket" of every ball that ends in a pocket, "ball:off-table" off it
     const QStringList none;
     QTest::newRow("straight shot") << "straight-shot.json" << QStringList{"1:pocket-tr"};
     QTest::newRow("stun") << "stun-shot.json" << QStringList{"1:pocket-t"};
@@ -111,6 +114,8 @@ void TestExamples::loadsAndSimulatesToRest_data()
     QTest::newRow("three-cushion carom") << "three-cushion.json" << none;
     QTest::newRow("fast graze") << "fast-graze.json" << QStringList{"5:pocket-t"};
     QTest::newRow("massé around a ball") << "masse-around-a-ball.json" << QStringList{"1:pocket-tr"};
+    QTest::newRow("jump over a ball") << "jump-over-a-ball.json" << QStringList{"1:pocket-tr"};
+    QTest::newRow("off the table") << "off-the-table.json" << QStringList{"cue:off-table"};
 }
 
 void TestExamples::loadsAndSimulatesToRest()
@@ -132,9 +137,11 @@ void TestExamples::loadsAndSimulatesToRest()
     QStringList actual;
     const std::vector<BallState> end = r.statesAt(r.endTime);
     for (std::size_t i = 0; i < end.size(); ++i) {
-        QVERIFY(end[i].motion == MotionState::Stationary || end[i].motion == MotionState::Pocketed);
+        QVERIFY(end[i].motion == MotionState::Stationary || end[i].motion == MotionState::Pocketed ||
+                end[i].motion == MotionState::OffTable);
         if (end[i].motion == MotionState::Pocketed)
             actual << QString::fromStdString(r.balls[i].id + ":" + r.table.pockets[static_cast<std::size_t>(end[i].pocket)].id);
+        if (end[i].motion == MotionState::OffTable) actual << QString::fromStdString(r.balls[i].id + ":off-table");
     }
     QCOMPARE(actual, pocketed);
 }
@@ -275,6 +282,64 @@ void TestExamples::masseGoesAroundTheBlocker()
     const Event& hit = firstEvent(masse, EventKind::BallBall, "cue");
     const Vec2 at = hit.before[0].velocity;
     QVERIFY(start.x() * at.y() - start.y() * at.x() > 0.0);  // turned counter-clockwise
+}
+
+void TestExamples::jumpClearsTheBlocker()
+{
+    // The lesson's claims: the cue ball flies 2 vz/g over the 2 with about 4 mm to spare (the least
+    // distance between the centres in space, sampled along the flight, less 2R), meets the 1 first,
+    // on the cloth; lower (35 degrees) it hits the 2 first.
+    const Setup setup = load(QStringLiteral("jump-over-a-ball.json"));
+    const SimulationResult r = simulate(setup);
+    QVERIFY(r.events.size() > 3);
+    QCOMPARE(int(r.events[1].kind), int(EventKind::BallTable));
+    const BallState up = r.events[1].after[0];
+    QVERIFY(std::abs(up.vz - 1.11) < 0.005);
+    const double g = setup.physics.gravity, flight = 2.0 * up.vz / g;
+    QVERIFY(std::abs(flight - 0.226) < 0.0005);
+    QCOMPARE(int(r.events[2].kind), int(EventKind::BallTable));
+    QCOMPARE(r.events[2].time, flight);  // the simulator's landing is the closed form, bit for bit
+    const Vec2 blocker = setup.balls[1].state.position;
+    const double R = setup.balls[0].radius;
+    double least = 1.0;
+    for (int k = 0; k <= 4000; ++k) {
+        const BallState s = r.stateAt(0, flight * k / 4000.0);
+        least = std::min(least, std::hypot((s.position - blocker).norm(), s.z));
+    }
+    QVERIFY2(least - 2.0 * R > 0.003 && least - 2.0 * R < 0.005, qPrintable(QString::number(least - 2.0 * R)));
+    const QStringList contacts = contactsOf(r, "cue");
+    QCOMPARE(contacts.value(0), QStringLiteral("1"));
+    const Event& hit = firstEvent(r, EventKind::BallBall, "cue");
+    QVERIFY(hit.before[0].motion != MotionState::Airborne);
+
+    Setup low = setup;
+    low.shot->elevationDeg = 35.0;
+    QCOMPARE(contactsOf(simulate(low), "cue").value(0), QStringLiteral("2"));
+    Setup hard = setup;
+    hard.shot->speed = 5.0;
+    const SimulationResult fast = simulate(hard);
+    QCOMPARE(contactsOf(fast, "cue").value(0), QStringLiteral("1"));
+    QVERIFY(firstEvent(fast, EventKind::BallBall, "cue").before[0].motion == MotionState::Airborne);
+}
+
+void TestExamples::offTheTableOverTheRail()
+{
+    // The lesson's claims: up at 1.39 m/s, off the table over the foot rail 0.175 s later with the
+    // centre 9.2 cm up; at 3 m/s it stays on the table, meets the cushion and then the 1.
+    const Setup setup = load(QStringLiteral("off-the-table.json"));
+    const SimulationResult r = simulate(setup);
+    QVERIFY(std::abs(r.events.at(1).after[0].vz - 1.39) < 0.005);
+    const Event& off = firstEvent(r, EventKind::BallOffTable, "cue");
+    QVERIFY(std::abs(off.time - 0.175) < 0.0005);
+    QVERIFY(std::abs(off.before[0].z - 0.092) < 0.0005);
+    QVERIFY(off.before[0].z > r.table.cushionHeight);
+    Setup soft = setup;
+    soft.shot->speed = 3.0;
+    const SimulationResult s = simulate(soft);
+    const QStringList contacts = contactsOf(s, "cue");
+    QCOMPARE(contacts.value(0), QStringLiteral("cushion"));
+    QCOMPARE(contacts.value(1), QStringLiteral("1"));
+    QVERIFY(s.stateAt(0, s.endTime).motion != MotionState::OffTable);
 }
 
 QTEST_GUILESS_MAIN(TestExamples)

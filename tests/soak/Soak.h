@@ -24,7 +24,7 @@ struct SoakOptions {
     std::optional<ShotClass> onlyClass;  // draw from one class only (randomShot's class stream)
     CheckOptions checks;         // checks.determinism: simulate every shot twice
     long long maxEvents = 200000;        // the simulator's event cap (SimulationOptions::maxEvents)
-    bool strikeKeepsElevation = false;   // SimulationOptions::strikeKeepsElevation
+    bool strikeKeepsElevation = true;    // SimulationOptions::strikeKeepsElevation (its default; --level: off)
 };
 
 // One failing shot.
