@@ -25,7 +25,7 @@
 //
 // A ball held on two contacts at once (wedged between two balls, a ball and a rail, a ball and a
 // jaw's rim, or two nose edges) is not held pairwise: both contacts are rows in space of one group
-// (HeldContacts.cpp), solved together (AirborneLoop.cpp's `wedged`, airCushion).
+// (HeldContacts.cpp), solved together (AirCollisions.cpp's `wedged`, airCushion).
 //
 // Left out: friction between the balls while held (mu_b about 0.05 against the press).
 
