@@ -15,7 +15,7 @@ std::string roundTrip(double value) { return roundTripText(value); }
 
 std::optional<std::string> unfinishedReason(const SimulationResult& result, const Setup& setup, double until)
 {
-    if (result.status == SimulationStatus::EventLimit)
+    if (result.status == SimulationStatus::EventLimit || result.status == SimulationStatus::Cancelled)
         return "the simulation was cut short at t = " + roundTrip(result.endTime) + " s: " + result.error;
     const bool stoppedAtRequest = until >= 0.0 && until <= setup.simulation.maxTime;
     if (result.status == SimulationStatus::ReachedUntil && !stoppedAtRequest)

@@ -94,6 +94,7 @@ Tally runBatch(const NoisySpec& n, const OddsRequest& request, long long first, 
         const auto v = noisyStrike(n.nominal, request.noise, request.seed, i);
         std::copy(v.begin(), v.end(), values.begin());
         const ShotResult shot = runShotWith(n.spec, values);
+        if (stop.stop_requested()) break;  // (its run may have been stopped half-way: not a sample)
         ++t.samples;
         switch (shot.status) {
         case ShotStatus::Skipped: ++t.miscues; break;
@@ -128,7 +129,8 @@ OddsResult resultOf(const Tally& t)
 OddsResult shotOdds(const SweepSpec& spec, const std::vector<double>& values, const OddsRequest& request, int threads,
                     std::stop_token stop, const std::function<void(long long done, long long total)>& progress)
 {
-    const NoisySpec noisy = makeNoisySpec(spec, values);
+    NoisySpec noisy = makeNoisySpec(spec, values);
+    if (stop.stop_possible()) noisy.spec.simulation.cancel = stop;  // a slow sample ends within a step
     const long long total = std::max(0LL, request.samples);
     const long long batch = std::max(1, request.batch);
     const long long batches = (total + batch - 1) / batch;

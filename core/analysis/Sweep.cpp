@@ -177,8 +177,11 @@ ShotResult runShot(const SweepSpec& spec, long long index)
     return shot;
 }
 
-SweepSummary runSweep(const SweepSpec& spec, const std::function<void(ShotResult&)>& onResult, std::stop_token stop)
+SweepSummary runSweep(const SweepSpec& given, const std::function<void(ShotResult&)>& onResult, std::stop_token stop)
 {
+    // Each shot's simulation answers the stop too (issue 39): a slow shot ends within a step.
+    SweepSpec spec = given;
+    if (stop.stop_possible()) spec.simulation.cancel = stop;
     SweepSummary summary;
     summary.total = shotCount(spec);
     const long long total = summary.total;
@@ -189,6 +192,7 @@ SweepSummary runSweep(const SweepSpec& spec, const std::function<void(ShotResult
         for (long long p = 0; p < total; ++p) {
             if (stop.stop_requested()) break;
             ShotResult shot = runShot(spec, indexOf(p));
+            if (stop.stop_requested()) break;  // (its run may have been stopped half-way)
             onResult(shot);
             ++summary.delivered;
         }

@@ -37,6 +37,7 @@ ToleranceScan scanTolerance(const SweepSpec& base, const Parameter& parameter, c
 
     SweepSpec spec = base;
     spec.shard = spec.shards = 1;
+    if (stop.stop_possible()) spec.simulation.cancel = stop;  // a slow shot ends within a step
     const double from = std::max(request.lowest, scan.current - request.halfSpan);
     const double to = std::min(request.highest, scan.current + request.halfSpan);
     spec.variations = {Variation{parameter, Range{from, to, std::max(1, request.count)}}};

@@ -52,12 +52,12 @@ Divergence measureDivergence(const EngineRun& exact, const EngineRun& run)
     return d;
 }
 
-EngineRun exactRunFor(const Setup& setup, const EngineSettings& settings)
+EngineRun exactRunFor(const Setup& setup, const EngineSettings& settings, const Progress& progress)
 {
     EngineSettings exact;
     exact.engine = EngineKind::Exact;
     exact.sampleDt = resolved(settings).sampleDt;
-    return runEngine(setup, exact);
+    return runEngine(setup, exact, progress);
 }
 
 Comparison compareWith(const Setup& setup, const EngineSettings& settings, EngineRun exact, const Progress& progress)

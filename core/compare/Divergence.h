@@ -56,7 +56,7 @@ Comparison compareEngines(const Setup& setup, const EngineSettings& settings, co
 // compareEngines in its two parts, for a caller that reports progress or stops in between (the
 // window's CompareRunner): the exact run sampled on `settings`' sample step, then the comparison
 // with that exact run. compareEngines(s, e, p) == compareWith(s, e, exactRunFor(s, e), p).
-EngineRun exactRunFor(const Setup& setup, const EngineSettings& settings);
+EngineRun exactRunFor(const Setup& setup, const EngineSettings& settings, const Progress& progress = {});
 Comparison compareWith(const Setup& setup, const EngineSettings& settings, EngineRun exact, const Progress& progress = {});
 
 }  // namespace cuelab::compare

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stop_token>
 
 namespace cuelab::compare::detail {
 
@@ -34,7 +35,24 @@ EngineRun runExact(const Setup& setup, const EngineSettings& settings, const Pro
         run.ids.push_back(b.id);
         run.radii.push_back(b.radius);
     }
-    const SimulationResult r = simulate(setup);
+    // The caller's progress sees the simulated time while the simulator runs, and stops it (issue 39:
+    // a long exact run is cancelled within a step, not after minutes).
+    std::stop_source stop;
+    SimulationOptions options;
+    if (progress) {
+        options.cancel = stop.get_token();
+        options.progress = [&](const SimulationResult&, const SimulationProgress& p) {
+            if (!progress(p.time)) stop.request_stop();
+        };
+    }
+    const SimulationResult r = simulate(setup, options);
+    if (r.status == SimulationStatus::Cancelled) {
+        run.cancelled = true;
+        run.atRest = false;
+        run.endTime = r.endTime;
+        run.error = r.error;
+        return run;
+    }
     run.endTime = r.endTime;
     run.atRest = r.status == SimulationStatus::AllAtRest;
     run.error = r.error;

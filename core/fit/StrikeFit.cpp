@@ -134,7 +134,7 @@ double residualOf(const Setup& setup, const Recording& recording, const Measure&
     const double end = std::min(measure.until, recording.duration()) - measure.strikeTime;
     so.until = std::clamp(end, 0.0, setup.simulation.maxTime);
     const SimulationResult result = simulate(setup, so);
-    if (result.status == SimulationStatus::EventLimit) return kRefusedResidual;
+    if (result.status == SimulationStatus::EventLimit || result.status == SimulationStatus::Cancelled) return kRefusedResidual;
     ResidualOptions ro;
     ro.balls = measure.balls;
     ro.until = measure.until;

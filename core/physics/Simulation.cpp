@@ -81,7 +81,7 @@ SimulationResult simulate(const Setup& setup, const SimulationOptions& options)
     const double limit = options.until >= 0.0 ? std::min(options.until, setup.simulation.maxTime)
                                               : setup.simulation.maxTime;
     r.events.reserve(64 + 16 * setup.balls.size());
-    detail::Simulator sim(r, limit, options.maxEvents, options.strikeKeepsElevation);
+    detail::Simulator sim(r, limit, options);
     sim.run(setup.shot);
     return r;
 }

@@ -9,6 +9,8 @@
 #include "Table.h"
 
 #include <cstdint>
+#include <functional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,24 @@ enum class SimulationStatus : std::uint8_t {
     AllAtRest,     // every ball is stationary or pocketed at endTime
     ReachedUntil,  // stopped at the requested time limit (until or maxTime) with balls still moving
     EventLimit,    // too many events: the run was cut short (error holds a message)
+    Cancelled,     // stopped through SimulationOptions::cancel (error holds a message)
+    Running,       // a snapshot handed to SimulationOptions::progress while the run goes on
+};
+
+// Whether the run ended by itself (at rest, or at the time limit asked for): a result that is not
+// finished holds the events and motion up to endTime only, and must say so wherever it is shown.
+inline bool isFinished(SimulationStatus s)
+{
+    return s == SimulationStatus::AllAtRest || s == SimulationStatus::ReachedUntil;
+}
+
+class SimulationResult;
+
+// How far a run has come: handed to SimulationOptions::progress.
+struct SimulationProgress {
+    long long events = 0;  // events logged so far
+    long long steps = 0;   // events and internal re-predictions so far
+    double time = 0.0;     // s, the simulated time reached (the last event)
 };
 
 struct SimulationOptions {
@@ -29,6 +49,16 @@ struct SimulationOptions {
     // fixtures found with them. A strike with no elevation is the same either way, bit for bit, and
     // a ball set up in the air (z, vz) flies either way.
     bool strikeKeepsElevation = true;
+    // Issue 39: a run asked to stop (from any thread) returns before its next step, with the events
+    // and motion up to the last event, status Cancelled. A step is one event or re-prediction, a few
+    // microseconds, so a request is answered within a millisecond whatever the shot.
+    std::stop_token cancel;
+    // Called on the simulating thread before the first step and then about every progressInterval
+    // seconds of wall time, with the result so far (status Running, endTime the time reached: a
+    // consistent state whose events and timelines up to endTime are final). Copy what you keep; the
+    // run goes on once the call returns. Never called when empty.
+    std::function<void(const SimulationResult& sofar, const SimulationProgress& progress)> progress;
+    double progressInterval = 0.1;  // s of wall time
 };
 
 // A stretch of a ball's motion: from `start` on, the ball moves in closed form from `state`
@@ -75,7 +105,9 @@ public:
     std::vector<std::vector<MotionSegment>> timelines;  // per ball, sorted by start
     double endTime = 0.0;     // s, when the last ball came to rest (or the time limit)
     SimulationStatus status = SimulationStatus::AllAtRest;
-    std::string error;        // set when status == EventLimit
+    std::string error;        // why the run is unfinished: set when status is EventLimit or Cancelled
+
+    bool finished() const { return isFinished(status); }
 
     // The exact state of ball `index` at time t (at an event time: the state just after the event).
     // Throws std::domain_error when t is not finite, std::out_of_range for an unknown index.

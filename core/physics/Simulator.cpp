@@ -6,6 +6,7 @@
 #include "Simulator.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -434,6 +435,15 @@ bool Simulator::holdCollision(const Event& e, const HeldContact& candidate, doub
     return true;
 }
 
+void Simulator::stopUnfinished(SimulationStatus status, double lastEvent, const std::string& why)
+{
+    // Cut short (the event cap) or cancelled: the events and the segments begun so far stand, and
+    // the result says the run ended at its last event with balls still moving.
+    r_.status = status;
+    r_.endTime = lastEvent;
+    r_.error = why;
+}
+
 void Simulator::run(const std::optional<CueStrike>& shot)
 {
     for (int i = 0; i < n_; ++i) beginSegment(i, 0.0, r_.balls[at(i)].state);
@@ -447,13 +457,28 @@ void Simulator::run(const std::optional<CueStrike>& shot)
 
     double lastEvent = 0.0;
     long long steps = 0;  // events and internal refreshes: a bound on the loop whatever happens
+    using Clock = std::chrono::steady_clock;
+    const auto interval = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(progressInterval_));
+    auto nextReport = Clock::now();
     for (;;) {
         const Candidate c = queue_.top();
         if (c.time == kNever || c.time > limit_) break;
+        // The clock is read every 64 steps (a step takes microseconds; a report is due every tenth of
+        // a second or so).
+        if (progress_ && (steps & 63) == 0 && Clock::now() >= nextReport) {
+            r_.status = SimulationStatus::Running;
+            r_.endTime = lastEvent;
+            progress_(r_, SimulationProgress{static_cast<long long>(r_.events.size()), steps, lastEvent});
+            nextReport = Clock::now() + interval;
+        }
+        if (cancel_.stop_requested()) {
+            std::ostringstream msg;
+            msg << "the simulation was cancelled at t = " << lastEvent << " s after " << r_.events.size() << " events";
+            stopUnfinished(SimulationStatus::Cancelled, lastEvent, msg.str());
+            return;
+        }
         const bool eventCap = static_cast<long long>(r_.events.size()) >= maxEvents_;
         if (eventCap || ++steps > 50 * maxEvents_ + 1000) {
-            r_.status = SimulationStatus::EventLimit;
-            r_.endTime = lastEvent;
             std::ostringstream msg;
             if (eventCap)
                 msg << "the simulation stopped after " << maxEvents_ << " events at t = " << lastEvent
@@ -462,7 +487,7 @@ void Simulator::run(const std::optional<CueStrike>& shot)
                 msg << "the simulation stopped after " << (steps - 1) << " steps (" << r_.events.size()
                     << " events and the internal re-predictions between them, at most 50 per allowed event) at t = "
                     << lastEvent << " s with balls still moving (event limit reached)";
-            r_.error = msg.str();
+            stopUnfinished(SimulationStatus::EventLimit, lastEvent, msg.str());
             return;
         }
         const std::size_t logged = r_.events.size();

@@ -18,7 +18,9 @@
 #include "BounceSeries.h"
 #include "Motion.h"
 
+#include <functional>
 #include <optional>
+#include <stop_token>
 #include <vector>
 
 namespace cuelab::detail {
@@ -34,9 +36,20 @@ constexpr double kCellSize = 0.5;
 
 class Simulator {
 public:
-    Simulator(SimulationResult& result, double limit, long long maxEvents, bool strikeKeepsElevation = false)
+    // `limit`: s, the time the run ends at if balls still move; the options give the event cap,
+    // cancellation and progress.
+    Simulator(SimulationResult& result, double limit, const SimulationOptions& options)
         : r_(result), table_(result.table), p_(result.physics), n_(static_cast<int>(result.balls.size())),
-          limit_(limit), maxEvents_(maxEvents), strikeKeepsElevation_(strikeKeepsElevation)
+          limit_(limit), maxEvents_(options.maxEvents), strikeKeepsElevation_(options.strikeKeepsElevation),
+          cancel_(options.cancel), progress_(options.progress), progressInterval_(options.progressInterval)
+    {
+        init();
+    }
+
+    void run(const std::optional<CueStrike>& shot);
+
+private:
+    void init()
     {
         const std::size_t n = static_cast<std::size_t>(n_);
         start_.assign(n, 0.0);
@@ -80,10 +93,8 @@ public:
             partners_[i].reserve(8);
         }
     }
-
-    void run(const std::optional<CueStrike>& shot);
-
-private:
+    // The run stops here, unfinished (EventLimit or Cancelled), with the events up to `lastEvent`.
+    void stopUnfinished(SimulationStatus status, double lastEvent, const std::string& why);
     double radius(int i) const { return r_.balls[static_cast<std::size_t>(i)].radius; }
     double mass(int i) const { return r_.balls[static_cast<std::size_t>(i)].mass; }
     std::size_t at(int i) const { return static_cast<std::size_t>(i); }
@@ -219,6 +230,9 @@ private:
     double limit_;
     long long maxEvents_;
     bool strikeKeepsElevation_ = false;  // SimulationOptions::strikeKeepsElevation
+    std::stop_token cancel_;             // SimulationOptions::cancel
+    std::function<void(const SimulationResult&, const SimulationProgress&)> progress_;
+    double progressInterval_ = 0.1;      // s of wall time between progress_ calls
 
     // Flat per-ball arrays: the current motion segment and its predictions.
     std::vector<double> start_;      // s, when the segment began

@@ -14,8 +14,11 @@
 //                              on by default; --elevation, from before, is the default)
 //   cuelab-bench --check [--level] [--trace] [--max-events N] [--set KEY=VALUE]... FILE...
 //                              the soak's checks on setup files; exit 1 if any fails
+//   cuelab-bench --cancel [--trials N] FILE...
+//                              how fast a run answers its cancel token (issue 39), per file
 
 #include "AnalysisBench.h"
+#include "CancelBench.h"
 #include "CompareBench.h"
 #include "CushionBench.h"
 #include "QuarticBench.h"
@@ -70,6 +73,7 @@ int main(int argc, char** argv)
     using namespace cuelab::bench;
     if (argc > 1 && std::strcmp(argv[1], "--soak") == 0) return soakCommand(argc - 2, argv + 2);
     if (argc > 1 && std::strcmp(argv[1], "--check") == 0) return checkCommand(argc - 2, argv + 2);
+    if (argc > 1 && std::strcmp(argv[1], "--cancel") == 0) return cancelCommand(argc - 2, argv + 2);
     if (argc > 1 && std::strcmp(argv[1], "--sweep") == 0) {
         std::printf("{%s}\n", sweepJson(true).c_str());
         return 0;
