@@ -16,7 +16,9 @@
 #include "editor/Playback.h"
 #include "editor/Quantities.h"
 #include "editor/Selection.h"
+#include "editor/RunState.h"
 #include "editor/ShotPanel.h"
+#include "editor/SimulationOverlay.h"
 #include "editor/TransportBar.h"
 #include "view/TableView.h"
 
@@ -36,7 +38,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QProgressBar>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -136,7 +137,9 @@ MainWindow::MainWindow(QWidget* parent)
     connect(document_, &Document::simulationFailed, this, [this](const QString& message) {
         statusBar()->showMessage(message, window::kStatusMessageMs);
     });
-    connect(document_, &Document::simulatingChanged, busy_, &QWidget::setVisible);
+    // A run that takes a while is shown as it goes, over the view, with its Cancel (issue 39).
+    overlay_ = new SimulationOverlay(document_, view_);
+    connect(document_, &Document::simulatingChanged, this, [this](bool running) { cancelAction_->setEnabled(running); });
     connect(playback_, &Playback::timeChanged, this, &MainWindow::onTimeChanged);
 
     connect(selection_, &Selection::ballChanged, this, &MainWindow::onBallSelected);
@@ -162,7 +165,7 @@ MainWindow::MainWindow(QWidget* parent)
     if (QScreen* screen = QGuiApplication::primaryScreen()) setGeometry(firstStartGeometry(screen->availableGeometry()));
     readSettings();
     updateTitle();
-    busy_->setVisible(document_->isSimulating());
+    cancelAction_->setEnabled(document_->isSimulating());
 }
 
 MainWindow::~MainWindow() = default;
@@ -268,13 +271,6 @@ void MainWindow::createStatusBar()
     summaryLabel_ = new QLabel(this);
     fpsLabel_ = new QLabel(this);
     fpsLabel_->setToolTip(tr("Frames per second the table view draws"));
-    busy_ = new QProgressBar(this);
-    busy_->setRange(0, 0);  // busy indicator: the simulator reports no fraction
-    busy_->setMaximumWidth(120);
-    busy_->setMaximumHeight(14);
-    busy_->setToolTip(tr("Simulating the edited setup"));
-    busy_->setTextVisible(false);
-    statusBar()->addPermanentWidget(busy_);
     statusBar()->addPermanentWidget(summaryLabel_);
     statusBar()->addPermanentWidget(fpsLabel_);
 }
@@ -325,7 +321,8 @@ void MainWindow::onResultChanged()
     QString summary = tr("%n event(s), at rest at %1", nullptr, static_cast<int>(result->events.size()))
                           .arg(formatQuantity(result->endTime, QStringLiteral("s"), 3));
     if (result->status == SimulationStatus::ReachedUntil) summary = tr("%n event(s), stopped at the time limit", nullptr, static_cast<int>(result->events.size()));
-    if (result->status == SimulationStatus::EventLimit) summary = tr("Cut short: %1").arg(QString::fromStdString(result->error));
+    if (!result->finished()) summary = RunState::unfinishedNote(*result);
+    summaryLabel_->setToolTip(result->finished() ? QString() : QString::fromStdString(result->error));
     summaryLabel_->setText(summary);
 }
 

@@ -21,13 +21,13 @@ class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
-class QProgressBar;
 
 namespace cuelab {
 
 class BallsPanel;
 class DockLayout;
 class FirstStartTip;
+class SimulationOverlay;
 class Document;
 class EventsPanel;
 class InspectorPanel;
@@ -161,7 +161,8 @@ private:
     std::array<QAction*, kOverlayCount> overlayActions_{};
     QLabel* summaryLabel_ = nullptr;
     QLabel* fpsLabel_ = nullptr;
-    QProgressBar* busy_ = nullptr;
+    SimulationOverlay* overlay_ = nullptr;  // "Simulating…" with Cancel over the view (issue 39)
+    QAction* cancelAction_ = nullptr;       // Playback > Cancel Simulation (Esc)
     bool autoScoped_ = false;  // the view's Paths Of / Labels Of were set by scopeForBusyShot
 };
 

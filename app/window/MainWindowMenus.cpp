@@ -189,6 +189,12 @@ void MainWindow::createMenus()
     analysisMenu_ = menuBar()->addMenu(tr("&Analysis"));
     playbackMenu_ = menuBar()->addMenu(tr("&Playback"));
     playbackMenu_->addActions(transport_->transportActions());
+    playbackMenu_->addSeparator();
+    // Stops a long simulation: the events computed so far stay, marked as a partial result.
+    cancelAction_ = playbackMenu_->addAction(tr("&Cancel Simulation"), document_, &Document::cancelSimulation);
+    cancelAction_->setShortcut(QKeySequence(Qt::Key_Escape));
+    cancelAction_->setToolTip(tr("Stop the running simulation; the events computed so far stay, marked as a partial result"));
+    cancelAction_->setEnabled(false);
 
     QMenu* help = helpMenu_ = menuBar()->addMenu(tr("&Help"));
     QAction* guide = help->addAction(tr("CueLab &User Guide"), this, [this] { UserGuide::showFor(this); });

@@ -75,10 +75,6 @@
         <translation>A golyó középpontjának helye t = 0-kor, méterben</translation>
     </message>
     <message>
-        <source>The simulation failed: %1</source>
-        <translation>A szimuláció nem sikerült: %1</translation>
-    </message>
-    <message>
         <source>v_rel %1, |J| %2</source>
         <translation>v_rel %1, |J| %2</translation>
     </message>
@@ -1232,6 +1228,12 @@
     <message>
         <source>Centre-of-mass frame: paths within %1 s of the event</source>
         <translation>Tömegközépponti rendszer: a pályák az esemény előtti és utáni %1 s-ban</translation>
+    </message>
+    <message>
+        <source>%1.
+Export the events computed so far?</source>
+        <translation>%1.
+Exportálja az eddig kiszámolt eseményeket?</translation>
     </message>
 </context>
 <context>
@@ -2715,10 +2717,6 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <source>Frames per second the table view draws</source>
         <translation>Az asztal nézetének másodpercenként kirajzolt képkockái</translation>
     </message>
-    <message>
-        <source>Simulating the edited setup</source>
-        <translation>A szerkesztett felállás szimulálása</translation>
-    </message>
     <message numerus="yes">
         <source>%n event(s), at rest at %1</source>
         <translation>
@@ -2730,10 +2728,6 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
         <translation>
             <numerusform>%n esemény, az időkorlátnál leállítva</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Cut short: %1</source>
-        <translation>Idő előtt leállt: %1</translation>
     </message>
     <message>
         <source>Unsaved Changes</source>
@@ -2998,6 +2992,14 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>How to use the window, step by step (the guide bundled with this version)</source>
         <translation>Az ablak használata lépésről lépésre (az ehhez a változathoz mellékelt útmutató)</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel Simulation</source>
+        <translation>A szimuláció &amp;leállítása</translation>
+    </message>
+    <message>
+        <source>Stop the running simulation; the events computed so far stay, marked as a partial result</source>
+        <translation>Leállítja a futó szimulációt; az eddig kiszámolt események megmaradnak, részeredményként jelölve</translation>
     </message>
 </context>
 <context>
@@ -3378,6 +3380,10 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
     <message>
         <source>in the %1</source>
         <translation>%1ban</translation>
+    </message>
+    <message>
+        <source>%1. So far: %2</source>
+        <translation>%1. Eddig: %2</translation>
     </message>
 </context>
 <context>
@@ -4206,6 +4212,25 @@ Kimaradt kérdés: %1</translation>
     </message>
 </context>
 <context>
+    <name>cuelab::RunState</name>
+    <message>
+        <source>Simulating… %1 events, t = %2</source>
+        <translation>Szimuláció… %1 esemény, t = %2</translation>
+    </message>
+    <message>
+        <source>Simulating… %1 events so far, t = %2</source>
+        <translation>Szimuláció… eddig %1 esemény, t = %2</translation>
+    </message>
+    <message>
+        <source>Stopped at t = %1 (cancelled after %2 events): a partial result</source>
+        <translation>Leállítva t = %1-nál (%2 esemény után megszakítva): részeredmény</translation>
+    </message>
+    <message>
+        <source>Cut short at t = %1 (event limit reached): a partial result</source>
+        <translation>Idő előtt leállt t = %1-nál (elérte az eseménykorlátot): részeredmény</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::ShortcutsDialog</name>
     <message>
         <source>Table view</source>
@@ -4468,6 +4493,24 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>Aim at</source>
         <translation>Célzás</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::SimulationOverlay</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Mégse</translation>
+    </message>
+    <message>
+        <source>Stop the simulation: the events computed so far stay, marked as a partial result (Esc)</source>
+        <translation>A szimuláció leállítása: az eddig kiszámolt események megmaradnak, részeredményként jelölve (Esc)</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::SimulationRunner</name>
+    <message>
+        <source>The simulation failed: %1</source>
+        <translation>A szimuláció nem sikerült: %1</translation>
     </message>
 </context>
 <context>

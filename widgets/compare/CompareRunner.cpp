@@ -19,8 +19,9 @@ CompareOutcome runComparison(Setup setup, compare::EngineSettings settings, quin
     out.generation = generation;
     try {
         // compareEngines (core/compare) in its two parts, to report progress and stop in between.
-        compare::EngineRun exact = compare::exactRunFor(setup, settings);
-        if (current->load() != generation) return out;
+        // (A long exact run stops within a step once a newer request or the window's end replaces it.)
+        compare::EngineRun exact = compare::exactRunFor(setup, settings, [&](double) { return current->load() == generation; });
+        if (exact.cancelled || current->load() != generation) return out;
         progress->store(5);
         // The other engines usually run a little longer than the exact one (no slide phase).
         const double expected = std::max(1.0, 1.3 * exact.endTime);

@@ -237,7 +237,7 @@ void BallsPanel::refreshMotion()
     const auto result = document_->result();
     // A result still being computed for an older setup may have other balls: show nothing rather
     // than a wrong row.
-    const bool usable = result && document_->isResultCurrent() &&
+    const bool usable = result && document_->isResultForSetup() &&
                         result->balls.size() == static_cast<std::size_t>(table_->rowCount());
     for (int row = 0; row < table_->rowCount(); ++row) {
         if (!usable) {

@@ -12,9 +12,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QStandardPaths>
-#include <QFutureWatcher>
+#include <QTimer>
 #include <QUndoStack>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <cmath>
 #include <exception>
@@ -27,19 +26,25 @@ namespace {
 // that shrank) and everything else: a visible gap, so that a new ball is not frozen to another.
 constexpr double kEditorGap = 1e-4;
 
-SimulationOutcome runSimulation(const Setup& setup, quint64 generation)
+// ms: a run still going after this long is shown as it goes (the balls where they start, then its
+// events as they come): short enough not to be seen as a stale frame, long enough that a quick run's
+// result replaces the last one directly, without a flash of the pending state.
+constexpr int kPendingMs = 60;
+// ms between two copies of a long run's result so far.
+constexpr int kStreamMs = 250;
+
+// The setup as it stands before any event, as a result in progress: the balls where they start and
+// the strike at t = 0 (a run stopped before its first step).
+std::shared_ptr<const SimulationResult> startOf(const Setup& setup)
 {
-    SimulationOutcome out;
-    out.generation = generation;
-    try {
-        auto result = std::make_shared<SimulationResult>(simulate(setup));
-        if (result->status == SimulationStatus::EventLimit)
-            out.error = QString::fromStdString(result->error);
-        out.result = std::move(result);
-    } catch (const std::exception& e) {
-        out.error = QObject::tr("The simulation failed: %1").arg(QString::fromUtf8(e.what()));
-    }
-    return out;
+    std::stop_source stop;
+    stop.request_stop();
+    SimulationOptions options;
+    options.cancel = stop.get_token();
+    auto r = std::make_shared<SimulationResult>(simulate(setup, options));
+    r->status = SimulationStatus::Running;
+    r->error.clear();
+    return r;
 }
 
 // A new document: a 9-ft table, the cue ball on the head spot and one object ball on the foot spot,
@@ -98,19 +103,31 @@ QString describeProblem(const SetupProblem& problem)
 }
 
 Document::Document(QObject* parent)
-    : QObject(parent), undoStack_(new QUndoStack(this)), watcher_(new QFutureWatcher<SimulationOutcome>(this))
+    : QObject(parent), undoStack_(new QUndoStack(this)), runner_(new SimulationRunner(this)), pending_(new QTimer(this)),
+      stream_(new QTimer(this))
 {
     connect(undoStack_, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
-    connect(watcher_, &QFutureWatcher<SimulationOutcome>::finished, this, &Document::simulationFinished);
+    connect(runner_, &SimulationRunner::finished, this, &Document::simulationFinished);
+    connect(runner_, &SimulationRunner::progressed, this, [this](quint64 generation, qint64 events, double time) {
+        if (generation == generation_) emit simulationProgress(events, time);
+    });
+    connect(runner_, &SimulationRunner::snapshot, this, [this](quint64 generation, std::shared_ptr<const SimulationResult> sofar) {
+        if (generation != generation_ || !running_ || !pendingShown_) return;
+        result_ = std::move(sofar);
+        resultGeneration_ = generation;
+        emit resultChanged();
+    });
+    pending_->setSingleShot(true);
+    pending_->setInterval(kPendingMs);
+    connect(pending_, &QTimer::timeout, this, &Document::showPending);
+    stream_->setInterval(kStreamMs);
+    connect(stream_, &QTimer::timeout, runner_, &SimulationRunner::requestSnapshot);
     replace(startingSetup(), QString(), tr("Untitled"));
 }
 
-Document::~Document()
-{
-    // The running task holds its own copy of the setup; it only has to end before the process does.
-    watcher_->disconnect(this);
-    watcher_->waitForFinished();
-}
+// The runner (a child) stops its runs and waits for their current step when it is destroyed: the
+// window's Quit ends the process at once, whatever the simulator was doing.
+Document::~Document() { runner_->disconnect(this); }
 
 QString Document::displayName() const
 {
@@ -442,32 +459,44 @@ void Document::applySetup(const Setup& setup)
     setup_ = setup;
     ++generation_;
     emit setupChanged();
-    scheduleSimulation();
-}
-
-void Document::scheduleSimulation()
-{
-    // One run at a time: a setup that changes while a run is busy is simulated when it ends, and
-    // the busy run's result is dropped then (simulationFinished compares generations).
-    if (!running_) startSimulation();
+    startSimulation();
 }
 
 void Document::startSimulation()
 {
+    // The run in progress (an older setup's) is stopped and dropped: only the newest setup counts.
+    runner_->start(setup_, generation_);
+    pendingShown_ = false;
+    stream_->stop();
+    pending_->start();
     if (!running_) {
         running_ = true;
         emit simulatingChanged(true);
     }
-    watcher_->setFuture(QtConcurrent::run(runSimulation, setup_, generation_));
 }
 
-void Document::simulationFinished()
+void Document::showPending()
 {
-    const SimulationOutcome outcome = watcher_->result();
-    if (outcome.generation != generation_) {  // stale: the setup changed meanwhile
-        startSimulation();
-        return;
-    }
+    if (!running_) return;
+    // The new setup as it stands at t = 0, at once; then its events as they are computed.
+    pendingShown_ = true;
+    result_ = startOf(setup_);
+    resultGeneration_ = generation_;
+    emit resultChanged();
+    runner_->requestSnapshot();
+    stream_->start();
+}
+
+void Document::cancelSimulation()
+{
+    if (running_) runner_->cancel();
+}
+
+void Document::simulationFinished(const SimulationOutcome& outcome)
+{
+    if (outcome.generation != generation_) return;  // (the runner drops replaced runs already)
+    pending_->stop();
+    stream_->stop();
     running_ = false;
     emit simulatingChanged(false);
     if (!outcome.error.isEmpty()) emit simulationFailed(outcome.error);
@@ -481,8 +510,8 @@ void Document::simulationFinished()
 void Document::waitForResult()
 {
     while (running_) {
-        watcher_->waitForFinished();
-        QCoreApplication::processEvents();  // delivers finished(), which may start the next run
+        runner_->waitForDone();
+        QCoreApplication::processEvents();  // delivers the runner's finished()
     }
 }
 

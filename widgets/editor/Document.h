@@ -6,6 +6,7 @@
 
 #include "RackPresets.h"
 #include "SetupCommand.h"
+#include "SimulationRunner.h"
 
 #include "Setup.h"
 #include "Simulation.h"
@@ -22,7 +23,7 @@ class QUndoStack;
 namespace cuelab {
 struct SetupProblem;
 }
-template <typename T> class QFutureWatcher;
+class QTimer;
 
 namespace cuelab {
 
@@ -33,12 +34,6 @@ QString describeProblem(const SetupProblem& problem);
 // The properties of a ball that an edit changes, as the `field` of Document::setBall (one undo step
 // per property; repeated edits of the same property of the same ball merge until endMerge()).
 enum class BallProperty : int { Id = 0, X, Y, Vx, Vy, Wx, Wy, Wz, Radius, Mass };
-
-struct SimulationOutcome {
-    std::shared_ptr<const SimulationResult> result;  // null when the simulator threw
-    QString error;                                   // why it failed or was cut short
-    quint64 generation = 0;                          // which setup it belongs to
-};
 
 class Document : public QObject {
     Q_OBJECT
@@ -56,12 +51,20 @@ public:
     QUndoStack* undoStack() const { return undoStack_; }
     bool isModified() const;
 
-    // The result of the newest simulation that finished; null before the first one. It may belong
-    // to an older setup while isSimulating() (the window keeps showing it until the new one lands).
+    // The result of the current setup's simulation (issue 39: never an older setup's once the new
+    // one has been pending for a moment): while it runs, its result so far (status Running: the balls
+    // where they start at first, then the events as they are computed); when it ends, the whole run,
+    // or what a cancelled or cut-short run reached (SimulationResult::finished() tells). Null before
+    // the first one.
     std::shared_ptr<const SimulationResult> result() const { return result_; }
     bool isSimulating() const { return running_; }
-    // True when result() belongs to the current setup.
-    bool isResultCurrent() const { return resultGeneration_ == generation_ && result_ != nullptr; }
+    // True when result() is the current setup's finished run (complete, cut short or cancelled): no
+    // more of it will come.
+    bool isResultCurrent() const { return resultGeneration_ == generation_ && result_ != nullptr && !running_; }
+    // True when result() belongs to the current setup, finished or still growing.
+    bool isResultForSetup() const { return resultGeneration_ == generation_ && result_ != nullptr; }
+    // Stops the running simulation: what it computed so far becomes the result (status Cancelled).
+    void cancelSimulation();
 
     // Files. A refused file leaves the document exactly as it was and returns false with the
     // loader's message in *error.
@@ -120,6 +123,8 @@ signals:
     void setupChanged();
     void resultChanged();
     void simulatingChanged(bool running);
+    // The running simulation's progress: events so far and the simulated time reached (s).
+    void simulationProgress(qint64 events, double time);
     void simulationFailed(const QString& message);
     void editRefused(const QString& message);
     void filePathChanged(const QString& path);
@@ -134,9 +139,9 @@ private:
     // ball being edited ("ball "cue" overlaps ball "1"", not "ball "1" overlaps ball "cue"").
     bool validate(const Setup& setup, QString* error, int ball = -1) const;
     bool editBall(int index, const QString& text, const Setup& after, MergeKey merge);
-    void scheduleSimulation();
     void startSimulation();
-    void simulationFinished();
+    void showPending();  // the current run takes a while: show its result so far
+    void simulationFinished(const SimulationOutcome& outcome);
 
     Setup setup_;
     Setup notesSetup_;
@@ -147,7 +152,10 @@ private:
     int mergeSession_ = 0;
 
     std::shared_ptr<const SimulationResult> result_;
-    QFutureWatcher<SimulationOutcome>* watcher_;
+    SimulationRunner* runner_;
+    QTimer* pending_;  // a run still going after a moment is shown as it goes
+    QTimer* stream_;   // while shown, its result so far is fetched a few times a second
+    bool pendingShown_ = false;  // the current run is shown as it goes
     quint64 generation_ = 0;        // bumped by every change of the setup
     quint64 resultGeneration_ = 0;  // the generation result_ was computed for
     bool running_ = false;

@@ -1,4 +1,5 @@
 #include "EventsPanel.h"
+#include "RunState.h"
 
 #include "EventTreeModel.h"
 #include "Quantities.h"
@@ -79,6 +80,12 @@ EventsPanel::EventsPanel(QWidget* parent)
     speedRow->addWidget(minSpeed_, 1);
     layout->addLayout(options);
     layout->addLayout(speedRow);
+    note_ = new QLabel(this);
+    note_->setObjectName(QStringLiteral("eventsRunNote"));
+    note_->setWordWrap(true);
+    note_->setContentsMargins(6, 0, 6, 0);
+    note_->hide();
+    layout->addWidget(note_);
     layout->addWidget(table_);
 
     connect(kinds_, &QComboBox::currentIndexChanged, this, &EventsPanel::applyFilter);
@@ -112,6 +119,9 @@ void EventsPanel::fillBalls()
 
 void EventsPanel::setResult(std::shared_ptr<const SimulationResult> result)
 {
+    const QString note = result ? RunState::unfinishedNote(*result) : QString();
+    note_->setText(note);
+    note_->setVisible(!note.isEmpty());
     selecting_ = true;
     model_->setResult(std::move(result));  // a reset clears the selection
     selecting_ = false;

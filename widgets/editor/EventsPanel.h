@@ -12,6 +12,7 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
 class QTreeView;
 
 namespace cuelab {
@@ -50,6 +51,7 @@ private:
     EventTreeModel* model_;
     QComboBox* kinds_;
     QComboBox* ball_;
+    QLabel* note_ = nullptr;  // a run still going, cancelled or cut short (issue 39)
     QDoubleSpinBox* minSpeed_;
     bool selecting_ = false;
 };

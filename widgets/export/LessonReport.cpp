@@ -1,4 +1,5 @@
 #include "LessonReport.h"
+#include "editor/RunState.h"
 
 #include "CurvePainter.h"
 #include "ShotDiagram.h"
@@ -134,7 +135,10 @@ void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& 
         pocketed << tr("%1 in the %2 at %3 s").arg(id(r, b.ball), displayElementName(r.table.pockets[b.pocket].id)).arg(b.time, 0, 'f', 4);
     lines << tr("Pocketed: %1").arg(pocketed.isEmpty() ? tr("none") : pocketed.join(QStringLiteral("; ")));
     lines << tr("Struck ball pocketed: %1").arg(o.struckBallPocketed ? tr("yes") : tr("no"));
-    lines << tr("The shot ends at %1 s, after %2 events.").arg(r.endTime, 0, 'f', 4).arg(r.events.size());
+    // A partial run (still going, cancelled, cut short) is said to be one (issue 39).
+    const QString unfinished = RunState::unfinishedNote(r);
+    lines << (unfinished.isEmpty() ? tr("The shot ends at %1 s, after %2 events.").arg(r.endTime, 0, 'f', 4).arg(r.events.size())
+                                   : unfinished + QLatin1Char('.'));
     y = paragraph(p, y, lines.join(QLatin1Char('\n')), 15);
     y += 10;
     y = paragraph(p, y, tr("Balls: cushion contacts and final positions"), 18, true);

@@ -1,4 +1,5 @@
 #include "ShotDiagram.h"
+#include "editor/RunState.h"
 
 #include "Curves.h"
 #include "ShotOutcome.h"
@@ -97,7 +98,9 @@ QString ShotDiagram::captionText() const
     QString text;
     const ShotOutcome outcome = shotOutcome(*result_);
     text += tr("Outcome: %1").arg(outcomeLine(*result_, outcome)) + QLatin1Char('\n');
-    const bool atEnd = time_ >= result_->endTime;
+    // A partial run (still going, cancelled, cut short) says so first (issue 39).
+    if (const QString unfinished = RunState::unfinishedNote(*result_); !unfinished.isEmpty()) text.prepend(unfinished + QLatin1Char('\n'));
+    const bool atEnd = time_ >= result_->endTime && result_->finished();
     text += atEnd ? tr("Balls where they rest (t = %1). ").arg(seconds(time_))
                   : tr("Balls at t = %1 of %2; paths dashed after it. ").arg(seconds(time_), seconds(result_->endTime));
     text += tr("Dashed rings: start positions. \u25C6 blue: ball-ball contact, \u25C6 red: cushion, \u25B2 pocketed.");

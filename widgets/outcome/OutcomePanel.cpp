@@ -1,4 +1,5 @@
 #include "OutcomePanel.h"
+#include "editor/RunState.h"
 #include "layout/ColumnFit.h"
 
 #include "OutcomeLine.h"
@@ -90,6 +91,8 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
     const SimulationResult& r = *result_;
     outcome_ = shotOutcome(r);
     summary_ = outcomeLine(r, outcome_);
+    // A partial run's outcome is the outcome so far, and says where it stopped.
+    if (const QString note = RunState::unfinishedNote(r); !note.isEmpty()) summary_ = tr("%1. So far: %2").arg(note, summary_);
     header_->setText(summary_);
     auto id = [&](int ball) { return QString::fromStdString(r.balls.at(static_cast<std::size_t>(ball)).id); };
     auto addFact = [&](const QString& what, const QString& value, int event = -1, const QString& tip = {}) {

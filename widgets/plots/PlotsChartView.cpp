@@ -16,11 +16,15 @@ namespace cuelab {
 namespace {
 
 constexpr double kMarkerPickRadius = 7.0;  // px
+constexpr int kTimeTicks = 8, kValueTicks = 5;  // about as many ticks on each axis
 
-// Ticks at 1, 2 or 5 times a power of ten, about `count` of them over the axis.
-void niceTicks(QValueAxis* axis, int count)
+// Ticks at 1, 2 or 5 times a power of ten, about `count` of them over [lo, hi] (the axis' range by
+// default). The interval must suit a new range before the axis takes it: the axis lays out its ticks
+// at once, and the last range's interval over a range a thousand times longer is a thousand times as
+// many tick items (a second of layout: a shot of a millisecond followed by one of seconds).
+void niceTicks(QValueAxis* axis, int count, double lo, double hi)
 {
-    const double span = axis->max() - axis->min();
+    const double span = hi - lo;
     if (!(span > 0.0)) return;
     const double raw = span / count;
     const double p = std::pow(10.0, std::floor(std::log10(raw)));
@@ -32,6 +36,15 @@ void niceTicks(QValueAxis* axis, int count)
         }
     axis->setTickAnchor(0.0);
     axis->setTickInterval(step);
+}
+
+void niceTicks(QValueAxis* axis, int count) { niceTicks(axis, count, axis->min(), axis->max()); }
+
+// A range and its ticks together, the ticks first.
+void setRangeWithTicks(QValueAxis* axis, int count, double lo, double hi)
+{
+    if (hi - lo > axis->max() - axis->min()) niceTicks(axis, count, lo, hi);  // (a narrower one: after)
+    axis->setRange(lo, hi);
 }
 
 }  // namespace
@@ -85,10 +98,10 @@ PlotsChartView::PlotsChartView(QWidget* parent) : QChartView(parent)
             if (m.event == event) QToolTip::showText(QCursor::pos(), m.name, this);
     });
     connect(valueAxis_, &QValueAxis::rangeChanged, this, [this] {
-        niceTicks(valueAxis_, 5);
+        niceTicks(valueAxis_, kValueTicks);
         updateCursorLine();
     });
-    connect(timeAxis_, &QValueAxis::rangeChanged, this, [this] { niceTicks(timeAxis_, 8); });
+    connect(timeAxis_, &QValueAxis::rangeChanged, this, [this] { niceTicks(timeAxis_, kTimeTicks); });
     setToolTip(tr("Drag: move the time cursor. Wheel: zoom the time axis (Ctrl: the value axis). "
                   "Shift-drag or middle-drag: pan. Double-click: show everything. Click a marker to select its event."));
 }
@@ -110,8 +123,8 @@ void PlotsChartView::setFullRange(double t0, double t1, double v0, double v1)
 
 void PlotsChartView::resetZoom()
 {
-    timeAxis_->setRange(fullT0_, fullT1_);
-    valueAxis_->setRange(fullV0_, fullV1_);
+    setRangeWithTicks(timeAxis_, kTimeTicks, fullT0_, fullT1_);
+    setRangeWithTicks(valueAxis_, kValueTicks, fullV0_, fullV1_);
     updateCursorLine();
 }
 

@@ -1,4 +1,5 @@
 #include "PlotsPanel.h"
+#include "editor/RunState.h"
 
 #include "i18n/DisplayNames.h"
 #include "PlotsChartView.h"
@@ -316,7 +317,10 @@ void PlotsPanel::rebuild()
     chart->setTitle(plot_ == Plot::EnergyParts ? tr("Whole table")
                     : allBalls_              ? tr("All balls")
                                              : tr("Ball %1").arg(QString::fromStdString(r.balls[shown].id)));
-    hint_->setText(tr("%n event(s)", nullptr, static_cast<int>(view_->markers().size())));
+    const QString events = tr("%n event(s)", nullptr, static_cast<int>(view_->markers().size()));
+    // A run still going, cancelled or cut short: the curves end where it stopped, and say so.
+    const QString note = RunState::unfinishedNote(r);
+    hint_->setText(note.isEmpty() ? events : note);
 }
 
 }  // namespace cuelab

@@ -6,6 +6,7 @@
 #include "Features.h"
 #include "MainWindow.h"
 #include "editor/Document.h"
+#include "editor/RunState.h"
 #include "editor/Playback.h"
 #include "export/DiagramFiles.h"
 #include "export/ShotFacts.h"
@@ -52,6 +53,8 @@ QString askPath(MainWindow& window, const QString& title, const QString& suffix,
     const QString dir = d->filePath().isEmpty() ? QDir::homePath() : QFileInfo(d->filePath()).absolutePath();
     QString base = QFileInfo(d->displayName()).completeBaseName();
     if (base.isEmpty()) base = QStringLiteral("shot");
+    // A partial result (still going, cancelled, cut short) is named as one (issue 39).
+    if (d->result() && !d->result()->finished()) base += QStringLiteral("-partial");
     QString path = QFileDialog::getSaveFileName(&window, title, dir + QLatin1Char('/') + base + suffix, filter);
     if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty()) path += suffix;
     return path;
@@ -249,6 +252,12 @@ void installExport(MainWindow& window)
         QAction* a = menu->addAction(tr(d.text), w, [w, d] {
             std::shared_ptr<const SimulationResult> result = currentResult(*w);
             if (!result) return;
+            // The data files carry no sentence of their own: a partial result is exported knowingly.
+            if (!result->finished() &&
+                QMessageBox::question(w, tr("Export"),
+                                      tr("%1.\nExport the events computed so far?").arg(RunState::unfinishedNote(*result))) !=
+                    QMessageBox::Yes)
+                return;
             double frameDt = 0.0;
             if (d.trajectory && !askFrameStep(*w, &frameDt)) return;
             const QString path = askPath(*w, tr("Export"), QString::fromLatin1(d.suffix), tr(d.filter));
