@@ -6023,5 +6023,9 @@ Kimaradt kérdés: %1</translation>
         <source>The ball drops when its centre enters the pocket circle (centre c, radius r_{pocket}).</source>
         <translation>A golyó akkor esik be, amikor középpontja belép a lyuk körébe (középpontja c, sugara r_{pocket}).</translation>
     </message>
+    <message>
+        <source>Since t_{start} the ball has flown held against a ball it presses on: besides gravity the contact force&apos;s vertical part q_z per unit mass holds it up, so it falls with g − q_z (written g below), and its centre&apos;s height above its resting height is a parabola in τ = t − t_{start}. It lands when the height is 0 again: the positive root of that quadratic.</source>
+        <translation>t_{start} óta a golyó egy golyóhoz szorulva repül, amelyre ránehezedik: a gravitáció mellett az érintkezési erő egységnyi tömegre jutó q_z függőleges része tartja, így g − q_z gyorsulással esik (lent ezt írjuk g-nek), és középpontjának a nyugalmi magassága fölötti magassága parabola τ = t − t_{start} függvényében. Akkor ér földet, amikor a magasság ismét 0: ennek a másodfokú egyenletnek a pozitív gyökénél.</translation>
+    </message>
 </context>
 </TS>
