@@ -119,7 +119,10 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
     }
     // A contact the simulator held when it solved a group again, touching at that instant (within
     // kContactTolerance), is the event's contact then, whatever the old path's roots say.
-    if (!touchingNow && late > 0.0 && ev.held && ev.grouped && chosen != late) {
+    // (Also at t0 itself, when the held group's solve began the bodies' segments at the event: a pair
+    // pressed together that the detection from t0 sees parting by a rounding.)
+    if (!touchingNow && late >= 0.0 &&
+        (chosen == kNever || std::abs(chosen - late) > 1e-9 * std::max(1.0, std::abs(ev.time)))) {
         double f = 0.0;  // the gap polynomial at the event (highest degree first)
         for (double c : q) f = f * late + c;
         double D = 0.0;  // the touching distance, for f = |d|^2 - D^2 = 2 D gap + gap^2
@@ -181,8 +184,8 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
     toi.root = chosen;
     toi.touching = touchingNow;
     if (touchingNow && chosen > 0.0)
-        toi.why = Text::tr("The bodies were touching at the event (within 10^{−10} m) and pressed together, found "
-                           "when a group of held contacts was solved again then: the contact begins at that instant, "
+        toi.why = Text::tr("The bodies were touching at the event (within 10^{−10} m), grazing, approaching or pressed "
+                           "together (a group of held contacts solved again then): the contact begins at that instant, "
                            "not at a root of f.");
     else if (!touchingNow && nearest < 0 && segment)
         toi.why = Text::tr("The ball was already touching the cushion's line, beyond the end of this segment, and "

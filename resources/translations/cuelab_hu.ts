@@ -5944,8 +5944,8 @@ Kimaradt kérdés: %1</translation>
         <translation>Ehhez jönnek még a tartós érintkezés impulzusai.</translation>
     </message>
     <message>
-        <source>The bodies were touching at the event (within 10^{−10} m) and pressed together, found when a group of held contacts was solved again then: the contact begins at that instant, not at a root of f.</source>
-        <translation>A testek az eseménykor érintkeztek (10^{−10} m-en belül) és egymáshoz szorultak; ez a tartós érintkezések egy csoportjának akkori újramegoldásakor derült ki: az érintkezés abban a pillanatban kezdődik, nem f egy gyökénél.</translation>
+        <source>The bodies were touching at the event (within 10^{−10} m), grazing, approaching or pressed together (a group of held contacts solved again then): the contact begins at that instant, not at a root of f.</source>
+        <translation>A testek az eseménykor érintkeztek (10^{−10} m-en belül): súrolták egymást, közeledtek vagy egymáshoz szorultak (a tartós érintkezések egy csoportját ekkor oldottuk meg újra): az érintkezés abban a pillanatban kezdődik, nem f egy gyökénél.</translation>
     </message>
     <message>
         <source>The ball was already touching the cushion&apos;s line, beyond the end of this segment, and closing in: the contact begins where the foot of the perpendicular from its centre enters the segment through its end (λ = 0 or 1), not at a root of f.</source>
