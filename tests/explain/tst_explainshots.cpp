@@ -51,6 +51,7 @@ private slots:
         const int shots = shotsPerClass();
         std::map<EventKind, long long> events, failed;
         std::map<EventKind, long long> inAir;  // collisions with a flying ball
+        long long heldInAir = 0;
         QStringList problems;
         // CUELAB_EXPLAIN_SHOT=K and CUELAB_EXPLAIN_EVENT=I print event I of shot K (a failure found again).
         const char* only = std::getenv("CUELAB_EXPLAIN_SHOT");
@@ -70,7 +71,14 @@ private slots:
                     qInfo().noquote() << QString::fromStdString(explain::toMarkdown(explain::explain(r, i, shot.setup.shot)));
                 std::vector<std::string> found;
                 try {
-                    found = testing::checkExplanation(r, explain::explain(r, i, shot.setup.shot));
+                    const explain::Explanation e = explain::explain(r, i, shot.setup.shot);
+                    found = testing::checkExplanation(r, e);
+                    // A collision in the air that a hold or a held group took over: its states after are
+                    // the simulator's, named but not derived step by step (docs/explain.md, "Not yet").
+                    if (const explain::Step* after = e.step("After the collision"))
+                        if (after->law.english().rfind("These are the states", 0) != 0 &&
+                            after->law.english().rfind("v′ = v + J/m and", 0) != 0)
+                            ++heldInAir;
                 } catch (const std::exception& x) {
                     found.push_back(std::string("event ") + std::to_string(i) + ": " + x.what());
                 }
@@ -89,7 +97,8 @@ private slots:
         }
         qInfo().noquote() << soak::toString(c).data() << shots << "shots," << total << "events," << bad
                           << "disagree; in the air:" << inAir[EventKind::BallBall] << "ball-ball," << inAir[EventKind::BallCushion]
-                          << "ball-cushion," << inAir[EventKind::BallJaw] << "ball-jaw;" << counts.join(", ");
+                          << "ball-cushion," << inAir[EventKind::BallJaw] << "ball-jaw," << heldInAir << "of them held;"
+                          << counts.join(", ");
         if (!problems.isEmpty()) qWarning().noquote() << problems.join('\n');
         QCOMPARE(bad, 0LL);
     }
