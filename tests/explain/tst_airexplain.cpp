@@ -70,6 +70,8 @@ void TestAirExplain::jumpOntoTheOne()
     const Event& ev = r.events[static_cast<std::size_t>(k)];
     const explain::Explanation e = explain::explain(r, k, s.shot);
     dump(e);
+    if (std::getenv("CUELAB_EXPLAIN_PRINT_ALL"))
+        for (int i = 0; i < static_cast<int>(r.events.size()); ++i) dump(explain::explain(r, i, s.shot));
     const QStringList problems = check(r, e);
     if (!problems.isEmpty()) qWarning().noquote() << problems.join('\n');
     QVERIFY(problems.isEmpty());
