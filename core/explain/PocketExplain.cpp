@@ -21,7 +21,6 @@ void explainPocket(const SimulationResult& r, int index, Explanation& e)
     if (ev.before[0].motion == MotionState::Airborne) {
         // A flying ball: over the pocket's circle it finds no cloth to land on (or meets the rail's
         // end inside the pocket below the rail's top).
-        const double g = r.physics.gravity;
         const SpacePath path = spacePathOf(r, i, seg);
         TimeOfImpact toi;
         toi.t0 = seg.start;
