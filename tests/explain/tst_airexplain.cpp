@@ -58,6 +58,9 @@ private slots:
     void jumpOntoTheOne();
     void droppedOnARestingBall();
     void ontoTheNose();
+    void twoFlyingBalls();
+    void frictionInTheAir();
+    void intoTheFace();
 };
 
 void TestAirExplain::jumpOntoTheOne()
@@ -140,6 +143,72 @@ void TestAirExplain::ontoTheNose()
     if (!problems.isEmpty()) qWarning().noquote() << problems.join('\n');
     QVERIFY(problems.isEmpty());
     QVERIFY(e.step("The impact"));
+}
+
+void TestAirExplain::twoFlyingBalls()
+{
+    // Two balls thrown at each other 5 cm up, level: the same gravity cancels in c_b − c_a, so f is a
+    // quadratic (its quartic and cubic coefficients exactly 0), and the normal is level (n_z = 0).
+    Setup s;
+    s.balls = {flyingBall("cue", 1.0, 0.6, 0.05, 0.5, Vec2(1.0, 0.0)), flyingBall("1", 1.2, 0.6, 0.05, 0.5, Vec2(-1.0, 0.0))};
+    const SimulationResult r = simulate(s);
+    const int k = firstAirCollision(r, EventKind::BallBall);
+    QVERIFY(k >= 0);
+    const explain::Explanation e = explain::explain(r, k);
+    dump(e);
+    const QStringList problems = check(r, e);
+    if (!problems.isEmpty()) qWarning().noquote() << problems.join('\n');
+    QVERIFY(problems.isEmpty());
+    QVERIFY(e.toi);
+    QCOMPARE(int(e.toi->coefficients.size()), 3);
+    // Head on: they meet after (0.2 − 2R) / 2 s, each 1 m/s towards the other.
+    const double R = r.balls[0].radius;
+    QVERIFY(std::abs(e.toi->root - (0.2 - 2.0 * R) / 2.0) <= 1e-12);
+    QCOMPARE(resultOf(e, "Contact geometry in space", "n3_z"), 0.0);
+    const std::string text = explain::toMarkdown(e);
+    QVERIFY(text.find("degree 2") != std::string::npos);
+    QVERIFY(text.find("n is level") != std::string::npos);
+}
+
+void TestAirExplain::frictionInTheAir()
+{
+    // The 5 m/s jump with the frictional ball-ball model: the contact points' slip in space and the
+    // friction against it are part of the law, and the states after still equal the simulator's.
+    Setup s = loadExample("jump-over-a-ball.json");
+    s.shot->speed = 5.0;
+    s.physics.ballBallModel = BallBallModel::Frictional;
+    const SimulationResult r = simulate(s);
+    const int k = firstAirCollision(r, EventKind::BallBall);
+    QVERIFY(k >= 0);
+    const explain::Explanation e = explain::explain(r, k, s.shot);
+    dump(e);
+    const QStringList problems = check(r, e);
+    if (!problems.isEmpty()) qWarning().noquote() << problems.join('\n');
+    QVERIFY(problems.isEmpty());
+    QVERIFY(e.step("Friction between the balls"));
+    const double jt = std::hypot(resultOf(e, "Friction between the balls", "J_t_x"), resultOf(e, "Friction between the balls", "J_t_y"));
+    QVERIFY(jt > 0.0);
+    // At most μ P_n.
+    const explain::Step* friction = e.step("Friction between the balls");
+    QVERIFY(jt <= friction->input("mu")->value * resultOf(e, "Normal impulse", "Pn") * (1.0 + 1e-12));
+}
+
+void TestAirExplain::intoTheFace()
+{
+    // A ball hopping 1 cm off the cloth into the foot rail, its centre below the nose: it meets the
+    // face, n level.
+    Setup s;
+    s.balls = {flyingBall("cue", 2.45, 0.6, 0.001, 0.1, Vec2(2.0, 0.0))};
+    const SimulationResult r = simulate(s);
+    const int k = firstAirCollision(r, EventKind::BallCushion);
+    if (k < 0) QSKIP("the hop meets no cushion in the air (the table's geometry changed)");
+    const explain::Explanation e = explain::explain(r, k);
+    dump(e);
+    const QStringList problems = check(r, e);
+    if (!problems.isEmpty()) qWarning().noquote() << problems.join('\n');
+    QVERIFY(problems.isEmpty());
+    QCOMPARE(resultOf(e, "Contact geometry in space", "N3_z"), 0.0);
+    QVERIFY(explain::toMarkdown(e).find("face") != std::string::npos);
 }
 
 QTEST_GUILESS_MAIN(TestAirExplain)
