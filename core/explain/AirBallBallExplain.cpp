@@ -16,9 +16,13 @@ namespace cuelab::explain::detail {
 
 namespace {
 
-bool sameMotion(const BallState& x, const BallState& y)
+// The law's result is the event's: to rounding (1e-12 of the motion's size), as the simulator found
+// the contact's normal from its own prediction instant, which rounds it differently.
+bool sameMotion(const BallState& x, const BallState& y, double radius)
 {
-    return x.velocity == y.velocity && x.vz == y.vz && x.spin == y.spin && x.z == y.z;
+    const double scale = velocity3(x).norm() + radius * x.spin.norm();
+    return (velocity3(x) - velocity3(y)).norm() <= 1e-12 * scale && radius * (x.spin - y.spin).norm() <= 1e-12 * scale &&
+           std::abs(x.z - y.z) <= 1e-12 * (x.z + radius);
 }
 
 std::string sub(const std::string& symbol, const std::string& letter) { return symbol + "_" + letter; }
@@ -157,7 +161,7 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
         addClothAnswerStep(e, "b", B.id, trace.bLaw, res.bBounced, res.bBounce, trace.bKept, p, B.mass);
 
     // The states the simulation goes on from: the law's, or a hold's.
-    const bool lawStands = sameMotion(ev.after[0], res.a) && sameMotion(ev.after[1], res.b);
+    const bool lawStands = sameMotion(ev.after[0], res.a, A.radius) && sameMotion(ev.after[1], res.b, B.radius);
     Text law;
     if (lawStands)
         law = Text::tr("These are the states the simulation goes on from.");
