@@ -16,13 +16,15 @@ namespace cuelab::explain::detail {
 
 namespace {
 
-// The law's result is the event's: to rounding (1e-12 of the motion's size), as the simulator found
-// the contact's normal from its own prediction instant, which rounds it differently.
-bool sameMotion(const BallState& x, const BallState& y, double radius)
+// The law's result is the event's: exactly (`tolerance` 0), or to rounding, as the simulator found the
+// contact's normal from its own prediction instant, which rounds it differently (a normal nearly
+// along a velocity component can make that 1e-11 of the motion).
+bool sameMotion(const BallState& x, const BallState& y, double radius, double tolerance)
 {
+    if (tolerance == 0.0) return x.velocity == y.velocity && x.vz == y.vz && x.spin == y.spin && x.z == y.z;
     const double scale = velocity3(x).norm() + radius * x.spin.norm();
-    return (velocity3(x) - velocity3(y)).norm() <= 1e-12 * scale && radius * (x.spin - y.spin).norm() <= 1e-12 * scale &&
-           std::abs(x.z - y.z) <= 1e-12 * (x.z + radius);
+    return (velocity3(x) - velocity3(y)).norm() <= tolerance * scale && radius * (x.spin - y.spin).norm() <= tolerance * scale &&
+           std::abs(x.z - y.z) <= tolerance * (x.z + radius);
 }
 
 std::string sub(const std::string& symbol, const std::string& letter) { return symbol + "_" + letter; }
@@ -161,10 +163,11 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
         addClothAnswerStep(e, "b", B.id, trace.bLaw, res.bBounced, res.bBounce, trace.bKept, p, B.mass);
 
     // The states the simulation goes on from: the law's, or a hold's.
-    const bool lawStands = sameMotion(ev.after[0], res.a, A.radius) && sameMotion(ev.after[1], res.b, B.radius);
+    const bool exact = sameMotion(ev.after[0], res.a, A.radius, 0.0) && sameMotion(ev.after[1], res.b, B.radius, 0.0);
+    const bool lawStands = sameMotion(ev.after[0], res.a, A.radius, 1e-9) && sameMotion(ev.after[1], res.b, B.radius, 1e-9);
     Text law;
     if (lawStands)
-        law = Text::tr("These are the states the simulation goes on from.");
+        law = Text::join({Text::tr("These are the states the simulation goes on from."), exact ? Text() : roundedNormal()}, " ");
     else if (ev.held)
         law = Text::tr("The law leaves the pair parting slower than %1 m/s (or touching with no approach) while the "
                        "upper ball's weight presses it on the other: it would only bounce ever lower on it. The pair is "
@@ -180,9 +183,9 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
         law = Text::tr("The balls touch with no approach: the ball on the cloth goes on as its slip says (a slip of "
                        "rounding rolled out, a roll slower than the cloth can tell stopped). These are the states the "
                        "simulation goes on from.");
-    const BallState& a = lawStands ? res.a : ev.after[0];
-    const BallState& b = lawStands ? res.b : ev.after[1];
-    const Vec3 J = lawStands ? res.impulse : ev.impulse;
+    const BallState& a = exact ? res.a : ev.after[0];
+    const BallState& b = exact ? res.b : ev.after[1];
+    const Vec3 J = exact ? res.impulse : ev.impulse;
     StepBuilder(e.steps, Text::tr("After the collision"), law, "v′_a, ω′_a, v′_b, ω′_b,   E′ = Σ (½ m |v′|^2 + ½ I |ω′|^2)")
         .out("v_a_after", "v′_a", velocity3(a), "m/s")
         .out("w_a_after", "ω′_a", a.spin, "rad/s")

@@ -17,13 +17,15 @@ namespace cuelab::explain::detail {
 
 namespace {
 
-// The law's result is the event's: to rounding (1e-12 of the motion's size), as the simulator found
-// the contact's normal from its own prediction instant, which rounds it differently.
-bool sameMotion(const BallState& x, const BallState& y, double radius)
+// The law's result is the event's: exactly (`tolerance` 0), or to rounding, as the simulator found the
+// contact's normal from its own prediction instant, which rounds it differently (a normal nearly
+// along a velocity component can make that 1e-11 of the motion).
+bool sameMotion(const BallState& x, const BallState& y, double radius, double tolerance)
 {
+    if (tolerance == 0.0) return x.velocity == y.velocity && x.vz == y.vz && x.spin == y.spin && x.z == y.z;
     const double scale = velocity3(x).norm() + radius * x.spin.norm();
-    return (velocity3(x) - velocity3(y)).norm() <= 1e-12 * scale && radius * (x.spin - y.spin).norm() <= 1e-12 * scale &&
-           std::abs(x.z - y.z) <= 1e-12 * (x.z + radius);
+    return (velocity3(x) - velocity3(y)).norm() <= tolerance * scale && radius * (x.spin - y.spin).norm() <= tolerance * scale &&
+           std::abs(x.z - y.z) <= tolerance * (x.z + radius);
 }
 
 Path flatPath(const SpacePath& p) { return Path{p.c0.head<2>(), p.c1.head<2>(), p.c2.head<2>()}; }
@@ -194,10 +196,13 @@ void explainAirCushion(const SimulationResult& r, int index, Explanation& e)
         .out("Pt", "P_t", trace.tangentialImpulse, "N s")
         .out("J_law", "J", res.impulse, "N s");
 
-    const bool lawStands = sameMotion(ev.after[0], res.after, R);
+    const bool exact = sameMotion(ev.after[0], res.after, R, 0.0);
+    const bool lawStands = sameMotion(ev.after[0], res.after, R, 1e-9);
     Text law;
     if (lawStands)
-        law = Text::tr("v′ = v + J/m and ω′ = ω + Q × P_t / I: the states the simulation goes on from.");
+        law = Text::join({Text::tr("v′ = v + J/m and ω′ = ω + Q × P_t / I: the states the simulation goes on from."),
+                          exact ? Text() : roundedNormal()},
+                         " ");
     else if (ev.held && part == Part::Face)
         law = Text::tr("The ball is pressed on the face by the balls it is held with: the face joins their group as a row, "
                        "solved with the others, and the parting speed the law leaves is taken away. These are the states "
@@ -211,15 +216,15 @@ void explainAirCushion(const SimulationResult& r, int index, Explanation& e)
     else
         law = Text::tr("The ball joins the group of contacts it is held in, and their rows are solved together: these "
                        "are the states the simulation goes on from.");
-    const BallState& after = lawStands ? res.after : ev.after[0];
+    const BallState& after = exact ? res.after : ev.after[0];
     StepBuilder(e.steps, Text::tr("After the collision"), law, "v′ = v + J/m,   ω′ = ω + Q × P_t / I,   E′ = ½ m |v′|^2 + ½ I |ω′|^2")
         .out("v_after", "v′", velocity3(after), "m/s")
         .out("w_after", "ω′", after.spin, "rad/s")
-        .out("J", "J", lawStands ? res.impulse : ev.impulse, "N s")
+        .out("J", "J", exact ? res.impulse : ev.impulse, "N s")
         .out("E_after", "E′", kineticEnergy(after, R, ball.mass), "J");
     addEnergyStep(e, Text::tr("The cushion absorbs part of the energy (restitution e < 1, friction at the contact)."));
     addSpaceMomentumStep(e, Text::tr("The body pushes the ball: the change of its momentum in space is the body's impulse J."),
-                         "J_body", "J", lawStands ? res.impulse : ev.impulse);
+                         "J_body", "J", exact ? res.impulse : ev.impulse);
 }
 
 }  // namespace cuelab::explain::detail

@@ -73,6 +73,13 @@ void chooseRoots(TimeOfImpact& toi, const Quartic& q, double chosen, double late
     toi.touching = touchingNow;
 }
 
+Text roundedNormal()
+{
+    return Text::tr("(The simulator found the contact's normal from its own instant of prediction, which rounds it a "
+                    "little differently: its states, given here, agree with the law's above to within 10^{−9} of their "
+                    "size.)");
+}
+
 TimeOfImpact airBallBallToi(const SimulationResult& r, int index)
 {
     const Event& ev = r.events.at(static_cast<std::size_t>(index));

@@ -35,6 +35,8 @@ void addToiStep(Explanation& e, const Text& law);
 SpacePath spacePathOf(const SimulationResult& r, int ball, const SegmentBefore& seg);
 void chooseRoots(TimeOfImpact& toi, const Quartic& q, double chosen, double late, bool& touchingNow);
 TimeOfImpact airBallBallToi(const SimulationResult& r, int index);
+// The sentence for an event whose states after agree with its law's to rounding only.
+Text roundedNormal();
 void explainAirBallBall(const SimulationResult& r, int index, Explanation& e);
 void explainAirCushion(const SimulationResult& r, int index, Explanation& e);  // AirCushionExplain.cpp
 void addSpaceMomentumStep(Explanation& e, const Text& law, const std::string& key, const std::string& symbol, const Vec3& outside);

@@ -6027,5 +6027,9 @@ Kimaradt kérdés: %1</translation>
         <source>Since t_{start} the ball has flown held against a ball it presses on: besides gravity the contact force&apos;s vertical part q_z per unit mass holds it up, so it falls with g − q_z (written g below), and its centre&apos;s height above its resting height is a parabola in τ = t − t_{start}. It lands when the height is 0 again: the positive root of that quadratic.</source>
         <translation>t_{start} óta a golyó egy golyóhoz szorulva repül, amelyre ránehezedik: a gravitáció mellett az érintkezési erő egységnyi tömegre jutó q_z függőleges része tartja, így g − q_z gyorsulással esik (lent ezt írjuk g-nek), és középpontjának a nyugalmi magassága fölötti magassága parabola τ = t − t_{start} függvényében. Akkor ér földet, amikor a magasság ismét 0: ennek a másodfokú egyenletnek a pozitív gyökénél.</translation>
     </message>
+    <message>
+        <source>(The simulator found the contact&apos;s normal from its own instant of prediction, which rounds it a little differently: its states, given here, agree with the law&apos;s above to within 10^{−9} of their size.)</source>
+        <translation>(A szimulátor az érintkezés normálisát a saját előrejelzési pillanatából számolta, ami kissé másképp kerekíti: az itt megadott állapotai a fenti törvényéivel méretük 10^{−9}-szeresén belül egyeznek.)</translation>
+    </message>
 </context>
 </TS>
