@@ -152,7 +152,7 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
                              "about each other, |v_t|²/d, opens it): they would only chatter, ever more weakly, into "
                              "a lasting contact. The simulator drops that micro-bounce (a normal impulse ΔP takes the "
                              "separation speed away, which only removes energy) and holds the pair: from here a "
-                             "contact force N ≥ 0 pushes along n, solved with the cloth's friction (Contact.h). Each "
+                             "contact force N ≥ 0 pushes along n, solved with the cloth's friction. Each "
                              "ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling; the "
                              "cloth takes the rest), 0 at rest.")
                         .arg(number(kHoldSpeed)),
@@ -257,7 +257,7 @@ void explainCushion(const SimulationResult& r, int index, Explanation& e)
                              "force presses it in: it would only chatter into a lasting contact. The simulator drops "
                              "that micro-bounce (a normal impulse ΔP takes the separation speed away, which only "
                              "removes energy) and holds the ball against the cushion: from here the cushion's force "
-                             "N ≥ 0 pushes along N (Contact.h). The ball takes the impulse by one rule: c = 1 sliding, "
+                             "N ≥ 0 pushes along N. The ball takes the impulse by one rule: c = 1 sliding, "
                              "5/7 rolling (it keeps rolling), 0 at rest.")
                         .arg(number(kHoldSpeed)),
                     "ΔP c/m = v′·N,   v″ = v′ − c ΔP/m N")

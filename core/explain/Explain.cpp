@@ -2,6 +2,7 @@
 
 #include "Frames.h"
 
+#include "Flight.h"
 #include "Motion.h"
 #include "Parts.h"
 
@@ -104,6 +105,13 @@ SegmentBefore segmentBefore(const SimulationResult& r, int ball, int index)
     s.start = timeline[k].start;
     s.state = timeline[k].state;
     s.push = timeline[k].push;
+    s.pushZ = timeline[k].pushZ;
+    if (s.state.motion == MotionState::Airborne && s.pushed()) {
+        // A flight held against a ball: it lands where gravity less the push's lift brings it down.
+        const double landing = heldLandingTime(s.state, r.physics.gravity, Vec3(s.push.x(), s.push.y(), s.pushZ));
+        s.end = landing == kNever ? kNever : s.start + landing;
+        return s;
+    }
     const Transition tr = nextTransition(s.state, R, r.physics, s.push);
     s.end = tr.after == kNever ? kNever : s.start + tr.after;
     return s;
@@ -134,9 +142,20 @@ Explanation explain(const SimulationResult& result, int index, const std::option
     }
     switch (ev.kind) {
     case EventKind::CueStrike: detail::explainCueStrike(result, index, shot, e); break;
-    case EventKind::BallBall: detail::explainBallBall(result, index, e); break;
+    case EventKind::BallBall:
+        // A flying ball meets the other in space (the simulator's airBallBall); two on the cloth, in its plane.
+        if (ev.before[0].motion == MotionState::Airborne || ev.before[1].motion == MotionState::Airborne)
+            detail::explainAirBallBall(result, index, e);
+        else
+            detail::explainBallBall(result, index, e);
+        break;
     case EventKind::BallCushion:
-    case EventKind::BallJaw: detail::explainCushion(result, index, e); break;
+    case EventKind::BallJaw:
+        if (ev.before[0].motion == MotionState::Airborne)
+            detail::explainAirCushion(result, index, e);
+        else
+            detail::explainCushion(result, index, e);
+        break;
     case EventKind::BallPocket: detail::explainPocket(result, index, e); break;
     case EventKind::BallTable: detail::explainBallTable(result, index, e); break;
     case EventKind::BallOffTable: detail::explainOffTable(result, index, e); break;
@@ -172,6 +191,10 @@ Body makeBody(const SimulationResult& r, int ball, const BallState& before, cons
 void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball, const std::string& letter,
                    const SegmentBefore& seg, double t)
 {
+    if (seg.state.motion == MotionState::Airborne) {
+        addFlightStep(steps, r, ball, letter, seg, t);
+        return;
+    }
     const double R = r.balls.at(static_cast<std::size_t>(ball)).radius;
     const Path path = pathOf(seg.state, R, r.physics, seg.push);
     const BallState at = evolve(seg.state, R, r.physics, t - seg.start, seg.push);
@@ -198,9 +221,12 @@ void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball
                      : Text::tr("Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with "
                                 "constant acceleration −μ_r g v̂ (rolling resistance).");
         break;
+    case MotionState::Spinning:
+        law = Text::tr("Since t_{start} %1 has been %2: it turns on the spot about the vertical, and its centre does "
+                       "not move (v = 0, a = 0).");
+        break;
     default:
-        law = Text::tr("Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with constant "
-                       "acceleration zero (it does not move).");
+        law = Text::tr("Since t_{start} %1 has been %2: its centre does not move (v = 0, a = 0).");
         break;
     }
     law.arg(who).arg(state);
@@ -215,6 +241,44 @@ void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball
         .in("a" + key, now("a"), Vec2(2.0 * path.c2), "m/s²")
         .out("r" + key, now("r"), at.position, "m")
         .out("v" + key, now("v"), at.velocity, "m/s")
+        .out("w" + key, now("ω"), at.spin, "rad/s");
+}
+
+void addFlightStep(std::vector<Step>& steps, const SimulationResult& r, int ball, const std::string& letter,
+                   const SegmentBefore& seg, double t)
+{
+    const double R = r.balls.at(static_cast<std::size_t>(ball)).radius;
+    const double g = r.physics.gravity;
+    const Vec3 push(seg.push.x(), seg.push.y(), seg.pushZ);
+    // The simulator's own closed forms (Flight.h): a free flight, or one held against a ball.
+    const SpacePath path = seg.pushed() ? heldFlightPath(seg.state, R, g, push) : flightPath(seg.state, R, g);
+    const BallState at = seg.pushed() ? flyHeld(seg.state, g, push, t - seg.start) : evolve(seg.state, R, r.physics, t - seg.start);
+    const std::string key = letter.empty() ? std::string() : "_" + letter;
+    auto at0 = [&](const std::string& s) { return letter.empty() ? s + "_0" : s + "_{0," + letter + "}"; };
+    auto now = [&](const std::string& s) { return letter.empty() ? s : s + "_" + letter; };
+    const Text who = Text(ballName(r, ball));
+    const Text law = seg.pushed()
+                         ? Text::tr("Since t_{start} %1 has been in the air, held against a ball it presses on: besides "
+                                    "gravity the contact force per unit mass q acts on it, constant over the segment, so "
+                                    "its centre moves on a parabola in space with the constant acceleration a = q − g z; "
+                                    "its spin does not change (no cloth, no friction).")
+                         : Text::tr("Since t_{start} %1 has been in the air: gravity alone acts on it, so its centre moves "
+                                    "on a parabola in space, uniformly across the table and falling with the constant "
+                                    "acceleration g (a = −g z); its spin does not change (no cloth, no friction).");
+    StepBuilder b(steps, Text::tr("Motion of %1 up to the event").arg(who), Text(law).arg(who),
+                  "r(τ) = r_0 + v_0 τ + ½ a τ^2,   z(τ) = z_0 + v_{z,0} τ + ½ a_z τ^2,   τ = t − t_{start}");
+    if (seg.pushed()) b.in("q" + key, now("q"), push, "m/s²");
+    b.in("t_start" + key, letter.empty() ? "t_{start}" : "t_{start," + letter + "}", seg.start, "s")
+        .in("r0" + key, at0("r"), seg.state.position, "m")
+        .in("z0" + key, at0("z"), seg.state.z, "m")
+        .in("v0" + key, at0("v"), seg.state.velocity, "m/s")
+        .in("vz0" + key, letter.empty() ? "v_{z,0}" : "v_{z,0," + letter + "}", seg.state.vz, "m/s")
+        .in("w0" + key, at0("ω"), seg.state.spin, "rad/s")
+        .in("a" + key, now("a"), Vec3(2.0 * path.c2), "m/s²")
+        .out("r" + key, now("r"), at.position, "m")
+        .out("z" + key, now("z"), at.z, "m")
+        .out("v" + key, now("v"), at.velocity, "m/s")
+        .out("vz" + key, letter.empty() ? "v_z" : "v_{z," + letter + "}", at.vz, "m/s")
         .out("w" + key, now("ω"), at.spin, "rad/s");
 }
 
@@ -240,11 +304,12 @@ void addEnergyStep(Explanation& e, const Text& where)
     double previous = 0.0;
     for (const Body& body : e.bodies) previous += body.energyAfterPrevious;
     b.in("E_previous", "E_{prev}", previous, "J");
-    b.out("E_cloth", "E_{prev} − E", previous - before, "J");
+    // (Differences of near-equal energies: their rounding reads as 0.)
+    b.out("E_cloth", "E_{prev} − E", previous - before, "J", previous);
     b.out("E_before", "E", before, "J")
         .out("E_after", "E′", after, "J")
-        .out("dE", "ΔE", change, "J")
-        .out("dE_percent", "ΔE/E", before > 0.0 ? 100.0 * change / before : 0.0, "%");
+        .out("dE", "ΔE", change, "J", before)
+        .out("dE_percent", "ΔE/E", before > 0.0 ? 100.0 * change / before : 0.0, "%", 100.0);
 }
 
 void addMomentumStep(Explanation& e, const Text& law)
@@ -280,9 +345,12 @@ void addMomentumStep(Explanation& e, const Text& law)
     }
     b.out("P_before", "P", before, "N s")
         .out("P_after", "P′", after, "N s")
-        .out("dP", "ΔP", change, "N s")
-        .out("dP_norm", "|ΔP|", change.norm(), "N s")
-        .out("dP_percent", "|ΔP|/|P|", before.norm() > 0.0 ? 100.0 * change.norm() / before.norm() : 0.0, "%");
+        .out("dP", "ΔP", change, "N s");
+    // (A change of momentum compares with the momentum: its rounding reads as 0.)
+    for (Quantity& q : b.step().results)
+        if (q.key == "dP_x" || q.key == "dP_y") q.scale = before.norm();
+    b.out("dP_norm", "|ΔP|", change.norm(), "N s", before.norm())
+        .out("dP_percent", "|ΔP|/|P|", before.norm() > 0.0 ? 100.0 * change.norm() / before.norm() : 0.0, "%", 100.0);
 }
 
 }  // namespace detail

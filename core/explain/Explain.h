@@ -22,6 +22,8 @@ struct SegmentBefore {
     BallState state;          // at start
     double end = 0.0;         // s, start + the closed-form duration of the state (inf if none)
     Vec2 push = Vec2::Zero(); // m/s^2, the contact force over the mass in a held push (Contact.h)
+    double pushZ = 0.0;       // m/s^2, its vertical part for a flying ball held against another
+    bool pushed() const { return !push.isZero(0.0) || pushZ != 0.0; }
 };
 SegmentBefore segmentBefore(const SimulationResult& result, int ball, int index);
 

@@ -127,14 +127,14 @@ std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language
     if (!s.inputs.empty()) {
         out += word(Word::Inputs).in(language);
         for (const Quantity& q : s.inputs)
-            out += " " + markupToText(q.symbol.in(language)) + " = " + readable(q.value) + unitText(q.unit) + ";";
+            out += " " + markupToText(q.symbol.in(language)) + " = " + readable(q.value, q.scale) + unitText(q.unit) + ";";
         out.back() = '\n';
         out += "\n";
     }
     if (!s.results.empty()) {
         out += "**" + word(Word::Results).in(language) + "**";
         for (const Quantity& q : s.results)
-            out += " **" + markupToText(q.symbol.in(language)) + " = " + readable(q.value) + unitText(q.unit) + "**;";
+            out += " **" + markupToText(q.symbol.in(language)) + " = " + readable(q.value, q.scale) + unitText(q.unit) + "**;";
         out.back() = '\n';
         out += "\n";
     }
@@ -151,7 +151,7 @@ std::string quantitiesHtml(const std::vector<Quantity>& qs, bool result, const T
     std::string out;
     for (const Quantity& q : qs) {
         out += result ? "<tr><td style=\"background-color:#fff3c4\"><b>" : "<tr><td>";
-        out += markupToHtml(q.symbol.in(language)) + " = " + escape(readable(q.value)) + (q.unit.empty() ? "" : " " + escape(q.unit));
+        out += markupToHtml(q.symbol.in(language)) + " = " + escape(readable(q.value, q.scale)) + (q.unit.empty() ? "" : " " + escape(q.unit));
         out += result ? "</b></td></tr>" : "</td></tr>";
     }
     return out;
@@ -171,6 +171,14 @@ std::string readable(double value)
     std::string s = buffer;
     if (!s.empty() && s[0] == '-') s = "−" + s.substr(1);
     return s;
+}
+
+std::string readable(double value, double scale)
+{
+    // (A component of a vector, or a difference of two near-equal numbers: 1e-12 is well below the
+    // 6 digits shown and well above a double's rounding of the size it belongs to.)
+    if (std::isfinite(value) && std::abs(value) <= 1e-12 * std::abs(scale)) return "0";
+    return readable(value);
 }
 
 std::string markupToHtml(const std::string& m)

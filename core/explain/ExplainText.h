@@ -16,6 +16,9 @@ std::string eventNumber(int index);
 
 // A number for people: 6 significant digits ("0.292614", "1.2e-07"), "∞" for infinity.
 std::string readable(double value);
+// The same for a value that belongs to something of size `scale` (Quantity::scale): within 1e-12 of
+// it the value is rounding noise and reads "0".
+std::string readable(double value, double scale);
 
 // Markup -> HTML (escaped, <sub>/<sup>) and -> plain Unicode text.
 std::string markupToHtml(const std::string& markup);

@@ -27,6 +27,10 @@ struct Quantity {
     Text symbol;         // markup for people: "v_{a,x}", "P_n", "μ_b" (a word, such as "steps", translated)
     double value = 0.0;
     std::string unit;    // "m/s", "N s", "" for a pure number
+    // The size of what the value is compared with (a vector's length for its components, the
+    // energy before for a change of energy): a value within 1e-12 of it is rounding noise, which a
+    // person reads as 0 (JSON keeps the exact value). 0: the value alone.
+    double scale = 0.0;
 };
 
 struct Step {
@@ -52,11 +56,13 @@ struct ToiRoot {
 // f(tau) = c0 + c1 tau + ... + c4 tau^4, tau = t - t0: the gap function whose root is the contact.
 struct TimeOfImpact {
     Text gap;                          // markup: what f measures
+    std::string unit = "m²";           // f's unit (a squared distance, or a distance: "m")
     double t0 = 0.0;                   // s, the common start of the bodies' present closed-form paths
     std::vector<double> coefficients;  // c0, c1, ... lowest degree first, trailing zeros dropped
     double horizon = 0.0;              // s from t0: where the paths end (the next transition); may be inf
     double root = 0.0;                 // s, the chosen tau: t0 + root is the event time
     bool touching = false;             // the bodies touched at t0 and approached: contact at tau = 0
+    bool rootOfF = true;               // the chosen tau is a root of f (not: touching, or a segment's end)
     std::vector<ToiRoot> roots;        // every real root, ascending
     Text why;                          // why this root, in words
 

@@ -25,20 +25,29 @@ SegmentBefore segmentEndingAt(const SimulationResult& r, int ball, double t, dou
     const std::vector<MotionSegment>& timeline = r.timelines.at(static_cast<std::size_t>(ball));
     std::size_t k = 0;
     for (std::size_t q = 0; q < timeline.size() && timeline[q].start < t; ++q) k = q;
+    // (Of micro-bounces a few picoseconds apart, several flights land within the tolerance: the one
+    // that lands nearest t at a speed nearest w, the latest of equals.)
+    double best = kNever;
     for (std::size_t q = w > 0.0 ? timeline.size() : 0; q-- > 0;) {
         const MotionSegment& m = timeline[q];
         if (m.start > t || m.bounces || m.state.motion != MotionState::Airborne) continue;
-        const double landing = landingSpeed(m.state, g);
-        const double lands = m.start + landingTime(m.state, g);
+        // (A flight held against a ball falls with g less its push's vertical part, Flight.h.)
+        const double fall = g - m.pushZ;
+        const double landing = landingSpeed(m.state, fall);
+        const double lands = m.start + landingTime(m.state, fall);
         if (std::abs(landing - w) <= 1e-9 * std::max(1.0, w) && std::abs(lands - t) <= 1e-9 * std::max(1.0, t)) {
-            k = q;
-            break;
+            const double miss = std::abs(lands - t) + std::abs(landing - w) / g;  // s
+            if (miss < best) {
+                best = miss;
+                k = q;
+            }
         }
     }
     SegmentBefore s;
     s.start = timeline.at(k).start;
     s.state = timeline[k].state;
     s.push = timeline[k].push;
+    s.pushZ = timeline[k].pushZ;
     s.end = t;
     return s;
 }
@@ -47,13 +56,21 @@ SegmentBefore segmentEndingAt(const SimulationResult& r, int ball, double t, dou
 // segment, landing at the positive root (the simulator's landing time, Flight.h).
 void addLandingStep(Explanation& e, const SegmentBefore& seg, double g)
 {
-    // (The simulator's own closed forms, Flight.h.)
+    // (The simulator's own closed forms, Flight.h; a flight held against a ball falls with g less its
+    // push's vertical part q_z.)
+    const bool held = seg.pushZ != 0.0;
+    g -= seg.pushZ;
     const double z0 = seg.state.z, vz0 = seg.state.vz;
     const double w = landingSpeed(seg.state, g);
     const double tau = landingTime(seg.state, g);
     const double apex = apexHeight(seg.state, g);
     StepBuilder(e.steps, Text::tr("Why now: the flight lands"),
-                Text::tr("Since t_{start} the ball has flown free: gravity alone acts on it (no cloth, so no friction "
+                held ? Text::tr("Since t_{start} the ball has flown held against a ball it presses on: besides gravity the "
+                                "contact force's vertical part q_z per unit mass holds it up, so it falls with g − q_z "
+                                "(written g below), and its centre's height above its resting height is a parabola in "
+                                "τ = t − t_{start}. It lands when the height is 0 again: the positive root of that "
+                                "quadratic.")
+                     : Text::tr("Since t_{start} the ball has flown free: gravity alone acts on it (no cloth, so no friction "
                          "and no rolling resistance; its spin does not change), so its centre's height above its "
                          "resting height is a parabola in τ = t − t_{start}. It lands when the height is 0 again: "
                          "the positive root of that quadratic. It is highest at τ = v_{z,0}/g when it starts upwards."),

@@ -2,6 +2,8 @@
 // Pieces shared by the event explainers (internal to core/explain).
 
 #include "Explain.h"
+#include "Flight.h"
+#include "Quartic.h"
 #include "StepBuilder.h"
 
 #include <string>
@@ -14,6 +16,9 @@ Body makeBody(const SimulationResult& r, int ball, const BallState& before, cons
 // "Motion up to the event": the closed-form state at the event from the segment's start.
 void addMotionStep(std::vector<Step>& steps, const SimulationResult& r, int ball, const std::string& letter,
                    const SegmentBefore& seg, double t);
+// The same for a flying ball: its parabola in space (Flight.h), free or held against a ball.
+void addFlightStep(std::vector<Step>& steps, const SimulationResult& r, int ball, const std::string& letter,
+                   const SegmentBefore& seg, double t);
 // Energy (translation, rotation) and momentum of the bodies before and after.
 void addEnergyStep(Explanation& e, const Text& where);
 void addMomentumStep(Explanation& e, const Text& law);
@@ -22,6 +27,19 @@ void addMomentumStep(Explanation& e, const Text& law);
 // detection functions over the bodies' present closed-form paths.
 TimeOfImpact timeOfImpact(const SimulationResult& r, int index);
 void addToiStep(Explanation& e, const Text& law);
+
+// A flying ball's collisions (AirToi.cpp, AirBallBallExplain.cpp): the centre's path in space over
+// its segment, the time of impact in space, the roots of a gap polynomial listed with the chosen one
+// (`late`: the event's τ; `chosen` kNever when the detection from t0 does not find it), and the
+// momentum in space with the cloth's impulse `cloth` (the only outside impulse in an instant).
+SpacePath spacePathOf(const SimulationResult& r, int ball, const SegmentBefore& seg);
+void chooseRoots(TimeOfImpact& toi, const Quartic& q, double chosen, double late, bool& touchingNow);
+TimeOfImpact airBallBallToi(const SimulationResult& r, int index);
+// The sentence for an event whose states after agree with its law's to rounding only.
+Text roundedNormal();
+void explainAirBallBall(const SimulationResult& r, int index, Explanation& e);
+void explainAirCushion(const SimulationResult& r, int index, Explanation& e);  // AirCushionExplain.cpp
+void addSpaceMomentumStep(Explanation& e, const Text& law, const std::string& key, const std::string& symbol, const Vec3& outside);
 
 void explainCueStrike(const SimulationResult& r, int index, const std::optional<CueStrike>& shot, Explanation& e);
 void explainBallBall(const SimulationResult& r, int index, Explanation& e);

@@ -21,35 +21,36 @@ public:
     StepBuilder(const StepBuilder&) = delete;
     StepBuilder& operator=(const StepBuilder&) = delete;
 
-    StepBuilder& in(std::string key, Text symbol, double value, std::string unit = {})
+    StepBuilder& in(std::string key, Text symbol, double value, std::string unit = {}, double scale = 0.0)
     {
-        step_.inputs.push_back({std::move(key), std::move(symbol), value, std::move(unit)});
+        step_.inputs.push_back({std::move(key), std::move(symbol), value, std::move(unit), scale});
         return *this;
     }
-    StepBuilder& out(std::string key, Text symbol, double value, std::string unit = {})
+    StepBuilder& out(std::string key, Text symbol, double value, std::string unit = {}, double scale = 0.0)
     {
-        step_.results.push_back({std::move(key), std::move(symbol), value, std::move(unit)});
+        step_.results.push_back({std::move(key), std::move(symbol), value, std::move(unit), scale});
         return *this;
     }
-    // A vector: its components as key_x, key_y (, key_z), symbols "sym_{x}" or "sym_{sub,x}".
+    // A vector: its components as key_x, key_y (, key_z), symbols "sym_{x}" or "sym_{sub,x}"; each
+    // compared with the vector's length (Quantity::scale).
     StepBuilder& in(const std::string& key, const std::string& symbol, const Vec2& v, const std::string& unit)
     {
-        for (int k = 0; k < 2; ++k) in(key + axis(k), component(symbol, k), v[k], unit);
+        for (int k = 0; k < 2; ++k) in(key + axis(k), component(symbol, k), v[k], unit, v.norm());
         return *this;
     }
     StepBuilder& in(const std::string& key, const std::string& symbol, const Vec3& v, const std::string& unit)
     {
-        for (int k = 0; k < 3; ++k) in(key + axis(k), component(symbol, k), v[k], unit);
+        for (int k = 0; k < 3; ++k) in(key + axis(k), component(symbol, k), v[k], unit, v.norm());
         return *this;
     }
     StepBuilder& out(const std::string& key, const std::string& symbol, const Vec2& v, const std::string& unit)
     {
-        for (int k = 0; k < 2; ++k) out(key + axis(k), component(symbol, k), v[k], unit);
+        for (int k = 0; k < 2; ++k) out(key + axis(k), component(symbol, k), v[k], unit, v.norm());
         return *this;
     }
     StepBuilder& out(const std::string& key, const std::string& symbol, const Vec3& v, const std::string& unit)
     {
-        for (int k = 0; k < 3; ++k) out(key + axis(k), component(symbol, k), v[k], unit);
+        for (int k = 0; k < 3; ++k) out(key + axis(k), component(symbol, k), v[k], unit, v.norm());
         return *this;
     }
     Step& step() { return step_; }

@@ -55,8 +55,10 @@ std::string Text::in(const Lookup& lookup) const
         std::string out;
         bool first = true;
         for (const Text& part : args_) {
+            const std::string words = part.in(lookup);
+            if (words.empty()) continue;  // (an optional sentence left out)
             if (!first) out += source_;
-            out += part.in(lookup);
+            out += words;
             first = false;
         }
         return out;

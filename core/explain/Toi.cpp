@@ -72,6 +72,7 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
         q = cushionGap(p.a, Ra, *segment);
         chosen = cushionTime(p.a, Ra, *segment, horizon);
         toi.gap = Text::tr("f(τ) = (r(t_0+τ) − p_a)·N − R   (signed distance of the centre from the cushion line, minus R)");
+        toi.unit = "m";
         break;
     }
     case EventKind::BallJaw: {
@@ -118,7 +119,10 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
     }
     // A contact the simulator held when it solved a group again, touching at that instant (within
     // kContactTolerance), is the event's contact then, whatever the old path's roots say.
-    if (!touchingNow && late > 0.0 && ev.held && ev.grouped && chosen != late) {
+    // (Also at t0 itself, when the held group's solve began the bodies' segments at the event: a pair
+    // pressed together that the detection from t0 sees parting by a rounding.)
+    if (!touchingNow && late >= 0.0 &&
+        (chosen == kNever || std::abs(chosen - late) > 1e-9 * std::max(1.0, std::abs(ev.time)))) {
         double f = 0.0;  // the gap polynomial at the event (highest degree first)
         for (double c : q) f = f * late + c;
         double D = 0.0;  // the touching distance, for f = |d|^2 - D^2 = 2 D gap + gap^2
@@ -141,6 +145,12 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
                 best = std::abs(roots[static_cast<std::size_t>(k)] - (ev.time - p.t0));
                 chosen = roots[static_cast<std::size_t>(k)];
             }
+        // No root there: the simulator met the bodies touching at the event (a group's contact, a
+        // rounding's overlap that neither approaches nor parts), which is no root of f.
+        if (!(best <= 1e-9 * std::max(1.0, std::abs(ev.time)))) {
+            chosen = ev.time - p.t0;
+            touchingNow = true;
+        }
     }
     // The root finders of solveQuartic and of the detection may round a root differently: the root
     // the detection chose is the nearest one, and it keeps the detection's value.
@@ -162,6 +172,7 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
         toi.roots.push_back(root);
     }
     if (nearest < 0) {
+        toi.rootOfF = false;
         ToiRoot root;
         root.tau = chosen;
         root.inWindow = true;
@@ -173,9 +184,16 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
     toi.root = chosen;
     toi.touching = touchingNow;
     if (touchingNow && chosen > 0.0)
-        toi.why = Text::tr("The bodies were touching at the event (within 10^{−10} m) and pressed together, found "
-                           "when a group of held contacts was solved again then: the contact begins at that instant, "
-                           "not at a root of f (Detection.h, resting contact).");
+        toi.why = Text::tr("The bodies were touching at the event (within 10^{−10} m), grazing, approaching or pressed "
+                           "together (a group of held contacts solved again then): the contact begins at that instant, "
+                           "not at a root of f.");
+    else if (!touchingNow && nearest < 0 && segment)
+        toi.why = Text::tr("The ball was already touching the cushion's line, beyond the end of this segment, and "
+                           "closing in: the contact begins where the foot of the perpendicular from its centre enters "
+                           "the segment through its end (λ = 0 or 1), not at a root of f.");
+    else if (!touchingNow && nearest < 0)
+        toi.why = Text::tr("The simulator met this contact from a later instant of the paths: the same polynomial, "
+                           "written from t_0, rounds its root a little differently. τ* is the event's own time.");
     else if (touchingNow)
         toi.why = ev.kind == EventKind::BallPocket
                       ? Text::tr("The centre was already over the pocket at t_0: the ball drops at once (τ = 0).")
@@ -202,14 +220,25 @@ void addToiStep(Explanation& e, const Text& law)
         if (k >= 2) formula += "^" + std::to_string(k);
         if (k > 0) formula += " + ";
     }
-    StepBuilder b(e.steps, Text::tr("Why now: the time of impact"), Text::join({law, toi.why}, " "),
+    // The degree and the real roots of this very f (a leading coefficient may vanish: two flying
+    // balls, a cushion's line).
+    const int degree = static_cast<int>(toi.coefficients.size()) - 1;
+    const int real = static_cast<int>(toi.roots.size()) - (toi.rootOfF ? 0 : 1);
+    const Text degreeWords = degree == 1   ? Text::tr("Here f is linear in τ (degree 1)")
+                             : degree == 2 ? Text::tr("Here f is a quadratic in τ (degree 2)")
+                             : degree == 3 ? Text::tr("Here f is a cubic in τ (degree 3)")
+                             : degree == 4 ? Text::tr("Here f is a quartic in τ (degree 4)")
+                                           : Text::tr("Here f is constant");
+    const Text rootWords = real == 0   ? Text::tr("%1, with no real root.").arg(degreeWords)
+                           : real == 1 ? Text::tr("%1, with one real root.").arg(degreeWords)
+                                       : Text::tr("%1, with %2 real roots.").arg(degreeWords).arg(std::to_string(real));
+    StepBuilder b(e.steps, Text::tr("Why now: the time of impact"), Text::join({law, rootWords, toi.why}, " "),
                   Text::join({toi.gap, formula}, ""));
     b.in("t0", "t_0", toi.t0, "s");
-    const char* units[] = {"m²", "m²/s", "m²/s²", "m²/s³", "m²/s⁴"};
-    const bool linear = e.kind == EventKind::BallCushion;
-    const char* linearUnits[] = {"m", "m/s", "m/s²"};
-    for (std::size_t k = 0; k < toi.coefficients.size(); ++k)
-        b.in("c" + std::to_string(k), "c_" + std::to_string(k), toi.coefficients[k], linear ? linearUnits[k] : units[k]);
+    // c_k has f's unit over s^k.
+    const char* perSecond[] = {"", "/s", "/s²", "/s³", "/s⁴"};
+    for (std::size_t k = 0; k < toi.coefficients.size() && k < std::size(perSecond); ++k)
+        b.in("c" + std::to_string(k), "c_" + std::to_string(k), toi.coefficients[k], toi.unit + perSecond[k]);
     b.in("H", "H", toi.horizon, "s");
     int index = 0;
     for (const ToiRoot& root : toi.roots) {

@@ -20,7 +20,7 @@ void explainTransition(const SimulationResult& r, int index, Explanation& e)
     if (pushed && seg.state.motion == MotionState::Sliding) {
         const Vec2 u0 = slipVelocity(seg.state, ball.radius);
         StepBuilder(e.steps, Text::tr("Why now: the pushed slide ends"),
-                    Text::tr("The ball is held in a push (Contact.h): besides the cloth's friction −μ_s g û a contact "
+                    Text::tr("The ball is held in a push: besides the cloth's friction −μ_s g û a contact "
                              "force q = N/m acts through its centre, so its slip changes at q − (7/2) μ_s g û and its "
                              "component along û reaches zero after t_s."),
                     "t_s = |u_0| / ((7/2) μ_s g − q·û)")
@@ -33,7 +33,7 @@ void explainTransition(const SimulationResult& r, int index, Explanation& e)
             .out("t", "t = t_{start} + t_s", seg.start + duration, "s");
     } else if (pushed && seg.state.motion == MotionState::Rolling) {
         StepBuilder(e.steps, Text::tr("Why now: the pushed ball stops rolling"),
-                    Text::tr("The ball is held in a push (Contact.h) and rolls under the contact force q = N/m with the "
+                    Text::tr("The ball is held in a push and rolls under the contact force q = N/m with the "
                              "effective mass 7/5 m: its speed changes at (5/7) q·v̂ − μ_r g and reaches zero after t_r."),
                     "t_r = |v_0| / (μ_r g − (5/7) q·v̂)")
             .in("t_start", "t_{start}", seg.start, "s")

@@ -1,4 +1,5 @@
 #include "AirImpacts.h"
+#include "AirImpactsTrace.h"
 
 #include "Contact.h"
 
@@ -27,7 +28,8 @@ Vec3 centre3(const AirState& s, double radius) { return Vec3(s.position.x(), s.p
 // it again and again at one instant (seed7-shot386: vz = 1.4e-7 m/s; seed7-shot11298: a cluster
 // struck by a ball on a 0.1 mm hop, the struck ball bouncing 1.2e-7 m and its neighbours thrown up
 // by micrometres a second by the laws' friction). As the hold rule takes a micro-bounce on the cloth.
-void clothAnswers(AirState& s, double radius, double mass, const PhysicsParams& p, bool& bounced, TableImpactResult& bounce)
+void clothAnswers(AirState& s, double radius, double mass, const PhysicsParams& p, bool& bounced, TableImpactResult& bounce,
+                  bool& kept)
 {
     const double keep = 2.0 * p.gravity * kHeldGap;  // vz^2 of a hop of kHeldGap
     if (s.z <= kHeightTolerance && s.vz < 0.0) {
@@ -35,11 +37,13 @@ void clothAnswers(AirState& s, double radius, double mass, const PhysicsParams& 
         bounce = resolveTableImpact(s, radius, mass, p);
         s = bounce.after;
         if (s.vz > 0.0 && s.vz * s.vz <= keep) {
+            kept = true;
             s.z = 0.0;
             s.vz = 0.0;
             s.motion = classify(s, radius);
         }
     } else if (s.z <= kHeightTolerance && s.vz > 0.0 && s.vz * s.vz <= keep) {
+        kept = true;
         s.z = 0.0;
         s.vz = 0.0;
         s.motion = classify(s, radius);
@@ -51,11 +55,24 @@ void clothAnswers(AirState& s, double radius, double mass, const PhysicsParams& 
 FixedImpactResult resolveFixedImpact(const AirState& before, double radius, double mass, const Vec3& normal,
                                      double restitution, double friction)
 {
+    return resolveFixedImpact(before, radius, mass, normal, restitution, friction, nullptr);
+}
+
+AirBallBallResult resolveAirBallBall(const AirState& a, double ra, double ma, const AirState& b, double rb, double mb,
+                                     const PhysicsParams& p)
+{
+    return resolveAirBallBall(a, ra, ma, b, rb, mb, p, nullptr);
+}
+
+FixedImpactResult resolveFixedImpact(const AirState& before, double radius, double mass, const Vec3& normal,
+                                     double restitution, double friction, FixedImpactTrace* trace)
+{
     FixedImpactResult r;
     r.after = before;
     const Vec3 v = velocity3(before);
     const double vn = v.dot(normal);
     r.approachSpeed = -vn;
+    if (trace) *trace = FixedImpactTrace{v};
     if (vn < 0.0) {
         const double pn = -(1.0 + restitution) * mass * vn;  // N s
         const Vec3 q = -radius * normal;                      // m, the contact from the centre
@@ -71,6 +88,15 @@ FixedImpactResult resolveFixedImpact(const AirState& before, double radius, doub
             pt = -(std::min(stopping, limit) / slipSpeed) * slip;
         }
         r.impulse = pn * normal + pt;
+        if (trace) {
+            trace->normalImpulse = pn;
+            trace->contactOffset = q;
+            trace->contactVelocity = contact;
+            trace->slip = slip;
+            trace->stopping = (2.0 / 7.0) * mass * slipSpeed;
+            trace->limit = std::max(0.0, friction) * pn;
+            trace->tangentialImpulse = pt;
+        }
         setVelocity3(r.after, v + r.impulse / mass);
         r.after.spin = before.spin + q.cross(pt) / ballInertia(mass, radius);
     }
@@ -79,7 +105,7 @@ FixedImpactResult resolveFixedImpact(const AirState& before, double radius, doub
 }
 
 AirBallBallResult resolveAirBallBall(const AirState& a, double ra, double ma, const AirState& b, double rb, double mb,
-                                     const PhysicsParams& p)
+                                     const PhysicsParams& p, AirBallBallTrace* trace)
 {
     AirBallBallResult r;
     r.a = a;
@@ -103,6 +129,14 @@ AirBallBallResult resolveAirBallBall(const AirState& a, double ra, double ma, co
             const double stopping = slipSpeed / (3.5 * invMass);
             const double magnitude = std::min(ballBallFriction(p, slipSpeed) * pn, stopping);
             tangential = -(magnitude / slipSpeed) * slip;
+            if (trace) {
+                trace->mu = ballBallFriction(p, slipSpeed);
+                trace->stopping = stopping;
+            }
+        }
+        if (trace) {
+            trace->frictional = true;
+            trace->slip = slip;
         }
     }
     onA += tangential;
@@ -113,8 +147,22 @@ AirBallBallResult resolveAirBallBall(const AirState& a, double ra, double ma, co
     r.b.spin += (rb * n).cross(tangential) / ballInertia(mb, rb);
     r.a.motion = classify(r.a, ra);
     r.b.motion = classify(r.b, rb);
-    clothAnswers(r.a, ra, ma, p, r.aBounced, r.aBounce);
-    clothAnswers(r.b, rb, mb, p, r.bBounced, r.bBounce);
+    bool aKept = false, bKept = false;
+    if (trace) {
+        trace->va = va;
+        trace->vb = vb;
+        trace->inverseMass = invMass;
+        trace->normalImpulse = pn;
+        trace->tangentialImpulse = tangential;
+        trace->aLaw = r.a;
+        trace->bLaw = r.b;
+    }
+    clothAnswers(r.a, ra, ma, p, r.aBounced, r.aBounce, aKept);
+    clothAnswers(r.b, rb, mb, p, r.bBounced, r.bBounce, bKept);
+    if (trace) {
+        trace->aKept = aKept;
+        trace->bKept = bKept;
+    }
     return r;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Impacts of flying balls in 3-D: against a fixed body along any normal (a cushion's nose edge or
 // face, the cloth), and between two balls whose line of centres is tilted (PHYSICS.md, "Airborne
-// balls"). Building blocks for docs/airborne.md's wiring; the simulator does not use them yet.
+// balls"). The simulator's laws for a flying ball's collisions (AirCollisions.cpp); AirImpactsTrace.h
+// gives the explanation (core/explain) their intermediate numbers.
 //
 // Both are single impulses at the contact point with Newton's restitution along the normal and
 // Coulomb friction that never more than stops the tangential slip, so neither adds energy

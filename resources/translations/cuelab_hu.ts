@@ -5127,10 +5127,6 @@ Kimaradt kérdés: %1</translation>
         <translation>t_{start} óta a(z) %1 golyó %2: zárt alakban a középpontja parabolán mozog, állandó −μ_r g v̂ gyorsulással (gördülési ellenállás).</translation>
     </message>
     <message>
-        <source>Since t_{start} %1 has been %2: in closed form its centre moves on a parabola with constant acceleration zero (it does not move).</source>
-        <translation>t_{start} óta a(z) %1 golyó %2: zárt alakban a középpontja parabolán mozog, nulla gyorsulással (nem mozdul).</translation>
-    </message>
-    <message>
         <source>Motion of %1 up to the event</source>
         <translation>A(z) %1 golyó mozgása az eseményig</translation>
     </message>
@@ -5195,10 +5191,6 @@ Kimaradt kérdés: %1</translation>
         <translation>Lyukba esés: %1 golyó – %2</translation>
     </message>
     <message>
-        <source>The ball drops when its centre enters the pocket circle (centre c, radius r_{pocket}): a quartic in τ.</source>
-        <translation>A golyó akkor esik be, amikor középpontja belép a lyuk körébe (középpontja c, sugara r_{pocket}): ez τ negyedfokú polinomja.</translation>
-    </message>
-    <message>
         <source>Off the table</source>
         <translation>Le az asztalról</translation>
     </message>
@@ -5243,16 +5235,16 @@ Kimaradt kérdés: %1</translation>
         <translation>Miért éppen most: véget ér a tolt csúszás</translation>
     </message>
     <message>
-        <source>The ball is held in a push (Contact.h): besides the cloth&apos;s friction −μ_s g û a contact force q = N/m acts through its centre, so its slip changes at q − (7/2) μ_s g û and its component along û reaches zero after t_s.</source>
-        <translation>A golyó tartós érintkezésben (tolásban) van (Contact.h): a posztó −μ_s g û súrlódása mellett egy q = N/m érintkezési erő is hat a középpontján át, így csúszása q − (7/2) μ_s g û ütemben változik, û irányú összetevője pedig t_s idő alatt nullára csökken.</translation>
+        <source>The ball is held in a push: besides the cloth&apos;s friction −μ_s g û a contact force q = N/m acts through its centre, so its slip changes at q − (7/2) μ_s g û and its component along û reaches zero after t_s.</source>
+        <translation>A golyó tartós érintkezésben (tolásban) van: a posztó −μ_s g û súrlódása mellett egy q = N/m érintkezési erő is hat a középpontján át, így csúszása q − (7/2) μ_s g û ütemben változik, û irányú összetevője pedig t_s idő alatt nullára csökken.</translation>
     </message>
     <message>
         <source>Why now: the pushed ball stops rolling</source>
         <translation>Miért éppen most: a tolt golyó gördülése megáll</translation>
     </message>
     <message>
-        <source>The ball is held in a push (Contact.h) and rolls under the contact force q = N/m with the effective mass 7/5 m: its speed changes at (5/7) q·v̂ − μ_r g and reaches zero after t_r.</source>
-        <translation>A golyó tartós érintkezésben (tolásban) van (Contact.h), és a q = N/m érintkezési erő alatt 7/5 m effektív tömeggel gördül: sebessége (5/7) q·v̂ − μ_r g ütemben változik, és t_r idő alatt nullára csökken.</translation>
+        <source>The ball is held in a push and rolls under the contact force q = N/m with the effective mass 7/5 m: its speed changes at (5/7) q·v̂ − μ_r g and reaches zero after t_r.</source>
+        <translation>A golyó tartós érintkezésben (tolásban) van, és a q = N/m érintkezési erő alatt 7/5 m effektív tömeggel gördül: sebessége (5/7) q·v̂ − μ_r g ütemben változik, és t_r idő alatt nullára csökken.</translation>
     </message>
     <message>
         <source>Why now: the end of the slide</source>
@@ -5635,20 +5627,16 @@ Kimaradt kérdés: %1</translation>
         <translation>A φ vágási szög az a golyó d pályája (a sebessége) és n között mérhető: 0° telitalálat, 30° félgolyós találat; az f = 1 − sin φ golyóhányad azt adja meg, hogy a pályája mentén nézve a golyó b mekkora részét takarja (1 teli, 0,5 fél, 0 súrolás).</translation>
     </message>
     <message>
-        <source>The law above leaves the balls parting slower than %1 m/s while the contact forces press them together (the cloth&apos;s friction closes the gap faster than their turning about each other, |v_t|²/d, opens it): they would only chatter, ever more weakly, into a lasting contact. The simulator drops that micro-bounce (a normal impulse ΔP takes the separation speed away, which only removes energy) and holds the pair: from here a contact force N ≥ 0 pushes along n, solved with the cloth&apos;s friction (Contact.h). Each ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling; the cloth takes the rest), 0 at rest.</source>
-        <translation>A fenti törvény után a golyók %1 m/s-nál lassabban távolodnak, miközben az érintkezési erők egymáshoz nyomják őket (a posztó súrlódása gyorsabban zárja a rést, mint ahogy egymás körüli fordulásuk, |v_t|²/d, nyitja): csak egyre gyengülő pattogással jutnának tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú ΔP erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a párt együtt tartja: innentől egy N ≥ 0 érintkezési erő nyom n mentén, a posztó súrlódásával együtt megoldva (Contact.h). Az erőlökést minden golyó egyetlen szabály szerint veszi fel: c = 1 csúszva, 5/7 gurulva (tovább gurul; a többit a posztó veszi fel), 0 nyugalomban.</translation>
+        <source>The law above leaves the balls parting slower than %1 m/s while the contact forces press them together (the cloth&apos;s friction closes the gap faster than their turning about each other, |v_t|²/d, opens it): they would only chatter, ever more weakly, into a lasting contact. The simulator drops that micro-bounce (a normal impulse ΔP takes the separation speed away, which only removes energy) and holds the pair: from here a contact force N ≥ 0 pushes along n, solved with the cloth&apos;s friction. Each ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling; the cloth takes the rest), 0 at rest.</source>
+        <translation>A fenti törvény után a golyók %1 m/s-nál lassabban távolodnak, miközben az érintkezési erők egymáshoz nyomják őket (a posztó súrlódása gyorsabban zárja a rést, mint ahogy egymás körüli fordulásuk, |v_t|²/d, nyitja): csak egyre gyengülő pattogással jutnának tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú ΔP erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a párt együtt tartja: innentől egy N ≥ 0 érintkezési erő nyom n mentén, a posztó súrlódásával együtt megoldva. Az erőlökést minden golyó egyetlen szabály szerint veszi fel: c = 1 csúszva, 5/7 gurulva (tovább gurul; a többit a posztó veszi fel), 0 nyugalomban.</translation>
     </message>
     <message>
-        <source>The law above leaves the ball leaving the cushion slower than %1 m/s while the contact force presses it in: it would only chatter into a lasting contact. The simulator drops that micro-bounce (a normal impulse ΔP takes the separation speed away, which only removes energy) and holds the ball against the cushion: from here the cushion&apos;s force N ≥ 0 pushes along N (Contact.h). The ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling), 0 at rest.</source>
-        <translation>A fenti törvény után a golyó %1 m/s-nál lassabban távolodik a mantineltől, miközben az érintkezési erő visszanyomja: csak pattogva jutna tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú ΔP erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a golyót a mantinelhez szorítva tartja: innentől a mantinel N ≥ 0 ereje nyom N mentén (Contact.h). Az erőlökést a golyó egyetlen szabály szerint veszi fel: c = 1 csúszva, 5/7 gurulva (tovább gurul), 0 nyugalomban.</translation>
+        <source>The law above leaves the ball leaving the cushion slower than %1 m/s while the contact force presses it in: it would only chatter into a lasting contact. The simulator drops that micro-bounce (a normal impulse ΔP takes the separation speed away, which only removes energy) and holds the ball against the cushion: from here the cushion&apos;s force N ≥ 0 pushes along N. The ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling), 0 at rest.</source>
+        <translation>A fenti törvény után a golyó %1 m/s-nál lassabban távolodik a mantineltől, miközben az érintkezési erő visszanyomja: csak pattogva jutna tartós érintkezésbe. A szimulátor ezt a mikropattogást elhagyja (egy normális irányú ΔP erőlökés elveszi a szétválási sebességet, ami csak energiát von el), és a golyót a mantinelhez szorítva tartja: innentől a mantinel N ≥ 0 ereje nyom N mentén. Az erőlökést a golyó egyetlen szabály szerint veszi fel: c = 1 csúszva, 5/7 gurulva (tovább gurul), 0 nyugalomban.</translation>
     </message>
     <message>
         <source>In the frame of the pair&apos;s centre of mass, which moves at V = P / (m_a + m_b), the momenta p* = m (v − V) are equal and opposite before and after; an elastic, frictionless collision only turns them.</source>
         <translation>A pár V = P / (m_a + m_b) sebességgel mozgó tömegközépponti rendszerében a p* = m (v − V) lendületek ütközés előtt és után is egyenlő nagyok és ellentétesek; egy rugalmas, súrlódásmentes ütközés csak elforgatja őket.</translation>
-    </message>
-    <message>
-        <source>The bodies were touching at the event (within 10^{−10} m) and pressed together, found when a group of held contacts was solved again then: the contact begins at that instant, not at a root of f (Detection.h, resting contact).</source>
-        <translation>A testek az eseménykor érintkeztek (10^{−10} m-en belül) és egymásnak nyomódtak; ez akkor derült ki, amikor a szimulátor egy tartott érintkezésekből álló csoportot újra megoldott: az érintkezés abban a pillanatban kezdődik, nem f egy gyökénél (Detection.h, nyugvó érintkezés).</translation>
     </message>
     <message>
         <source>The vertical part: into the cloth</source>
@@ -5761,6 +5749,330 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>The cloth stops the ball&apos;s fall: this bounce and all the ones after it, too short for the clock to tell apart, are taken at once. Together they change the vertical momentum by P_n = m w (the cloth&apos;s impulses, (1 + e_t)/(1 − e_t) m w in all, less gravity&apos;s over their time), and their friction on the slip u = v + R (z × ω) of the contact point adds up to at most μ_t (1 + e_t)/(1 − e_t) m w (the slip stops first if it is small: then 2/7 m |u| is enough). The friction P_t changes v by P_t/m and ω by R (−z × P_t)/I, I = 2/5 m R².</source>
         <translation>A posztó megállítja a golyó esését: ezt a pattanást és az összes utána következőt, amelyeket az óra már nem tud szétválasztani, egyszerre veszi. Együtt P_n = m w-vel változtatják meg a függőleges lendületet (a posztó impulzusai összesen (1 + e_t)/(1 − e_t) m w, ebből levonva a gravitációé az idejük alatt), súrlódásuk pedig az érintkezési pont u = v + R (z × ω) csúszására összesen legfeljebb μ_t (1 + e_t)/(1 − e_t) m w (ha a csúszás kicsi, előbb megáll: ehhez 2/7 m |u| elég). A P_t súrlódás v-t P_t/m-mel, ω-t R (−z × P_t)/I-vel változtatja meg, I = 2/5 m R².</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been %2: it turns on the spot about the vertical, and its centre does not move (v = 0, a = 0).</source>
+        <translation>t_{start} óta a(z) %1 golyó %2: helyben forog a függőleges tengely körül, a középpontja nem mozdul (v = 0, a = 0).</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been %2: its centre does not move (v = 0, a = 0).</source>
+        <translation>t_{start} óta a(z) %1 golyó %2: a középpontja nem mozdul (v = 0, a = 0).</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been in the air, held against a ball it presses on: besides gravity the contact force per unit mass q acts on it, constant over the segment, so its centre moves on a parabola in space with the constant acceleration a = q − g z; its spin does not change (no cloth, no friction).</source>
+        <translation>t_{start} óta a(z) %1 golyó a levegőben van, és egy golyóhoz szorul, amelyre ránehezedik: a gravitáció mellett az egységnyi tömegre jutó q érintkezési erő is hat rá, amely a szakaszon állandó, így középpontja a térben parabolán mozog, állandó a = q − g z gyorsulással; a pörgése nem változik (nincs posztó, nincs súrlódás).</translation>
+    </message>
+    <message>
+        <source>Since t_{start} %1 has been in the air: gravity alone acts on it, so its centre moves on a parabola in space, uniformly across the table and falling with the constant acceleration g (a = −g z); its spin does not change (no cloth, no friction).</source>
+        <translation>t_{start} óta a(z) %1 golyó a levegőben van: csak a gravitáció hat rá, így középpontja a térben parabolán mozog, az asztal síkjában egyenletesen, függőlegesen állandó g gyorsulással esve (a = −g z); a pörgése nem változik (nincs posztó, nincs súrlódás).</translation>
+    </message>
+    <message>
+        <source>Ball-jaw collision of %1 with %2 in the air</source>
+        <translation>Golyó–pofa ütközés a levegőben: %1 golyó – %2</translation>
+    </message>
+    <message>
+        <source>Ball-cushion collision of %1 with %2 in the air</source>
+        <translation>Golyó–mantinel ütközés a levegőben: %1 golyó – %2</translation>
+    </message>
+    <message>
+        <source>the impact law of a flying ball</source>
+        <translation>a repülő golyó ütközési törvénye</translation>
+    </message>
+    <message>
+        <source>f(τ) = (r(t_0+τ) − p_a)·N − R   (the centre&apos;s distance from the cushion&apos;s face, minus R; the centre at or below the nose)</source>
+        <translation>f(τ) = (r(t_0+τ) − p_a)·N − R   (a középpont távolsága a mantinel homlokától, mínusz R; a középpont az él magasságában vagy alatta)</translation>
+    </message>
+    <message>
+        <source>f(τ) = n(τ)^2 + (z_c(τ) − h)^2 − R^2   (the squared distance of the centre from the nose edge, n its distance in front of the nose line, z_c its height, h the nose&apos;s)</source>
+        <translation>f(τ) = n(τ)^2 + (z_c(τ) − h)^2 − R^2   (a középpont és a mantinel éle közti távolság négyzete; n a középpont távolsága az él egyenese előtt, z_c a magassága, h az élé)</translation>
+    </message>
+    <message>
+        <source>f(τ) = |r(t_0+τ) − p_{end}|^2 − R^2   (the corner&apos;s vertical edge at the segment&apos;s end)</source>
+        <translation>f(τ) = |r(t_0+τ) − p_{end}|^2 − R^2   (a sarok függőleges éle a szakasz végén)</translation>
+    </message>
+    <message>
+        <source>f(τ) = |c(t_0+τ) − (p_{end}, h)|^2 − R^2   (the top corner at the segment&apos;s end, at the nose&apos;s height h)</source>
+        <translation>f(τ) = |c(t_0+τ) − (p_{end}, h)|^2 − R^2   (a felső sarok a szakasz végén, az él h magasságában)</translation>
+    </message>
+    <message>
+        <source>f(τ) = z_c(t_0+τ) − (h + R)   (the centre R above the jaw&apos;s flat top)</source>
+        <translation>f(τ) = z_c(t_0+τ) − (h + R)   (a középpont R-rel a pofa lapos teteje fölött)</translation>
+    </message>
+    <message>
+        <source>(ρ(τ) − r_{jaw})^2 + (z_c(τ) − h)^2 = R^2   (the centre R from the jaw&apos;s rim; ρ its horizontal distance from the tip&apos;s axis: of degree eight in τ)</source>
+        <translation>(ρ(τ) − r_{jaw})^2 + (z_c(τ) − h)^2 = R^2   (a középpont R-re van a pofa peremétől; ρ a vízszintes távolsága a pofa tengelyétől: τ-ban nyolcadfokú)</translation>
+    </message>
+    <message>
+        <source>The ball was already touching it (within 10^{−10} m) and approaching or pressed on it: the contact begins at that instant, not at a root of f.</source>
+        <translation>A golyó már érintette (10^{−10} m-en belül), és közeledett felé vagy rá volt szorulva: az érintkezés abban a pillanatban kezdődik, nem f egy gyökénél.</translation>
+    </message>
+    <message>
+        <source>τ* is the first instant in the flight at which the centre comes within R of the rim, approaching it.</source>
+        <translation>τ* a repülés első olyan pillanata, amikor a középpont a peremhez közeledve R távolságra kerül tőle.</translation>
+    </message>
+    <message>
+        <source>τ* is the smallest root in the flight 0 &lt; τ ≤ H at which f falls (the ball approaches) with the centre where this part of the body is met (in front of the nose line, on the segment, above or below the nose as the part says).</source>
+        <translation>τ* a 0 &lt; τ ≤ H repülés legkisebb olyan gyöke, ahol f csökken (a golyó közeledik), és a középpont ott van, ahol a testnek ezt a részét érheti (az él egyenese előtt, a szakasz mentén, az él fölött vagy alatt, ahogy az adott rész kívánja).</translation>
+    </message>
+    <message>
+        <source>The ball flies low enough to meet the cushion&apos;s face, below its nose.</source>
+        <translation>A golyó elég alacsonyan repül ahhoz, hogy a mantinel homlokát az éle alatt érje el.</translation>
+    </message>
+    <message>
+        <source>The ball comes down on the cushion&apos;s nose edge from above it.</source>
+        <translation>A golyó felülről érkezik a mantinel élére.</translation>
+    </message>
+    <message>
+        <source>Past the end of the segment, the ball meets the corner&apos;s vertical edge there.</source>
+        <translation>A szakasz végén túl a golyó az ottani sarok függőleges élét éri el.</translation>
+    </message>
+    <message>
+        <source>Past the end of the segment, the ball meets the top corner there, at the nose&apos;s height.</source>
+        <translation>A szakasz végén túl a golyó az ottani felső sarkot éri el, az él magasságában.</translation>
+    </message>
+    <message>
+        <source>The ball meets the jaw&apos;s side (a vertical cylinder of radius r_{jaw} up to the nose&apos;s height).</source>
+        <translation>A golyó a pofa oldalát éri el (egy r_{jaw} sugarú függőleges hengert az él magasságáig).</translation>
+    </message>
+    <message>
+        <source>The ball comes down on the jaw&apos;s flat top.</source>
+        <translation>A golyó a pofa lapos tetejére érkezik.</translation>
+    </message>
+    <message>
+        <source>The ball meets the jaw&apos;s rim, the circle where its side meets its top.</source>
+        <translation>A golyó a pofa peremét éri el: azt a kört, ahol az oldala a tetejével találkozik.</translation>
+    </message>
+    <message>
+        <source>Contact geometry in space</source>
+        <translation>Az érintkezés geometriája a térben</translation>
+    </message>
+    <message>
+        <source>The normal n points from the body&apos;s contact towards the ball&apos;s centre; the contact lies R behind the centre along −n (r_c is its place seen from above, N the direction of n&apos;s level part). The ball approaches when v·n &lt; 0.</source>
+        <translation>Az n normális a test érintkezési pontjától a golyó középpontja felé mutat; az érintkezési pont R-rel a középpont mögött van −n irányában (r_c a helye felülről nézve, N az n vízszintes részének iránya). A golyó közeledik, ha v·n &lt; 0.</translation>
+    </message>
+    <message>
+        <source>The contact is level with the centre: n_z = 0.</source>
+        <translation>Az érintkezési pont a középponttal egy magasságban van: n_z = 0.</translation>
+    </message>
+    <message>
+        <source>The impact</source>
+        <translation>Az ütközés</translation>
+    </message>
+    <message>
+        <source>A single impulse at the contact: Newton&apos;s restitution along n (the cushion&apos;s e), and friction against the slip u_t of the contact point across n, at most μ P_n and never more than stops it (any tangent of a solid sphere takes 7/2 of the impulse over m). The normal part acts through the centre; the friction also turns the ball by Q × P_t / I.</source>
+        <translation>Egyetlen impulzus az érintkezési pontban: Newton-féle restitúció n mentén (a mantinel e tényezőjével), és súrlódás az érintkezési pont n-re merőleges u_t csúszása ellen, legfeljebb μ P_n, és sosem több, mint ami megállítja (tömör gömb bármely érintőirányban az impulzus m-re jutó részének 7/2-szeresét veszi fel). A normális rész a középponton át hat; a súrlódás Q × P_t / I-vel meg is forgatja a golyót.</translation>
+    </message>
+    <message>
+        <source>v′ = v + J/m and ω′ = ω + Q × P_t / I: the states the simulation goes on from.</source>
+        <translation>v′ = v + J/m és ω′ = ω + Q × P_t / I: ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>The ball is pressed on the face by the balls it is held with: the face joins their group as a row, solved with the others, and the parting speed the law leaves is taken away. These are the states the simulation goes on from.</source>
+        <translation>A golyót azok a golyók szorítják a homlokhoz, amelyekkel tartósan érintkezik: a homlok sorként csatlakozik a csoportjukhoz, a többivel együtt oldjuk meg, és a törvény meghagyta távolodási sebességet elvesszük. Ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>The law leaves the ball parting slower than %1 m/s while gravity presses it on: it would bounce ever lower on the edge. It is held there instead, the rebound taken away (which only removes energy); from here a contact force N ≥ 0 along n holds it. These are the states the simulation goes on from.</source>
+        <translation>A törvény után a golyó %1 m/s-nál lassabban távolodna, miközben a gravitáció ránehezíti: egyre kisebbeket pattanna az élen. Ehelyett ott tartjuk, a visszapattanást elvéve (ez csak energiát von el); innentől egy n menti N ≥ 0 érintkezési erő tartja. Ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>The ball joins the group of contacts it is held in, and their rows are solved together: these are the states the simulation goes on from.</source>
+        <translation>A golyó csatlakozik a tartós érintkezések csoportjához, amelyben van, és a sorokat együtt oldjuk meg: ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>After the collision</source>
+        <translation>Az ütközés után</translation>
+    </message>
+    <message>
+        <source>The body pushes the ball: the change of its momentum in space is the body&apos;s impulse J.</source>
+        <translation>A test meglöki a golyót: lendületének térbeli változása a test J impulzusa.</translation>
+    </message>
+    <message>
+        <source>The cloth answers %1</source>
+        <translation>A posztó válasza: %1</translation>
+    </message>
+    <message>
+        <source>%1 lies on the cloth, and the impulse drives it down into it at w = −v_z: the cloth answers at once, as it answers a landing. Its normal impulse (1 + e_t) m w sends the ball up at e_t w, and its friction acts on the slip of the contact point, at most μ_t times that (less if the slip stops first: 2/7 m |u|).</source>
+        <translation>A(z) %1 golyó a posztón fekszik, és az impulzus w = −v_z sebességgel a posztóba nyomja: a posztó azonnal válaszol, ahogy egy földet érésre. (1 + e_t) m w normális impulzusa e_t w sebességgel löki fel a golyót, súrlódása pedig az érintkezési pont csúszására hat, legfeljebb ennek μ_t-szeresével (kevesebbel, ha a csúszás előbb megáll: 2/7 m |u|).</translation>
+    </message>
+    <message>
+        <source>The rebound would lift it less than %1 m off the cloth: the cloth keeps it down (v_z = 0), and the rebound&apos;s vertical speed goes into the cloth.</source>
+        <translation>A visszapattanás %1 m-nél kevésbé emelné el a posztótól: a posztó lent tartja (v_z = 0), és a visszapattanás függőleges sebességét a posztó nyeli el.</translation>
+    </message>
+    <message>
+        <source>The cloth keeps %1</source>
+        <translation>A posztó lent tartja: %1</translation>
+    </message>
+    <message>
+        <source>The impulse sends %1, which lies on the cloth, up at v_z so slowly that its hop would stay within %2 m of the cloth (v_z² / 2g): the cloth keeps it down (v_z = 0), and its vertical speed goes into the cloth, as a landing&apos;s.</source>
+        <translation>Az impulzus a posztón fekvő %1 golyót olyan lassan, v_z sebességgel indítja felfelé, hogy ugrása %2 m-en belül maradna (v_z² / 2g): a posztó lent tartja (v_z = 0), és függőleges sebességét a posztó nyeli el, mint egy földet érésnél.</translation>
+    </message>
+    <message>
+        <source>Ball-ball collision of %1 and %2 in the air</source>
+        <translation>Golyó–golyó ütközés a levegőben: %1 és %2</translation>
+    </message>
+    <message>
+        <source>The balls touch when their centres are R_a + R_b apart in space (a = %1, b = %2); a centre is at the height R + z above the cloth.</source>
+        <translation>A golyók akkor érintkeznek, amikor középpontjaik távolsága a térben R_a + R_b (a = %1, b = %2); egy középpont R + z magasan van a posztó fölött.</translation>
+    </message>
+    <message>
+        <source>Both balls fly, and the same gravity pulls both down, so it cancels in c_b − c_a: their difference moves uniformly.</source>
+        <translation>Mindkét golyó repül, és ugyanaz a gravitáció húzza le őket, így c_b − c_a-ban kiesik: a különbségük egyenletesen mozog.</translation>
+    </message>
+    <message>
+        <source>The normal n points from the centre of a to the centre of b in space; it leaves the cloth&apos;s plane by the difference of their heights. The contact point lies R_a along it (r_c is its place seen from above, n_h the direction of n&apos;s level part). The balls approach when their relative velocity in space along n is positive.</source>
+        <translation>Az n normális a térben az a golyó középpontjából a b golyó középpontja felé mutat; magasságuk különbségével kilép a posztó síkjából. Az érintkezési pont R_a távolságra van rajta (r_c a helye felülről nézve, n_h az n vízszintes részének iránya). A golyók közelednek, ha térbeli relatív sebességük n menti része pozitív.</translation>
+    </message>
+    <message>
+        <source>Here both centres are at the same height: n is level, n_z = 0.</source>
+        <translation>Itt a két középpont egy magasságban van: n vízszintes, n_z = 0.</translation>
+    </message>
+    <message>
+        <source>Normal impulse</source>
+        <translation>Normális impulzus</translation>
+    </message>
+    <message>
+        <source>Newton&apos;s restitution along the normal in space: the balls part along n at e times the speed they approach with. Both are free in space, so each takes the impulse with its own mass. The impulse on a is −P_n n: its vertical part −P_n n_z lifts or presses a ball as much as the tilt of n says.</source>
+        <translation>Newton-féle restitúció a térbeli normális mentén: a golyók n mentén a közeledési sebességük e-szeresével távolodnak. Mindkettő szabad a térben, így mindegyik a saját tömegével veszi fel az impulzust. Az a-ra ható impulzus −P_n n: függőleges része, −P_n n_z, annyira emeli vagy nyomja le a golyót, amennyire n dől.</translation>
+    </message>
+    <message>
+        <source>Friction between the balls</source>
+        <translation>Súrlódás a golyók között</translation>
+    </message>
+    <message>
+        <source>The contact points slip across each other at u_t (their velocities v + ω × (±R n), less the part along n). Friction acts against it with at most μ P_n, and never more than stops the slip (a solid sphere&apos;s tangential compliance is 7/2 (1/m_a + 1/m_b)). It changes each ball&apos;s spin by (R n) × J_t / I.</source>
+        <translation>Az érintkezési pontok u_t sebességgel csúsznak el egymáson (v + ω × (±R n) sebességük, n menti részük nélkül). A súrlódás ez ellen hat, legfeljebb μ P_n-nel, és sosem jobban, mint ami megállítja a csúszást (tömör gömbök érintőirányú engedékenysége 7/2 (1/m_a + 1/m_b)). Mindkét golyó pörgését (R n) × J_t / I-vel változtatja.</translation>
+    </message>
+    <message>
+        <source>The contact points do not slip across each other (u_t = 0): friction has nothing to act on, J_t = 0.</source>
+        <translation>Az érintkezési pontok nem csúsznak el egymáson (u_t = 0): a súrlódásnak nincs min hatnia, J_t = 0.</translation>
+    </message>
+    <message>
+        <source>Velocities after the impulse</source>
+        <translation>Sebességek az impulzus után</translation>
+    </message>
+    <message>
+        <source>Each ball&apos;s velocity in space changes by its impulse over its mass (b takes −J); the spins by the friction&apos;s torque alone, since the normal impulse acts through both centres.</source>
+        <translation>Mindkét golyó térbeli sebessége az impulzusa és a tömege hányadosával változik (b −J-t kap); a pörgések csak a súrlódás forgatónyomatéka szerint, mert a normális impulzus mindkét középponton át hat.</translation>
+    </message>
+    <message>
+        <source>These are the states the simulation goes on from.</source>
+        <translation>Ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>The law leaves the pair parting slower than %1 m/s (or touching with no approach) while the upper ball&apos;s weight presses it on the other: it would only bounce ever lower on it. The pair is held instead: the re-seating takes the parting speed away (which only removes energy), and from here a contact force N ≥ 0 along n keeps the balls touching, solved with gravity and the cloth&apos;s friction. These are the states the simulation goes on from.</source>
+        <translation>A törvény után a pár %1 m/s-nál lassabban távolodna (vagy közeledés nélkül érintkezik), miközben a felső golyó súlya a másikra nyomja: csak egyre kisebbeket pattanna rajta. Ehelyett a párt tartósan érintkezőnek vesszük: az újraillesztés elveszi a távolodási sebességet (ez csak energiát von el), és innentől egy n menti N ≥ 0 érintkezési erő tartja össze a golyókat, a gravitációval és a posztó súrlódásával együtt megoldva. Ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>The pair joins the balls it is held with: their contacts are solved together, and what relative normal speed the others have left is taken away at the same time. These are the states the simulation goes on from.</source>
+        <translation>A pár csatlakozik azokhoz a golyókhoz, amelyekkel tartósan érintkezik: érintkezéseiket együtt oldjuk meg, és a többiek megmaradt relatív normális sebességét ugyanabban a lépésben elvesszük. Ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>The balls touch with no approach: the ball on the cloth goes on as its slip says (a slip of rounding rolled out, a roll slower than the cloth can tell stopped). These are the states the simulation goes on from.</source>
+        <translation>A golyók közeledés nélkül érintkeznek: a posztón lévő golyó a csúszása szerint halad tovább (a kerekítésből adódó csúszás kigördül, a posztó számára kimérhetetlenül lassú gördülés megáll). Ezekből az állapotokból folytatódik a szimuláció.</translation>
+    </message>
+    <message>
+        <source>The collision turns some energy into sound and heat (restitution e &lt; 1, friction); a ball the impulse drives into the cloth loses more there.</source>
+        <translation>Az ütközés az energia egy részét hanggá és hővé alakítja (restitúció e &lt; 1, súrlódás); az a golyó, amelyet az impulzus a posztóba nyom, ott még többet veszít.</translation>
+    </message>
+    <message>
+        <source>The impulses between the balls are equal and opposite, so they keep the pair&apos;s momentum in space; gravity adds nothing in an instant. Only the cloth&apos;s answer to a ball on it changes it: ΔP = P_{cloth}.</source>
+        <translation>A golyók közti impulzusok egyenlők és ellentétesek, így a pár térbeli lendülete megmarad; a gravitáció egy pillanat alatt semmit sem ad hozzá. Csak a posztó válasza egy rajta fekvő golyóra változtatja meg: ΔP = P_{cloth}.</translation>
+    </message>
+    <message>
+        <source>Here no ball is driven into the cloth: P_{cloth} = 0.</source>
+        <translation>Itt egyik golyót sem nyomja az impulzus a posztóba: P_{cloth} = 0.</translation>
+    </message>
+    <message>
+        <source>The hold&apos;s impulses come on top.</source>
+        <translation>Ehhez jönnek még a tartós érintkezés impulzusai.</translation>
+    </message>
+    <message>
+        <source>The bodies were touching at the event (within 10^{−10} m), grazing, approaching or pressed together (a group of held contacts solved again then): the contact begins at that instant, not at a root of f.</source>
+        <translation>A testek az eseménykor érintkeztek (10^{−10} m-en belül): súrolták egymást, közeledtek vagy egymáshoz szorultak (a tartós érintkezések egy csoportját ekkor oldottuk meg újra): az érintkezés abban a pillanatban kezdődik, nem f egy gyökénél.</translation>
+    </message>
+    <message>
+        <source>The ball was already touching the cushion&apos;s line, beyond the end of this segment, and closing in: the contact begins where the foot of the perpendicular from its centre enters the segment through its end (λ = 0 or 1), not at a root of f.</source>
+        <translation>A golyó már érintette a mantinel egyenesét, ennek a szakasznak a végén túl, és közeledett: az érintkezés ott kezdődik, ahol a középpontjából bocsátott merőleges talppontja a végén át belép a szakaszba (λ = 0 vagy 1), nem f egy gyökénél.</translation>
+    </message>
+    <message>
+        <source>The simulator met this contact from a later instant of the paths: the same polynomial, written from t_0, rounds its root a little differently. τ* is the event&apos;s own time.</source>
+        <translation>A szimulátor ezt az érintkezést a pályák egy későbbi pillanatából számolta: ugyanez a polinom t_0-tól felírva kissé másképp kerekíti a gyökét. τ* az esemény saját ideje.</translation>
+    </message>
+    <message>
+        <source>Here f is linear in τ (degree 1)</source>
+        <translation>Itt f τ-ban lineáris (elsőfokú)</translation>
+    </message>
+    <message>
+        <source>Here f is a quadratic in τ (degree 2)</source>
+        <translation>Itt f τ-ban másodfokú</translation>
+    </message>
+    <message>
+        <source>Here f is a cubic in τ (degree 3)</source>
+        <translation>Itt f τ-ban harmadfokú</translation>
+    </message>
+    <message>
+        <source>Here f is a quartic in τ (degree 4)</source>
+        <translation>Itt f τ-ban negyedfokú</translation>
+    </message>
+    <message>
+        <source>Here f is constant</source>
+        <translation>Itt f állandó</translation>
+    </message>
+    <message>
+        <source>%1, with no real root.</source>
+        <translation>%1, valós gyöke nincs.</translation>
+    </message>
+    <message>
+        <source>%1, with one real root.</source>
+        <translation>%1, egy valós gyöke van.</translation>
+    </message>
+    <message>
+        <source>%1, with %2 real roots.</source>
+        <translation>%1, %2 valós gyöke van.</translation>
+    </message>
+    <message>
+        <source>The balls were already touching at the event (within 10^{−10} m) and approaching or pressed together: the contact begins at that instant, not at a root of f.</source>
+        <translation>A golyók az eseménykor már érintkeztek (10^{−10} m-en belül), és közeledtek vagy egymáshoz szorultak: az érintkezés abban a pillanatban kezdődik, nem f egy gyökénél.</translation>
+    </message>
+    <message>
+        <source>The balls were touching at t_0 (within 10^{−10} m) and approaching, or pressed together: the contact begins at once (τ = 0).</source>
+        <translation>A golyók t_0-kor érintkeztek (10^{−10} m-en belül) és közeledtek, vagy egymáshoz szorultak: az érintkezés azonnal kezdődik (τ = 0).</translation>
+    </message>
+    <message>
+        <source>τ* is the smallest root in the prediction window 0 &lt; τ ≤ H at which f falls (f′(τ) &lt; 0: the balls approach); a root where f rises (they part) or only touches zero (a graze) is passed over.</source>
+        <translation>τ* a 0 &lt; τ ≤ H előrejelzési ablak legkisebb olyan gyöke, ahol f csökken (f′(τ) &lt; 0: a golyók közelednek); azt a gyököt, ahol f nő (a golyók távolodnak), vagy ahol csak érinti a nullát (súrolás), átugorjuk.</translation>
+    </message>
+    <message>
+        <source>τ* is where the height falls to 0, the flight&apos;s landing: there the centre is over the pocket&apos;s circle, |r − c| &lt; r_{pocket}, so there is no cloth to land on.</source>
+        <translation>τ* ott van, ahol a magasság 0-ra csökken, a repülés földet érésénél: ott a középpont a lyuk köre fölött van, |r − c| &lt; r_{pocket}, így nincs posztó, amelyre leérkezhetne.</translation>
+    </message>
+    <message>
+        <source>The ball met the end of the rail inside the pocket&apos;s circle, lower than the rail&apos;s top: it drops in there, at the instant of that contact (not a root of the height).</source>
+        <translation>A golyó a lyuk körén belül, a mantinel tetejénél alacsonyabban érte el a mantinel végét: ott, annak az érintkezésnek a pillanatában esik be (ez nem a magasság gyöke).</translation>
+    </message>
+    <message>
+        <source>A flying ball drops into a pocket when it comes down to the cloth&apos;s level with its centre over the pocket&apos;s circle (centre c, radius r_{pocket}).</source>
+        <translation>A repülő golyó akkor esik lyukba, amikor a posztó szintjére ereszkedik úgy, hogy középpontja a lyuk köre fölött van (középpontja c, sugara r_{pocket}).</translation>
+    </message>
+    <message>
+        <source>Over the pocket</source>
+        <translation>A lyuk fölött</translation>
+    </message>
+    <message>
+        <source>Where it comes down, the centre is within r_{pocket} of the pocket&apos;s centre.</source>
+        <translation>Ahol leérkezik, ott a középpont r_{pocket}-nél közelebb van a lyuk középpontjához.</translation>
+    </message>
+    <message>
+        <source>The ball drops when its centre enters the pocket circle (centre c, radius r_{pocket}).</source>
+        <translation>A golyó akkor esik be, amikor középpontja belép a lyuk körébe (középpontja c, sugara r_{pocket}).</translation>
+    </message>
+    <message>
+        <source>Since t_{start} the ball has flown held against a ball it presses on: besides gravity the contact force&apos;s vertical part q_z per unit mass holds it up, so it falls with g − q_z (written g below), and its centre&apos;s height above its resting height is a parabola in τ = t − t_{start}. It lands when the height is 0 again: the positive root of that quadratic.</source>
+        <translation>t_{start} óta a golyó egy golyóhoz szorulva repül, amelyre ránehezedik: a gravitáció mellett az érintkezési erő egységnyi tömegre jutó q_z függőleges része tartja, így g − q_z gyorsulással esik (lent ezt írjuk g-nek), és középpontjának a nyugalmi magassága fölötti magassága parabola τ = t − t_{start} függvényében. Akkor ér földet, amikor a magasság ismét 0: ennek a másodfokú egyenletnek a pozitív gyökénél.</translation>
+    </message>
+    <message>
+        <source>(The simulator found the contact&apos;s normal from its own instant of prediction, which rounds it a little differently: its states, given here, agree with the law&apos;s above to within 10^{−9} of their size.)</source>
+        <translation>(A szimulátor az érintkezés normálisát a saját előrejelzési pillanatából számolta, ami kissé másképp kerekíti: az itt megadott állapotai a fenti törvényéivel méretük 10^{−9}-szeresén belül egyeznek.)</translation>
     </message>
 </context>
 </TS>
