@@ -19,6 +19,17 @@ void Simulator::airCushion(const Candidate& c, Event& e)
     const double R = radius(i);
     const BallState& before = e.before[0];
     Vec3 normal;  // from the body towards the centre
+    if (c.agent == Agent::Cushion && c.index < 0) {
+        // Its centre leaves the table's outline beyond a pocket (outlineExitTime): out of play there.
+        e.kind = EventKind::BallOffTable;
+        e.after[0] = BallState{};
+        e.after[0].position = before.position;
+        e.after[0].z = before.z;
+        e.after[0].motion = MotionState::OffTable;
+        e.contactPoint = before.position;
+        finishEvent(e.time, e);
+        return;
+    }
     if (c.agent == Agent::Cushion) {
         const CushionSegment& seg = table_.cushions[at(c.index)];
         const AirCushionContact& contact = airContact_[at(i)];

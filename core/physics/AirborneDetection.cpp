@@ -3,7 +3,9 @@
 #include "Quartic.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace cuelab {
 
@@ -422,6 +424,61 @@ OverPocket overPocket(const SpacePath& p, const Pocket& pocket, double horizon)
         lo = s;
     }
     return over;
+}
+
+bool insideOutline(const Table& table, const Vec2& c, double radius)
+{
+    if (c.x() >= 0.0 && c.x() <= table.length && c.y() >= 0.0 && c.y() <= table.width) return true;
+    for (const Pocket& k : table.pockets)
+        if ((c - k.centre).norm() <= k.radius + radius) return true;
+    return false;
+}
+
+double outlineExitTime(const SpacePath& p, double radius, const Table& table, double horizon)
+{
+    if (!p.c2.head<2>().isZero(0.0)) return kNever;  // (a held flight: it is held on a ball of the table)
+    const Vec2 p0 = p.c0.head<2>(), v = p.c1.head<2>();
+    if (v.isZero(0.0) || !insideOutline(table, p0, radius)) return kNever;
+    // The intervals of s over which the centre is inside each piece (the line's entry and exit).
+    std::vector<std::array<double, 2>> spans;
+    {
+        double lo = -kNever, hi = kNever;
+        const std::array<double, 2> low{0.0, 0.0}, high{table.length, table.width};
+        for (int a = 0; a < 2; ++a) {
+            if (v[a] == 0.0) {
+                if (p0[a] < low[static_cast<std::size_t>(a)] || p0[a] > high[static_cast<std::size_t>(a)]) lo = kNever;
+                continue;
+            }
+            const double s1 = (low[static_cast<std::size_t>(a)] - p0[a]) / v[a], s2 = (high[static_cast<std::size_t>(a)] - p0[a]) / v[a];
+            lo = std::max(lo, std::min(s1, s2));
+            hi = std::min(hi, std::max(s1, s2));
+        }
+        if (lo <= hi) spans.push_back({lo, hi});
+    }
+    for (const Pocket& k : table.pockets) {
+        // |p0 - centre + v s|^2 = (r + R)^2
+        const Vec2 d = p0 - k.centre;
+        const double rr = k.radius + radius;
+        const double a = v.squaredNorm(), b = 2.0 * d.dot(v), c = d.squaredNorm() - rr * rr;
+        const double disc = b * b - 4.0 * a * c;
+        if (disc < 0.0) continue;
+        const double q = std::sqrt(disc);
+        spans.push_back({(-b - q) / (2.0 * a), (-b + q) / (2.0 * a)});
+    }
+    // The exit: the end of the union of the spans that holds s = 0.
+    double end = -1.0;
+    for (const auto& sp : spans)
+        if (sp[0] <= 0.0 && sp[1] >= 0.0) end = std::max(end, sp[1]);
+    if (end < 0.0) return kNever;  // (inside by the test above, outside by rounding of the spans)
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const auto& sp : spans)
+            if (sp[0] <= end && sp[1] > end) {
+                end = sp[1];
+                grew = true;
+            }
+    }
+    return end <= horizon ? end : kNever;
 }
 
 }  // namespace cuelab

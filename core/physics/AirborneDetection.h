@@ -101,4 +101,16 @@ OverPocket overPocket(const SpacePath& p, const Pocket& pocket, double horizon);
 // Flight.h's landingTime in the path's terms), or kNever.
 double spaceLandingTime(const SpacePath& p, double radius, double horizon);
 
+// The table's outline, as a flying ball leaves it (issue 40): the playing area (the rectangle of the
+// rail noses) and, at each pocket, the disc within R of its circle (a centre there is over the pocket
+// or its mouth, within reach of dropping in). Over a straight rail the outline is the nose line, where
+// a ball clearing the rail leaves the table (above); over a pocket's mouth it is the far side of the
+// pocket, so a ball that flies over a pocket leaves the table as its centre passes beyond it, not
+// when it comes down metres away.
+bool insideOutline(const Table& table, const Vec2& centre, double radius);
+// The first s in [0, horizon] at which a flying ball's centre, inside the outline now, leaves it
+// (kNever if it does not, or if the centre is outside now, or the path is not a free flight's, whose
+// horizontal motion is uniform).
+double outlineExitTime(const SpacePath& p, double radius, const Table& table, double horizon);
+
 }  // namespace cuelab

@@ -138,6 +138,13 @@ void Simulator::predictAirContacts(int i, double now, const Path& p, Candidate& 
             airContact_[at(i)] = c;
         }
     }
+    // Leaving the table's outline over a pocket's mouth (beyond the pocket, over the rail's top or
+    // the floor): `ball-off-table` there, as over a straight rail at its nose line (issue 40; index -1).
+    if (!heldFlight(i)) {
+        const double exit = outlineExitTime(sp, R, table_, horizon);
+        const Candidate cand{now + exit, 1, i, Agent::Cushion, -1};
+        if (exit != kNever && earlier(cand, best)) best = cand;
+    }
     (void)p;
 }
 

@@ -86,6 +86,18 @@ bool rollOutRounding(BallState& s, double radius, const PhysicsParams& p);
 // s: the longest held segment (the group is solved again at least this often).
 inline constexpr double kMaxHeldSegment = 0.25;
 
+// The cost of a held group is bounded by design (issue 40; docs/sustained-contact.md, "Issue 40"): a
+// group solved again without an event more than kQuietSolves times in a row (a quiet stretch, since
+// the last event of any of its balls) no longer lets its accuracy limits (how far a frozen slip or
+// roll direction turns, how far a held pair's frozen normal turns or its distance grows) cut a segment
+// shorter than 1/kQuietSolves of the stretch so far. Its segments then grow geometrically, so a
+// stretch of length T whose first segment lasted s0 costs at most about kQuietSolves (1 + ln(T / s0))
+// solves, and memory (segments) stays within that many per event. The limits that keep a held
+// contact from overlapping or leaving its body (the curvature allowance, a foot leaving its cushion,
+// a jaw's arc, a flying ball's height) are never relaxed, nor a ball's own transition (its slip or
+// roll along the frozen direction ends), so energy still never rises and nothing overlaps.
+inline constexpr int kQuietSolves = 32;
+
 enum class ContactBody : std::uint8_t { Ball, Cushion, Jaw };
 
 // A contact of ball `a` with another ball, a straight cushion or a jaw tip (indices into the

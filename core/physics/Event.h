@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 namespace cuelab {
 
@@ -63,6 +64,17 @@ struct Event {
     // The event's balls were solved together with other held contacts (a group of three or more
     // bodies): their after-states include the impulses that re-seat those contacts too.
     bool grouped = false;
+    // The other balls whose state the event changes (issue 40): the members of the held group solved
+    // with it whose velocity, spin or motion label its re-seating or new forces changed, each with its
+    // state just before and just after the event's instant. Empty when the event changes its own
+    // balls only. With `balls`, an event lists every ball whose state it changes, so that nothing
+    // changes silently and the energy of an event can be judged over its own balls.
+    struct GroupChange {
+        int ball = -1;       // index into the ball list
+        BallState before{};  // just before the instant
+        BallState after{};   // just after the event
+    };
+    std::vector<GroupChange> group;
 };
 
 }  // namespace cuelab

@@ -57,10 +57,11 @@ bool Simulator::heldWall(int i, ContactBody body, int index) const
 
 Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBalls,
                                      const std::vector<BallState>& eventStates, const HeldContact* candidate,
-                                     bool forceHold, int regroup)
+                                     bool forceHold, int regroup, bool noEvent)
 {
     lastGroupSize_ = 0;
     lastCandidateImpulse_ = 0.0;
+    lastGroupChanges_.clear();
     bool touched = candidate != nullptr;
     for (int b : eventBalls) touched = touched || heldCount_[at(b)] > 0;
     touched = touched || (regroup >= 0 && heldCount_[at(regroup)] > 0);
@@ -528,6 +529,10 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     // the group, or a ball held by resting contacts only), keeps its segment: solving the group again
     // changes nothing of its motion.
     std::vector<char> idle(members.size(), 0);
+    auto isEventBall = [&](int b) { return std::find(eventBalls.begin(), eventBalls.end(), b) != eventBalls.end(); };
+    auto isLogged = [&](int b) {
+        return std::any_of(logged.begin(), logged.end(), [&](const std::pair<std::size_t, int>& l) { return l.second == b; });
+    };
     for (std::size_t m = 0; m < members.size(); ++m) {
         const int b = members[m];
         BallState s = balls[m].state;
@@ -544,6 +549,12 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             idle[m] = now.motion == s.motion && now.position == s.position && now.velocity == s.velocity && now.spin == s.spin;
         }
         if (idle[m]) continue;
+        if (!isEventBall(b) && !isLogged(b)) {
+            // The event changes this member too (Event::group): its velocity, spin or label.
+            const BallState was = stateNow(b, t);
+            if (was.velocity != s.velocity || was.spin != s.spin || was.motion != s.motion || was.vz != s.vz)
+                lastGroupChanges_.push_back(Event::GroupChange{b, was, s});
+        }
         start_[at(b)] = t;  // (beginSegment below logs it; the limit reads every member's path at t)
         noteStop(state_[at(b)].motion, s.motion, t);
         state_[at(b)] = s;
@@ -553,8 +564,10 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     }
     bool pushed = false;
     for (int b : members) pushed = pushed || !push_[at(b)].isZero(0.0) || pushZ_[at(b)] != 0.0;
+    // (A solve without an event of its own counts towards the group's quiet stretch, Contact.h.)
+    const double accuracyFloor = quietFloor(t, members, noEvent || (regroup >= 0 && eventBalls.empty() && candidate == nullptr));
     // (Held contacts without force still turn their normals: the segment is bounded for them too.)
-    const double limit = pushed || !kept.empty() ? t + turnLimit(t, members, kept) : kNever;
+    const double limit = pushed || !kept.empty() ? t + turnLimit(t, members, kept, accuracyFloor) : kNever;
     for (std::size_t m = 0; m < members.size(); ++m) {
         const int b = members[m];
         regroupAt_[at(b)] = heldCount_[at(b)] > 0 ? limit : kNever;
@@ -570,10 +583,19 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     }
     for (int b : members) predictOwn(b, t);
     for (int b : members) predictPairs(b, t);
+    // A member's own transition due now keeps its event (its after-state: the transition alone); what
+    // the group's solve then changes of it is listed with the solve's other changes (Event::group), in
+    // the event that solved the group, or in the first such transition when the solve had no event of
+    // its own.
     for (const auto& [index, b] : logged) {
-        r_.events[index].after[0] = state_[at(b)];
-        r_.events[index].grouped = true;
+        Event& own = r_.events[index];
+        own.grouped = true;
+        const BallState& is = state_[at(b)];
+        const BallState& was = own.after[0];
+        if (was.velocity != is.velocity || was.spin != is.spin || was.motion != is.motion || was.vz != is.vz)
+            lastGroupChanges_.push_back(Event::GroupChange{b, was, is});
     }
+    if ((eventBalls.empty() || noEvent) && !logged.empty()) r_.events[logged.front().first].group = lastGroupChanges_;
     if (!candidate || candidateHeld) return Settled::Held;
     return Settled::SeatedOnly;
 }

@@ -1,5 +1,6 @@
 // The segments of held groups (Contact.h): how long a group's frozen directions and normals may be
-// kept before it is solved again (turnLimit), and which event a pushed state's end is. The groups
+// kept before it is solved again (turnLimit), the bound on a group solved again without an event
+// (quietFloor, Contact.h's kQuietSolves), and which event a pushed state's end is. The groups
 // themselves are solved in HeldContacts.cpp.
 
 #include "Simulator.h"
@@ -33,7 +34,29 @@ bool pushedTransitionKind(MotionState before, MotionState after, EventKind& kind
     return false;
 }
 
-double Simulator::turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts) const
+double Simulator::quietFloor(double t, const std::vector<int>& members, bool quiet)
+{
+    // The stretch: the most solves in a row without an event of any member, since the earliest such
+    // stretch began (a solve with an event ends every member's stretch).
+    int solves = 0;
+    double since = t;
+    if (quiet) {
+        for (int b : members)
+            if (quietSolves_[at(b)] > 0) {
+                solves = std::max(solves, quietSolves_[at(b)]);
+                since = std::min(since, quietSince_[at(b)]);
+            }
+        ++solves;
+    }
+    for (int b : members) {
+        quietSolves_[at(b)] = solves;
+        quietSince_[at(b)] = since;
+    }
+    return solves > kQuietSolves ? (t - since) / kQuietSolves : 0.0;
+}
+
+double Simulator::turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts,
+                            double accuracyFloor) const
 {
     double limit = kMaxHeldSegment;
     const double g = p_.gravity;
@@ -70,6 +93,10 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             const double quarter = den4 > 0.0 ? 0.25 * n0 / den4 : kNever;
             turn = std::min(std::max(turn, budget), quarter);
         }
+        // A quiet stretch (Contact.h's kQuietSolves): the frozen direction may turn further, up to
+        // the pushed transition that ends the segment when the motion along it ends (so its friction
+        // still only dissipates); the velocity it costs is at most mu g (pi / 2) per second of it.
+        turn = std::max(turn, accuracyFloor);
         limit = std::min(limit, turn);
     }
     // The contacts' geometry from now on: a ball that keeps its segment (idle in settle) has its path
@@ -168,7 +195,9 @@ double Simulator::turnLimit(double t, const std::vector<int>& members, const std
             }
         }
         const CircleLimits l = circleLimits<Vec2>(rel0, rel1, rel2, D);
-        limit = std::min(limit, l.gap);
+        // (A quiet stretch: the frozen normal may turn further and the distance grow by more than
+        // kSegmentGap; it only grows, and past kHeldGap the pair is let go.)
+        limit = std::min(limit, std::max(l.gap, accuracyFloor));
         if (!h.flat) limit = std::min(limit, l.drop);  // (a flat contact's forces allow no curvature)
     }
     return std::max(limit, 1e-9);  // s: a floor, so that solving again always moves time on

@@ -246,6 +246,7 @@ void Simulator::finishEvent(double t, const Event& e)
     if (settle(t, balls, states, nullptr, false) == Settled::Held) {
         for (std::size_t k = 0; k < balls.size(); ++k) r_.events[index].after[k] = state_[at(balls[k])];
         r_.events[index].grouped = lastGroupSize_ > 0;
+        r_.events[index].group = lastGroupChanges_;
         return;
     }
     for (std::size_t k = 0; k < balls.size(); ++k) beginSegment(balls[k], t, states[k]);
@@ -333,7 +334,7 @@ void Simulator::process(const Candidate& c)
                 finishEvent(t, e);
                 return;
             }
-            if (settle(t, {i}, {after}, nullptr, false) == Settled::Untouched) {
+            if (settle(t, {i}, {after}, nullptr, false, -1, true) == Settled::Untouched) {
                 beginSegment(i, t, after);
                 predictOwn(i, t);
                 predictPairs(i, t);
@@ -432,6 +433,7 @@ bool Simulator::holdCollision(const Event& e, const HeldContact& candidate, doub
     logged.holdImpulse = -lastCandidateImpulse_;
     logged.impulse.head<2>() -= lastCandidateImpulse_ * e.normal;
     logged.grouped = lastGroupSize_ > 1;
+    logged.group = lastGroupChanges_;
     return true;
 }
 

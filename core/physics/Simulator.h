@@ -67,6 +67,8 @@ private:
         push_.assign(n, Vec2::Zero());
         heldCount_.assign(n, 0);
         regroupAt_.assign(n, kNever);
+        quietSolves_.assign(n, 0);
+        quietSince_.assign(n, 0.0);
         pushZ_.assign(n, 0.0);
         airHeld_.assign(n, -1);
         airLetGo_.assign(n, kNever);
@@ -214,14 +216,24 @@ private:
     };
     // `regroup` (>= 0): a ball whose group is solved again with no event (a frozen direction has
     // turned far enough).
+    // `noEvent`: the solve logs no event of its own (a frozen direction has turned: `regroup`, or a
+    // pushed state ended without changing its label), so it counts towards a quiet stretch
+    // (Contact.h's kQuietSolves).
     Settled settle(double t, const std::vector<int>& eventBalls, const std::vector<BallState>& eventStates,
-                   const HeldContact* candidate, bool forceHold, int regroup = -1);
+                   const HeldContact* candidate, bool forceHold, int regroup = -1, bool noEvent = false);
     void finishEvent(double t, const Event& e);
     // A collision whose law parts its bodies slower than kHoldSpeed (Contact.h's hold rule): logs the
     // event with its hold and settles the group; false when the law's result stands alone (the
     // caller finishes the event as any other).
     bool holdCollision(const Event& e, const HeldContact& candidate, double separation);
-    double turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts) const;
+    // A held group's quiet stretch (Contact.h's kQuietSolves): counts the solve of `members` at t
+    // (`quiet`: without an event of its own; else the stretch ends) and returns the floor of its
+    // accuracy limits, 0 within the budget.
+    double quietFloor(double t, const std::vector<int>& members, bool quiet);
+    // `accuracyFloor` (s): the accuracy limits (turns of frozen directions and normals) are taken no shorter
+    // than this (a quiet stretch, Contact.h's kQuietSolves); the limits that keep contacts sound are not.
+    double turnLimit(double t, const std::vector<int>& members, const std::vector<HeldContact>& contacts,
+                     double accuracyFloor = 0.0) const;
 
     SimulationResult& r_;
     const Table& table_;
@@ -254,6 +266,12 @@ private:
     std::vector<HeldContact> held_;   // the contacts held now, in the order they were formed
     std::vector<int> heldCount_;      // per ball, how many of held_ involve it
     std::vector<double> regroupAt_;   // s, when a held group is solved again (kNever if none)
+    // Per ball: how many times in a row its held group was solved again without an event (a quiet
+    // stretch, Contact.h's kQuietSolves), and since when (s).
+    std::vector<int> quietSolves_;
+    std::vector<double> quietSince_;
+    // The other members whose state the last settle() changed (Event::group), for its event.
+    std::vector<Event::GroupChange> lastGroupChanges_;
     double lastStop_ = 0.0;           // s, the last time a ball's new segment found it at rest after moving
     std::size_t lastGroupSize_ = 0;   // how many contacts the last settle() solved
     // Airborne balls: the ball's segment is a bounce series (seriesOf_ holds it), the contact with the

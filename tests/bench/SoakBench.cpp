@@ -49,6 +49,11 @@ void printTrace(const SimulationResult& r)
             printState("before", e.before[b]);
             printState("after ", e.after[b]);
         }
+        for (const Event::GroupChange& c : e.group) {  // the held group's other members it changes
+            std::printf("      group ball %d\n", c.ball);
+            printState("before", c.before);
+            printState("after ", c.after);
+        }
     }
     for (std::size_t i = 0; i < r.timelines.size(); ++i) {
         std::printf("  ball %zu segments:\n", i);
@@ -64,10 +69,12 @@ int usage(const char* why)
 {
     std::fprintf(stderr,
                  "cuelab-bench: %s\nusage: cuelab-bench --soak N SEED [--jobs J] [--out DIR] [--no-determinism] "
-                 "[--class NAME] [--max-events N] [--first K] [--level]\n"
+                 "[--class NAME] [--max-events N] [--first K] [--level] [--wide] [--slow-ms MS]\n"
                  "       cuelab-bench --check [--level] [--trace] [--max-events N] [--set KEY=VALUE]... FILE...\n"
                  "--level: the strike drops its vertical part (SimulationOptions::strikeKeepsElevation off; it\n"
-                 "keeps it by default, and --elevation, which turned it on before it was the default, still does)\n",
+                 "keeps it by default, and --elevation, which turned it on before it was the default, still does)\n"
+                 "--wide: the widened shots (wideRandomShot: physics over the whole legal range, racks struck from\n"
+                 "anywhere); --slow-ms MS: every shot whose simulate takes longer is written to --out's folder\n",
                  why);
     return 2;
 }
@@ -91,6 +98,8 @@ int soakCommand(int argc, char** argv)
         else if (a == "--no-determinism") o.checks.determinism = false;
         else if (a == "--elevation") o.strikeKeepsElevation = true;
         else if (a == "--level") o.strikeKeepsElevation = false;
+        else if (a == "--wide") o.wide = true;
+        else if (a == "--slow-ms" && k + 1 < argc && parseCount(argv[k + 1], n) && n >= 1) o.slowMs = static_cast<double>(n), ++k;
         else if (a == "--class" && k + 1 < argc && soak::parseShotClass(argv[k + 1])) o.onlyClass = soak::parseShotClass(argv[++k]);
         else return usage(("unknown or incomplete option " + a).c_str());
     }

@@ -9,6 +9,7 @@
 #include "SimulationChecks.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <QtTest>
 
@@ -55,6 +56,8 @@ class TestChecks : public QObject {
 private slots:
     void places_data();
     void places();
+    void flyingBeyondTheOutline();
+    void eventEnergyOverItsBalls();
     void pocketed();
     void timelineJumps();
     void momentum();
@@ -80,6 +83,49 @@ void TestChecks::places_data()
     QTest::newRow("inside the side pocket circle, not dropped") << 1.27 << -0.01 << false;
     QTest::newRow("behind the corner") << -0.2 << -0.2 << false;
     QTest::newRow("beyond the far rail") << 3.0 << 0.6 << false;
+}
+
+void TestChecks::flyingBeyondTheOutline()
+{
+    // Issue 40: a flying ball may be over a pocket or its mouth (within R of the pocket's circle),
+    // but beyond the table's outline it has left the table and must be off-table.
+    const SimulationResult r = sample();
+    const double R = r.balls[0].radius;
+    const Pocket& side = r.table.pockets[1];  // pocket-b, (L/2, -r): its circle touches the nose line
+    BallState over = at(side.centre.x(), side.centre.y() - side.radius - 0.5 * R);
+    over.z = 0.05;
+    QVERIFY2(placeProblem(r, over, R).empty(), placeProblem(r, over, R).c_str());
+    BallState beyond = over;
+    beyond.position.y() = side.centre.y() - side.radius - 2.0 * R;
+    QCOMPARE(placeProblem(r, beyond, R), std::string("flying beyond the table's outline, still in play"));
+    BallState inside = at(1.0, 0.6);
+    inside.z = 0.05;
+    QVERIFY(placeProblem(r, inside, R).empty());
+}
+
+void TestChecks::eventEnergyOverItsBalls()
+{
+    // Issue 40: an event's energy is judged over the balls it lists, its group's members included.
+    using soak::FailureKind;
+    const Setup setup = sampleSetup();
+    const SimulationResult r = sample();
+    std::size_t k = 0;
+    while (r.events[k].kind != EventKind::BallBall) ++k;
+    // A member of the group it lists leaves 20 % faster than the pair's law left it, more than the
+    // law's restitution takes away: the event fails.
+    SimulationResult gains = r;
+    Event::GroupChange c{1, r.events[k].after[1], r.events[k].after[1]};
+    c.after.velocity *= 1.2;
+    gains.events[k].group.push_back(c);
+    soak::CheckOptions noSecondRun;
+    noSecondRun.determinism = false;
+    soak::RunMeasures m;
+    QVERIFY(has(soak::checkRun(setup, gains, noSecondRun, &m), FailureKind::Energy));
+    QVERIFY(m.worstEventEnergyRise > 1e-12);
+    // The run as simulated: no event adds energy to its balls.
+    soak::RunMeasures n;
+    QVERIFY(soak::checkRun(setup, r, noSecondRun, &n).empty());
+    QVERIFY(n.worstEventEnergyRise <= 1e-12);
 }
 
 void TestChecks::places()

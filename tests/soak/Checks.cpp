@@ -170,8 +170,15 @@ std::string placeProblem(const SimulationResult& r, const BallState& s, double R
     if (s.z < -kHeightTolerance) return "under the cloth (z = " + number(s.z) + " m)";
     if (s.z <= 0.0 && s.vz < 0.0) return "on the cloth and going into it";
     if (cushionOverlap(r.table, s, R) > tol) return "overlaps a cushion or jaw";
-    // A flying ball may be over a pocket or a rail; it is judged where it lands.
-    if (s.z > 0.0) return {};
+    // A flying ball may be over a pocket or its mouth; beyond the table's outline (the playing area
+    // and the pockets' circles widened by R: AirborneDetection.h's insideOutline) it has left the
+    // table and must be off-table, not in play (issue 40).
+    if (s.z > 0.0) {
+        const bool playing = p.x() >= -tol && p.x() <= r.table.length + tol && p.y() >= -tol && p.y() <= r.table.width + tol;
+        bool overPocket = false;
+        for (const Pocket& k : r.table.pockets) overPocket = overPocket || (p - k.centre).norm() <= k.radius + R + tol;
+        return playing || overPocket ? std::string() : "flying beyond the table's outline, still in play";
+    }
     for (const Pocket& k : r.table.pockets)
         if ((p - k.centre).norm() < k.radius - tol) return "inside " + k.id + " without dropping";
     const bool cloth = p.x() >= R - tol && p.x() <= r.table.length - R + tol && p.y() >= R - tol
@@ -197,6 +204,21 @@ double totalEnergy(const SimulationResult& r, const std::vector<BallState>& s)
     // With the height's potential energy m g z (0 on the cloth): constant in flight.
     for (std::size_t i = 0; i < s.size(); ++i) e += mechanicalEnergy(s[i], r.balls[i].radius, r.balls[i].mass, r.physics.gravity);
     return e;
+}
+
+EventEnergy eventEnergy(const SimulationResult& r, const Event& e)
+{
+    EventEnergy out;
+    const double g = r.physics.gravity;
+    auto add = [&](int index, const BallState& before, const BallState& after) {
+        const Ball& b = r.balls[static_cast<std::size_t>(index)];
+        out.before += mechanicalEnergy(before, b.radius, b.mass, g);
+        out.after += mechanicalEnergy(after, b.radius, b.mass, g);
+    };
+    for (std::size_t k = 0; k < 2; ++k)
+        if (e.balls[k] >= 0) add(e.balls[k], e.before[k], e.after[k]);
+    for (const Event::GroupChange& c : e.group) add(c.ball, c.before, c.after);
+    return out;
 }
 
 bool sameState(const BallState& a, const BallState& b)

@@ -60,6 +60,14 @@ double totalEnergy(const SimulationResult& r, const std::vector<BallState>& s);
 
 bool sameState(const BallState& a, const BallState& b);
 
+// The energy (kinetic, spin included, and m g z in flight) of the balls an event lists, its own
+// balls and the held group's other members it changes (Event::group): just before and just after.
+struct EventEnergy {
+    double before = 0.0;  // J
+    double after = 0.0;   // J
+};
+EventEnergy eventEnergy(const SimulationResult& r, const Event& e);
+
 // Momentum of a ball-ball event: whatever the law (frictionless or frictional, and the hold of a
 // push, Contact.h), the impulses between the two balls are equal and opposite, so m1 v1 + m2 v2 in
 // the plane is the same before and after. Returns the change (N s); 0 for other events and for a

@@ -27,4 +27,22 @@ std::string writeFailureFile(const std::string& folder, const RandomShot& shot, 
     return path.toStdString();
 }
 
+std::string writeSlowFile(const std::string& folder, const RandomShot& shot, double cpuSeconds, std::size_t events)
+{
+    if (folder.empty()) return {};
+    const long long ms = static_cast<long long>(cpuSeconds * 1000.0);
+    const std::string name = std::string(shot.wide ? "wide-" : "") + "seed" + std::to_string(shot.seed) + "-shot" +
+                             std::to_string(shot.index) + "-slow-" + std::to_string(ms) + "ms";
+    Setup setup = shot.setup;
+    setup.notes = "A slow shot of cuelab-bench --soak" + std::string(shot.wide ? " --wide" : "") + " (class " +
+                  std::string(toString(shot.shotClass)) + "): " + std::to_string(ms) + " ms of CPU for " +
+                  std::to_string(events) + " events. Replay with cuelab-bench --check FILE.";
+    const QDir dir(QString::fromStdString(folder));
+    if (!dir.exists() && !QDir().mkpath(dir.path())) return {};
+    const QString path = dir.filePath(QString::fromStdString(name) + QStringLiteral(".json"));
+    QString error;
+    if (!io::saveSetup(setup, path, &error)) return {};
+    return path.toStdString();
+}
+
 }  // namespace cuelab::soak

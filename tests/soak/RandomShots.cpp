@@ -36,6 +36,28 @@ void randomPhysics(Random& rng, PhysicsParams& p)
     }
 }
 
+void randomPhysicsWide(Random& rng, PhysicsParams& p)
+{
+    p.ballBallModel = rng.chance(0.5) ? BallBallModel::Frictionless : BallBallModel::Frictional;
+    p.ballBallFrictionKind = rng.chance(0.5) ? BallBallFriction::Fixed : BallBallFriction::Alciatore;
+    p.ballBallFriction = rng.uniform(0.0, 0.2);
+    p.ballBallRestitution = rng.chance(0.2) ? 1.0 : rng.uniform(0.5, 1.0);
+    const std::span<const CushionModelEntry> models = cushionModels();
+    const CushionModelEntry& model = models[rng.pick(models.size())];
+    p.ballCushionModel = model.model;
+    p.cushionRestitution = rng.chance(0.1) ? 1.0 : rng.uniform(0.4, 1.0);
+    p.cushionFriction = rng.uniform(0.0, 0.4);
+    for (const CushionModelParameter& q : model.parameters) {
+        if (q.integer)
+            p.*q.field = std::round(std::clamp(rng.uniform(50.0, 400.0), q.min, q.max));
+        else  // the whole legal range
+            p.*q.field = q.min + (q.max - q.min) * rng.uniform();
+    }
+    p.muSlide = rng.uniform(0.05, 0.5);
+    p.muRoll = rng.uniform(0.001, 0.05);
+    p.muSpin = rng.uniform(0.001, 0.1);
+}
+
 BallSize drawSize(Random& rng, const Table& t, bool unequal)
 {
     if (!unequal || rng.chance(0.5)) return {t.ballRadius, t.ballMass};
@@ -227,7 +249,8 @@ std::uint64_t streamSeed(std::uint64_t seed, std::uint64_t index, std::uint64_t 
     return mix(mix(mix(seed) ^ index) ^ stream);
 }
 
-RandomShot generate(detail::Random& rng, std::uint64_t seed, std::uint64_t index, ShotClass c, TableKind table)
+RandomShot generate(detail::Random& rng, std::uint64_t seed, std::uint64_t index, ShotClass c, TableKind table,
+                    bool wide = false)
 {
     for (int attempt = 0;; ++attempt) {
         RandomShot shot;
@@ -235,18 +258,20 @@ RandomShot generate(detail::Random& rng, std::uint64_t seed, std::uint64_t index
         shot.index = index;
         shot.shotClass = c;
         shot.setup.table.kind = table;
-        detail::randomPhysics(rng, shot.setup.physics);
+        shot.wide = wide;
+        if (wide) detail::randomPhysicsWide(rng, shot.setup.physics);
+        else detail::randomPhysics(rng, shot.setup.physics);
         const bool unequal = rng.chance(0.15);
         switch (c) {
         case ShotClass::Property: detail::propertyShot(rng, shot, unequal); break;
         case ShotClass::Cluster: detail::clusterShot(rng, shot, unequal); break;
         case ShotClass::Rail: detail::railShot(rng, shot, unequal); break;
-        case ShotClass::Break: detail::breakShot(rng, shot); break;
+        case ShotClass::Break: detail::breakShot(rng, shot, wide); break;
         case ShotClass::Elevated: detail::elevatedShot(rng, shot, unequal); break;
         case ShotClass::Moving: detail::movingShot(rng, shot, unequal); break;
         }
-        shot.setup.name = "soak seed " + std::to_string(seed) + " shot " + std::to_string(index) + " (" +
-                          std::string(toString(c)) + ")";
+        shot.setup.name = std::string(wide ? "wide " : "") + "soak seed " + std::to_string(seed) + " shot " +
+                          std::to_string(index) + " (" + std::string(toString(c)) + ")";
         // The generators only place balls the validator allows; a whole-setup rule (a cushion higher
         // than a small ball, say) may still refuse one: draw again from the same stream.
         if (!shot.setup.balls.empty() && validateSetup(shot.setup).empty()) return shot;
@@ -278,6 +303,22 @@ std::optional<ShotClass> parseShotClass(std::string_view text)
 
 std::span<const ShotClass> shotClasses() { return kClasses; }
 
+namespace {
+
+// randomShot's class shares (Property 30 %, Cluster 15 %, Rail 15 %, Break 15 %, Elevated 10 %, Moving 15 %).
+ShotClass drawClass(detail::Random& rng)
+{
+    const double k = rng.uniform();
+    return k < 0.30 ? ShotClass::Property
+           : k < 0.45 ? ShotClass::Cluster
+           : k < 0.60 ? ShotClass::Rail
+           : k < 0.75 ? ShotClass::Break
+           : k < 0.85 ? ShotClass::Elevated
+                      : ShotClass::Moving;
+}
+
+}  // namespace
+
 RandomShot randomShot(std::uint64_t seed, std::uint64_t index)
 {
     detail::Random rng(streamSeed(seed, index, 0));
@@ -303,6 +344,22 @@ RandomShot randomShot(std::uint64_t seed, std::uint64_t index, ShotClass shotCla
 {
     detail::Random rng(streamSeed(seed, index, 16 + 8 * static_cast<std::uint64_t>(table) + static_cast<std::uint64_t>(shotClass)));
     return generate(rng, seed, index, shotClass, table);
+}
+
+// (Streams 1000 and up: none of randomShot's.)
+RandomShot wideRandomShot(std::uint64_t seed, std::uint64_t index)
+{
+    detail::Random rng(streamSeed(seed, index, 1000));
+    const ShotClass c = drawClass(rng);
+    const TableKind table = kTables[rng.pick(kTables.size())];
+    return generate(rng, seed, index, c, table, true);
+}
+
+RandomShot wideRandomShot(std::uint64_t seed, std::uint64_t index, ShotClass shotClass)
+{
+    detail::Random rng(streamSeed(seed, index, 1001 + static_cast<std::uint64_t>(shotClass)));
+    const TableKind table = kTables[rng.pick(kTables.size())];
+    return generate(rng, seed, index, shotClass, table, true);
 }
 
 }  // namespace cuelab::soak

@@ -43,6 +43,7 @@ struct RandomShot {
     std::array<int, kPlacements> placed{};  // balls placed by each Placement (Property, Rail, Moving)
     bool moving = false;                    // a ball moves before any strike
     std::string grazed;                     // a grazing shot: the id of the ball it aims past ("" if none)
+    bool wide = false;                      // drawn by wideRandomShot
 };
 
 // The shot `index` of the soak `seed`; its class drawn from the pair (Property 30 %, Cluster 15 %,
@@ -52,5 +53,13 @@ RandomShot randomShot(std::uint64_t seed, std::uint64_t index);
 RandomShot randomShot(std::uint64_t seed, std::uint64_t index, ShotClass shotClass);
 // ... on one table (the property suite runs a row per table).
 RandomShot randomShot(std::uint64_t seed, std::uint64_t index, ShotClass shotClass, TableKind table);
+
+// The widened soak (issue 40, `cuelab-bench --soak ... --wide`): the same classes and shares, with the
+// physics drawn over the whole legal range (randomPhysicsWide: cloth, restitutions down to 0.5 and
+// 0.4 and up to 1, elastic balls, soft and lively cushions, both ball-ball laws, every cushion model)
+// and racks struck from anywhere on the table. Its own streams: randomShot's shots stay the same for
+// every seed.
+RandomShot wideRandomShot(std::uint64_t seed, std::uint64_t index);
+RandomShot wideRandomShot(std::uint64_t seed, std::uint64_t index, ShotClass shotClass);
 
 }  // namespace cuelab::soak

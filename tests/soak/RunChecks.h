@@ -37,6 +37,8 @@ struct Failure {
 struct CheckOptions {
     double overlapTolerance = 1e-9;  // m, as the validator's kOverlapTolerance
     double energyTolerance = 1e-12;  // of the shot's initial kinetic energy (J / J)
+    double eventEnergyTolerance = 1e-12;  // of the energy of the balls an event lists (J / J)
+    double eventEnergyRounding = 1e-13;   // of the shot's initial energy: a held group solve's rounding (J / J)
     int samplesPerGap = 1;           // extra instants between consecutive distinct event times
     int uniformSamples = 200;        // instants spread evenly over [0, end_time]
     bool determinism = true;         // simulate again and compare the events bit for bit
@@ -48,6 +50,7 @@ struct RunMeasures {
     double worstEnergyRise = 0.0;      // J, the largest rise between consecutive instants
     double initialEnergy = 0.0;        // J, just after the strike (t = 0)
     double worstMomentumChange = 0.0;  // N s, over the ball-ball events and groups checked
+    double worstEventEnergyRise = 0.0;  // of its balls' energy, the largest rise at one event beyond the rounding allowance
 };
 
 // The failures of `result`, a run of `setup`, at most one per kind (the first found), in the order of

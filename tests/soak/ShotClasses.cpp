@@ -156,7 +156,7 @@ void railShot(Random& rng, RandomShot& shot, bool unequal)
 // An 8-ball or 9-ball rack (Racks.h) on the table's foot spot, broken by a cue ball from a random free
 // spot in the head half of the table, aimed at the apex give or take a few degrees (sometimes 20), with
 // a random tip offset, a cue speed of 0.5 to 10 m/s, sometimes a little elevation.
-void breakShot(Random& rng, RandomShot& shot)
+void breakShot(Random& rng, RandomShot& shot, bool anywhere)
 {
     Setup& s = shot.setup;
     const Table t = makeTable(s.table);
@@ -165,12 +165,13 @@ void breakShot(Random& rng, RandomShot& shot)
     const BallSize size{t.ballRadius, t.ballMass};
     bool placed = false;
     for (int tries = 0; tries < 200 && !placed; ++tries)
-        placed = addBall(s, "cue", Vec2(t.length * 0.5 * rng.uniform(), t.width * rng.uniform()), size);
+        placed = addBall(s, "cue", Vec2(t.length * (anywhere ? 1.0 : 0.5) * rng.uniform(), t.width * rng.uniform()), size);
     if (!placed) return;
     const std::size_t cue = s.balls.size() - 1;
     CueStrike strike = randomStrike(rng, s, cue, 0.5, 10.0);
     const double jitter = rng.chance(0.7) ? 2.0 : 20.0;  // degrees
-    strike.headingDeg = headingTo(s.balls[cue].state.position, footSpot(t)) + jitter * (2.0 * rng.uniform() - 1.0);
+    const Vec2 target = anywhere ? s.balls[rng.pick(cue)].state.position : footSpot(t);
+    strike.headingDeg = headingTo(s.balls[cue].state.position, target) + jitter * (2.0 * rng.uniform() - 1.0);
     strike.elevationDeg = rng.chance(0.15) ? 10.0 * rng.uniform() : 0.0;
     s.shot = strike;
 }

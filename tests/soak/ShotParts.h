@@ -32,6 +32,10 @@ private:
 // registry with its own parameters (mathavan2010 with a modest step count), the cloth's friction
 // within its measured range.
 void randomPhysics(Random& rng, PhysicsParams& p);
+// The same over the whole legal range (wideRandomShot): ball-ball restitution 0.5-1 (a fifth exactly
+// 1, elastic balls), cushion restitution 0.4-1 (a tenth exactly 1) and friction 0-0.4, ball-ball
+// friction 0-0.2, the cloth's mu_s 0.05-0.5, mu_r 0.001-0.05, mu_sp 0.001-0.1.
+void randomPhysicsWide(Random& rng, PhysicsParams& p);
 
 // A ball radius for the setup: the table's, or (when `unequal`) within 15 % of it, its mass in
 // proportion to its volume.
@@ -73,7 +77,8 @@ void propertyShot(Random& rng, RandomShot& shot, bool unequal);
 void movingShot(Random& rng, RandomShot& shot, bool unequal);
 void clusterShot(Random& rng, RandomShot& shot, bool unequal);
 void railShot(Random& rng, RandomShot& shot, bool unequal);
-void breakShot(Random& rng, RandomShot& shot);
+// `anywhere`: the cue ball anywhere on the table, aimed at any ball of the rack (wideRandomShot).
+void breakShot(Random& rng, RandomShot& shot, bool anywhere = false);
 void elevatedShot(Random& rng, RandomShot& shot, bool unequal);
 
 }  // namespace cuelab::soak::detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <mutex>
@@ -39,13 +40,18 @@ void merge(SoakSummary& into, SoakSummary& part)
     keepWorst(into.worstOverlap, part.worstOverlap);
     keepWorst(into.slowest, part.slowest);
     keepWorst(into.mostEvents, part.mostEvents);
+    keepWorst(into.mostSegments, part.mostSegments);
+    keepWorst(into.worstEventEnergyRise, part.worstEventEnergyRise);
+    into.shotCpuSeconds.insert(into.shotCpuSeconds.end(), part.shotCpuSeconds.begin(), part.shotCpuSeconds.end());
+    for (SoakFailure& f : part.slowShots) into.slowShots.push_back(std::move(f));
     for (SoakFailure& f : part.failures) into.failures.push_back(std::move(f));
 }
 
 // One shot: drawn, simulated, judged, and written when it fails.
 void runShot(const SoakOptions& o, std::uint64_t index, SoakSummary& part)
 {
-    const RandomShot shot = o.onlyClass ? randomShot(o.seed, index, *o.onlyClass) : randomShot(o.seed, index);
+    const RandomShot shot = o.wide ? (o.onlyClass ? wideRandomShot(o.seed, index, *o.onlyClass) : wideRandomShot(o.seed, index))
+                                   : (o.onlyClass ? randomShot(o.seed, index, *o.onlyClass) : randomShot(o.seed, index));
     SimulationOptions simulation;
     simulation.maxEvents = o.maxEvents;
     simulation.strikeKeepsElevation = o.strikeKeepsElevation;
@@ -63,6 +69,13 @@ void runShot(const SoakOptions& o, std::uint64_t index, SoakSummary& part)
     keepWorst(part.worstOverlap, {index, c, m.worstOverlap});
     keepWorst(part.slowest, {index, c, cpu});
     keepWorst(part.mostEvents, {index, c, static_cast<double>(r.events.size())});
+    std::size_t segments = 0;
+    for (const auto& timeline : r.timelines) segments += timeline.size();
+    keepWorst(part.mostSegments, {index, c, static_cast<double>(segments)});
+    keepWorst(part.worstEventEnergyRise, {index, c, m.worstEventEnergyRise});
+    part.shotCpuSeconds.push_back(cpu);
+    if (o.slowMs > 0.0 && cpu * 1000.0 > o.slowMs)
+        part.slowShots.push_back(SoakFailure{index, c, {}, writeSlowFile(o.outDir, shot, cpu, r.events.size())});
     if (failures.empty()) return;
     ++part.failedShots;
     for (const Failure& f : failures) ++part.failuresPerKind[static_cast<std::size_t>(f.kind)];
@@ -120,6 +133,9 @@ SoakSummary runSoak(const SoakOptions& options, const SoakProgress& progress)
     for (SoakSummary& part : parts) merge(summary, part);
     std::sort(summary.failures.begin(), summary.failures.end(),
               [](const SoakFailure& a, const SoakFailure& b) { return a.index < b.index; });
+    std::sort(summary.slowShots.begin(), summary.slowShots.end(),
+              [](const SoakFailure& a, const SoakFailure& b) { return a.index < b.index; });
+    std::sort(summary.shotCpuSeconds.begin(), summary.shotCpuSeconds.end());
     summary.shots = std::max(0LL, options.count);
     summary.first = options.first;
     summary.seed = options.seed;
@@ -127,6 +143,14 @@ SoakSummary runSoak(const SoakOptions& options, const SoakProgress& progress)
     summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
     summary.cpuSeconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
     return summary;
+}
+
+double cpuQuantile(const SoakSummary& s, double q)
+{
+    if (s.shotCpuSeconds.empty()) return 0.0;
+    const double n = static_cast<double>(s.shotCpuSeconds.size());
+    const std::size_t rank = static_cast<std::size_t>(std::clamp(std::ceil(q * n), 1.0, n));
+    return s.shotCpuSeconds[rank - 1];
 }
 
 SoakSummary runSoak(long long count, std::uint64_t seed, int jobs)
@@ -156,7 +180,21 @@ std::string toJson(const SoakSummary& s, std::size_t listed)
     out += "},\n \"worst_energy_rise_J\": " + figureJson(s.worstEnergyRise) +
            ",\n \"worst_relative_energy_rise\": " + figureJson(s.worstRelativeEnergyRise) +
            ",\n \"worst_overlap_m\": " + figureJson(s.worstOverlap) + ",\n \"slowest_shot_cpu_s\": " + figureJson(s.slowest) +
-           ",\n \"most_events\": " + figureJson(s.mostEvents) + ",\n \"failures\": [";
+           ",\n \"most_events\": " + figureJson(s.mostEvents) + ",\n \"most_segments\": " + figureJson(s.mostSegments) +
+           ",\n \"worst_event_energy_rise\": " + figureJson(s.worstEventEnergyRise);
+    {
+        char q[256];
+        std::snprintf(q, sizeof q,
+                      ",\n \"shot_cpu_ms\": {\"median\": %.4g, \"p99\": %.4g, \"p99.9\": %.4g, \"p99.99\": %.4g, \"max\": %.4g}",
+                      1e3 * cpuQuantile(s, 0.5), 1e3 * cpuQuantile(s, 0.99), 1e3 * cpuQuantile(s, 0.999), 1e3 * cpuQuantile(s, 0.9999),
+                      1e3 * cpuQuantile(s, 1.0));
+        out += q;
+    }
+    out += ",\n \"slow_shots\": [";
+    for (std::size_t k = 0; k < s.slowShots.size() && k < listed; ++k)
+        out += (k ? ", " : "") + std::string("{\"shot\": ") + std::to_string(s.slowShots[k].index) + ", \"file\": " +
+               jsonString(s.slowShots[k].file) + "}";
+    out += "],\n \"failures\": [";
     for (std::size_t k = 0; k < s.failures.size() && k < listed; ++k) {
         const SoakFailure& f = s.failures[k];
         out += (k ? ",\n  " : "\n  ") + std::string("{\"shot\": ") + std::to_string(f.index) + ", \"class\": \"" +

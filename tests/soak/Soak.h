@@ -25,6 +25,8 @@ struct SoakOptions {
     CheckOptions checks;         // checks.determinism: simulate every shot twice
     long long maxEvents = 200000;        // the simulator's event cap (SimulationOptions::maxEvents)
     bool strikeKeepsElevation = true;    // SimulationOptions::strikeKeepsElevation (its default; --level: off)
+    bool wide = false;                   // draw wideRandomShot's shots (--wide)
+    double slowMs = 0.0;                 // ms: a shot whose simulate takes longer is written to outDir (> 0)
 };
 
 // One failing shot.
@@ -59,12 +61,21 @@ struct SoakSummary {
     ShotFigure worstOverlap;              // m
     ShotFigure slowest;                   // s, processor time of one shot's simulate
     ShotFigure mostEvents;                // events
+    ShotFigure mostSegments;              // motion segments of all timelines (memory grows with them)
+    ShotFigure worstEventEnergyRise;      // of its balls' energy, the largest rise at one event
+    std::vector<double> shotCpuSeconds;   // s, every shot's simulate (sorted once the soak is done)
+    std::vector<SoakFailure> slowShots;   // over slowMs, by index (failures empty; file as a failure's)
     std::vector<SoakFailure> failures;    // by index
 };
+
+// The q-quantile (0..1) of the sorted per-shot times (nearest rank), 0 when there are none.
+double cpuQuantile(const SoakSummary& summary, double q);
 
 // Writes a failing setup; returns the file's path, or "" when it could not (soak's FailureFile.cpp
 // uses the project's setup saver, core/io).
 std::string writeFailureFile(const std::string& folder, const RandomShot& shot, const std::vector<Failure>& failures);
+// A slow shot (over SoakOptions::slowMs) as a setup file: seed<S>-shot<I>-slow-<ms>ms.json.
+std::string writeSlowFile(const std::string& folder, const RandomShot& shot, double cpuSeconds, std::size_t events);
 
 // Called after each shot with (shots done, shots in all); from the worker threads, one at a time.
 using SoakProgress = std::function<void(long long done, long long count)>;
