@@ -124,8 +124,8 @@ void TestCancel::cancelFromAnotherThread_data()
 
 void TestCancel::cancelFromAnotherThread()
 {
-    // The slow shots (repros of issue 40: minutes of held-group solves): a stop asked from another
-    // thread a fifth of a second in is answered at once. (The latency itself is a benchmark figure,
+    // The long runs (fixtures/slow: setups that still cost the simulator seconds): a stop asked from
+    // another thread a fifth of a second in is answered at once. (The latency itself is a benchmark figure,
     // `cuelab-bench --cancel`; the bound here only catches a run that no longer looks at its token.)
     QFETCH(QString, file);
     const Setup setup = loadFixture(file);
