@@ -14,8 +14,9 @@ std::string writeFailureFile(const std::string& folder, const RandomShot& shot, 
 {
     if (folder.empty() || failures.empty()) return {};
     // seed7-shot77211-energy+timeline.json: the soak's seed and the shot's index find it again
-    // (randomShot(seed, index)); the kinds say what failed, the notes say how.
-    std::string name = "seed" + std::to_string(shot.seed) + "-shot" + std::to_string(shot.index) + "-";
+    // (randomShot(seed, index); wide-seed7-...: wideRandomShot); the kinds say what failed, the notes
+    // say how.
+    std::string name = std::string(shot.wide ? "wide-" : "") + "seed" + std::to_string(shot.seed) + "-shot" + std::to_string(shot.index) + "-";
     for (std::size_t k = 0; k < failures.size(); ++k) name += (k ? "+" : "") + std::string(toString(failures[k].kind));
     Setup setup = shot.setup;
     setup.notes = "A failure of cuelab-bench --soak (class " + std::string(toString(shot.shotClass)) + "):\n" + describe(failures);
