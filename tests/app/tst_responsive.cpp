@@ -79,7 +79,7 @@ void TestResponsive::openingAnotherFileReplacesASlowRun()
     QVERIFY(waitForPending(d));
     const std::size_t slowBalls = d->setup().balls.size();
     // The view shows the slow file's balls where they start, not the two-ball shot before it.
-    QCOMPARE(window_->findChild<TableView*>()->scene().result->balls.size(), slowBalls);
+    QCOMPARE(window_->tableView()->scene().result->balls.size(), slowBalls);
     auto* overlay = window_->findChild<SimulationOverlay*>();
     QVERIFY(overlay);
     QVERIFY2(overlay->text().startsWith(QStringLiteral("Simulating")), qPrintable(overlay->text()));

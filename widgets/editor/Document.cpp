@@ -32,6 +32,9 @@ constexpr double kEditorGap = 1e-4;
 constexpr int kPendingMs = 60;
 // ms between two copies of a long run's result so far.
 constexpr int kStreamMs = 250;
+// ms: during a drag, a whole result of a setup a step behind the pointer is shown when none was for so
+// long (the pointer outruns the results when each frame takes longer than a mouse event's interval).
+constexpr qint64 kInterimMs = 30;
 
 // The setup as it stands before any event, as a result in progress: the balls where they start and
 // the strike at t = 0 (a run stopped before its first step).
@@ -113,9 +116,15 @@ Document::Document(QObject* parent)
     });
     connect(runner_, &SimulationRunner::snapshot, this, [this](quint64 generation, std::shared_ptr<const SimulationResult> sofar) {
         if (generation != generation_ || !running_ || !pendingShown_) return;
-        result_ = std::move(sofar);
-        resultGeneration_ = generation;
-        emit resultChanged();
+        publish(std::move(sofar), generation);
+    });
+    connect(runner_, &SimulationRunner::superseded, this, [this](const SimulationOutcome& outcome) {
+        // A drag's older setup, computed whole: shown while the drag goes on, if nothing newer is shown
+        // and the last result shown is old enough (a frame or two: the pointer's result follows).
+        if (dragFrom_ == 0 || outcome.generation < dragFrom_ || outcome.generation >= generation_) return;
+        if (resultGeneration_ >= outcome.generation) return;
+        if (lastShown_.isValid() && lastShown_.elapsed() < kInterimMs) return;
+        publish(outcome.result, outcome.generation);
     });
     pending_->setSingleShot(true);
     pending_->setInterval(kPendingMs);
@@ -243,7 +252,10 @@ bool Document::edit(const QString& text, const Setup& edited, MergeKey merge)
     // The lesson's questions follow renamed balls and drop removed ones (core/lesson/LessonIds.h).
     Setup after = edited;
     lesson::followBallIds(setup_, after);
+    noteEdit(merge);
+    editing_ = true;
     undoStack_->push(new SetupCommand(this, text, setup_, after, merge, mergeSession_));
+    editing_ = false;
     return true;
 }
 
@@ -256,11 +268,18 @@ bool Document::editBall(int index, const QString& text, const Setup& edited, Mer
     }
     Setup after = edited;
     lesson::followBallIds(setup_, after);
+    noteEdit(merge);
+    editing_ = true;
     undoStack_->push(new SetupCommand(this, text, setup_, after, merge, mergeSession_));
+    editing_ = false;
     return true;
 }
 
-void Document::endMerge() { ++mergeSession_; }
+void Document::endMerge()
+{
+    ++mergeSession_;
+    dragFrom_ = 0;  // the drag is over: only its last setup's result counts now
+}
 
 bool Document::moveBall(int index, const Vec2& position)
 {
@@ -457,6 +476,7 @@ void Document::applySetup(const Setup& setup)
     // Notes written (or taken back) now are written for this setup.
     if (setup.notes != setup_.notes) notesSetup_ = setup;
     setup_ = setup;
+    if (!editing_) dragFrom_ = 0;  // undo, redo, open: no drag's older results after it
     ++generation_;
     emit setupChanged();
     startSimulation();
@@ -480,9 +500,7 @@ void Document::showPending()
     if (!running_) return;
     // The new setup as it stands at t = 0, at once; then its events as they are computed.
     pendingShown_ = true;
-    result_ = startOf(setup_);
-    resultGeneration_ = generation_;
-    emit resultChanged();
+    publish(startOf(setup_), generation_);
     runner_->requestSnapshot();
     stream_->start();
 }
@@ -500,11 +518,26 @@ void Document::simulationFinished(const SimulationOutcome& outcome)
     running_ = false;
     emit simulatingChanged(false);
     if (!outcome.error.isEmpty()) emit simulationFailed(outcome.error);
-    if (outcome.result) {
-        result_ = outcome.result;
-        resultGeneration_ = outcome.generation;
-        emit resultChanged();
-    }
+    if (outcome.result) publish(outcome.result, outcome.generation);
+}
+
+void Document::publish(std::shared_ptr<const SimulationResult> result, quint64 generation)
+{
+    result_ = std::move(result);
+    resultGeneration_ = generation;
+    lastShown_.start();
+    emit resultChanged();
+}
+
+void Document::noteEdit(MergeKey merge)
+{
+    const bool continues = dragFrom_ != 0 && merge.kind != MergeKind::None && merge.kind == dragKey_.kind &&
+                           merge.target == dragKey_.target && mergeSession_ == dragSession_;
+    if (continues) return;
+    // A merging edit may begin a drag (its later steps merge with it); any other edit ends one.
+    dragFrom_ = merge.kind != MergeKind::None ? generation_ + 1 : 0;
+    dragKey_ = merge;
+    dragSession_ = mergeSession_;
 }
 
 void Document::waitForResult()

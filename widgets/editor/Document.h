@@ -11,6 +11,7 @@
 #include "Setup.h"
 #include "Simulation.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -142,6 +143,8 @@ private:
     void startSimulation();
     void showPending();  // the current run takes a while: show its result so far
     void simulationFinished(const SimulationOutcome& outcome);
+    void publish(std::shared_ptr<const SimulationResult> result, quint64 generation);
+    void noteEdit(MergeKey merge);  // before an edit's command is pushed: a drag begins, goes on or ends
 
     Setup setup_;
     Setup notesSetup_;
@@ -156,6 +159,14 @@ private:
     QTimer* pending_;  // a run still going after a moment is shown as it goes
     QTimer* stream_;   // while shown, its result so far is fetched a few times a second
     bool pendingShown_ = false;  // the current run is shown as it goes
+    // A drag (edits that merge into one undo step) shows the newest whole result of its setups while it
+    // goes, a few dozen times a second, even one a step behind the pointer: the generation the drag
+    // began with (0: no drag), and when a result was last shown.
+    quint64 dragFrom_ = 0;
+    MergeKey dragKey_;
+    int dragSession_ = -1;
+    QElapsedTimer lastShown_;
+    bool editing_ = false;  // an edit's command is being pushed (applySetup from edit(), not undo/redo)
     quint64 generation_ = 0;        // bumped by every change of the setup
     quint64 resultGeneration_ = 0;  // the generation result_ was computed for
     bool running_ = false;

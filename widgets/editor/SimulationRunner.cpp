@@ -108,7 +108,10 @@ void SimulationRunner::report(const std::shared_ptr<Job>& job, qint64 events, do
 
 void SimulationRunner::end(const std::shared_ptr<Job>& job, const SimulationOutcome& outcome)
 {
-    if (job != current_ || job->dropped) return;
+    if (job != current_ || job->dropped) {
+        if (outcome.result && outcome.result->finished()) emit superseded(outcome);
+        return;
+    }
     current_.reset();
     emit finished(outcome);
 }

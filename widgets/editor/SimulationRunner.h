@@ -47,6 +47,9 @@ signals:
     void snapshot(quint64 generation, std::shared_ptr<const SimulationResult> sofar);
     // The current run ended: finished, cut short, cancelled or failed.
     void finished(const SimulationOutcome& outcome);
+    // A run that a newer one replaced had already finished (a whole run, of an older setup): the
+    // document may show it while a drag goes on (the newest run's result follows).
+    void superseded(const SimulationOutcome& outcome);
 
 private:
     struct Job;
