@@ -8,6 +8,7 @@
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QPointer>
+#include <QScrollBar>
 #include <QTimer>
 #include <QWheelEvent>
 
@@ -20,6 +21,9 @@ InputGuard::InputGuard(QWidget* window) : QObject(window), window_(window)
 
 bool InputGuard::isWheelGuarded(const QWidget* widget)
 {
+    // A scroll bar is a slider too, but scrolling is what the wheel is for: a list's or a text's
+    // scroll bar (to which its viewport hands the wheel) scrolls without the focus (issue 44).
+    if (qobject_cast<const QScrollBar*>(widget)) return false;
     return qobject_cast<const QAbstractSlider*>(widget) || qobject_cast<const QAbstractSpinBox*>(widget) ||
            qobject_cast<const QComboBox*>(widget);
 }

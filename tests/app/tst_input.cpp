@@ -27,6 +27,8 @@
 #include <QTextBrowser>
 #include <QTreeWidget>
 #include <QUndoStack>
+#include <QScrollBar>
+#include <QTreeView>
 #include <QtTest>
 
 using namespace cuelab;
@@ -114,6 +116,32 @@ private slots:
         QVERIFY(w.document()->setup().shot->headingDeg != heading);
         QVERIFY(w.document()->isModified());
         QVERIFY(InputGuard::wheelMayChange(slider));
+    }
+
+    // Issue 44: the wheel scrolls a list or a text without the focus (their scroll bars are sliders,
+    // but not editors of a value): the Events list of a break scrolls under the wheel.
+    void wheelScrollsListsWithoutFocus()
+    {
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(activate(w));
+        QVERIFY(w.openExample(QStringLiteral(":/examples/9-ball-break.json")));
+        w.document()->waitForResult();
+        QTreeView* events = nullptr;
+        for (QTreeView* t : w.findChildren<QTreeView*>())
+            if (t->model() && t->model()->rowCount() > 30 && t->isVisible()) events = t;
+        QVERIFY(events);
+        w.tableView()->setFocus();
+        QVERIFY(!events->hasFocus());
+        QScrollBar* bar = events->verticalScrollBar();
+        QVERIFY(bar->maximum() > 0);
+        bar->setValue(bar->maximum());
+        const int before = bar->value();
+        QVERIFY(!InputGuard::isWheelGuarded(bar));
+        QVERIFY(wheel(events->viewport()));  // a notch up
+        QVERIFY2(bar->value() < before, qPrintable(QStringLiteral("%1 -> %2").arg(before).arg(bar->value())));
+        QVERIFY(!w.document()->isModified());
     }
 
     // Enter commits the field; Ctrl+Z then undoes that edit in the document although the field
