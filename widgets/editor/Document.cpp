@@ -517,7 +517,9 @@ void Document::simulationFinished(const SimulationOutcome& outcome)
     stream_->stop();
     running_ = false;
     emit simulatingChanged(false);
-    if (!outcome.error.isEmpty()) emit simulationFailed(outcome.error);
+    // (A run the user cancelled did not fail: every panel says where it stopped.)
+    const bool cancelled = outcome.result && outcome.result->status == SimulationStatus::Cancelled;
+    if (!outcome.error.isEmpty() && !cancelled) emit simulationFailed(outcome.error);
     if (outcome.result) publish(outcome.result, outcome.generation);
 }
 

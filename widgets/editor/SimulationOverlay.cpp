@@ -26,6 +26,11 @@ SimulationOverlay::SimulationOverlay(Document* document, QWidget* view)
     cancel_->setObjectName(QStringLiteral("simulationOverlayCancel"));
     cancel_->setToolTip(tr("Stop the simulation: the events computed so far stay, marked as a partial result (Esc)"));
     connect(cancel_, &QPushButton::clicked, document_, &Document::cancelSimulation);
+    // The note keeps its height when Cancel goes (the GL view under it is not always drawn again
+    // where a child widget shrank away).
+    QSizePolicy keep = cancel_->sizePolicy();
+    keep.setRetainSizeWhenHidden(true);
+    cancel_->setSizePolicy(keep);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(10, 4, 6, 4);
     layout->addWidget(label_, 1);
@@ -74,7 +79,11 @@ void SimulationOverlay::place()
     constexpr int kMargin = 8;  // px from the view's edges
     const QSize wanted = sizeHint();
     const int width = std::min(wanted.width(), std::max(0, over->width() - 2 * kMargin));
+    const QRect was = geometry();
     setGeometry(kMargin, std::max(0, over->height() - wanted.height() - kMargin), width, wanted.height());
+    // A narrower note (Cancel gone) leaves part of the view it covered: the view draws that part again
+    // (the GL view is not told by itself). Not when it only grows or stays: no redraw per progress line.
+    if (isVisible() && !geometry().contains(was)) parentWidget()->update();
 }
 
 }  // namespace cuelab
