@@ -12,6 +12,7 @@ packages=(
   libqt6opengl6-dev                          # Qt6::OpenGLWidgets (QOpenGLWidget)
   libgl-dev libgl1-mesa-dri                  # OpenGL headers; Mesa's llvmpipe software renderer
   libeigen3-dev                              # Eigen 3.4 (the physics core's only dependency)
+  zlib1g-dev                                 # zlib: shot codes (core/io/ShotCode.cpp)
   qt6-charts-dev                             # Qt Charts: plots, error and polynomial charts
   qt6-svg-dev                                # Qt SVG: shot diagrams (QSvgGenerator) and their tests
   qt6-l10n-tools qt6-tools-dev               # Qt Linguist tools: lupdate/lrelease and their CMake (Qt6LinguistTools)

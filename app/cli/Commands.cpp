@@ -15,6 +15,7 @@ Command sweepCommand();
 Command oddsCommand();
 Command fitCommand();
 Command calibrateCommand();
+Command codeCommand();
 
 const QList<Command>& commands()
 {
@@ -29,6 +30,7 @@ const QList<Command>& commands()
         oddsCommand(),
         fitCommand(),
         calibrateCommand(),
+        codeCommand(),
     };
     return all;
 }

@@ -6,6 +6,7 @@
 #include "Override.h"
 #include "Refusal.h"
 #include "SetupFile.h"
+#include "ShotCode.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -48,7 +49,9 @@ std::optional<long long> Invocation::wholeNumber(const QString& option, long lon
 
 QString Invocation::setupName() const
 {
-    return setupPath_ == QLatin1String("-") ? QStringLiteral("<stdin>") : QFileInfo(setupPath_).fileName();
+    if (setupPath_ == QLatin1String("-")) return QStringLiteral("<stdin>");
+    if (io::isShotCode(setupPath_)) return QStringLiteral("shot code");
+    return QFileInfo(setupPath_).fileName();
 }
 
 std::optional<Setup> Invocation::loadSetup(int* status) const

@@ -2,6 +2,8 @@
 
 #include "SetupFile.h"
 
+#include "ShotCode.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QSaveFile>
@@ -10,6 +12,7 @@ namespace cuelab::io {
 
 std::optional<Setup> loadSetup(const QString& path, QString* error)
 {
+    if (isShotCode(path)) return parseShotCode(path, error);  // CONTRACT.md: a code wherever a path is
     const QString name = QFileInfo(path).fileName();
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {

@@ -15,7 +15,8 @@ namespace cuelab::io {
 // overlaps ball \"7\" by 2.1 mm"). On refusal returns nullopt and sets *error; never half-loads.
 std::optional<Setup> parseSetup(const QByteArray& json, const QString& fileName, QString* error);
 
-// Reads and parses a file; messages name the file by its name without the folder.
+// Reads and parses a file; messages name the file by its name without the folder. A shot code
+// ("cuelab:1:...", ShotCode.h) in place of the path is read as the setup it holds.
 std::optional<Setup> loadSetup(const QString& path, QString* error);
 
 // The JSON text of a setup (same format, keys in CONTRACT.md's order, numbers with round-trip

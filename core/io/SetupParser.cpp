@@ -5,6 +5,7 @@
 // are only formatted here.
 
 #include "JsonDuplicateKeys.h"
+#include "KindDefaults.h"
 #include "LegalSetup.h"
 #include "SetupFile.h"
 #include "SetupProblem.h"
@@ -264,11 +265,12 @@ void parseBallTable(const QJsonValue& value, const QString& path, PhysicsParams&
     if (const auto mu = in.optionalNumber("friction")) p.tableFriction = *mu;
 }
 
-PhysicsParams parsePhysics(const QJsonValue& value)
+// A key left out takes the table kind's default (`defaults`: KindDefaults.h).
+PhysicsParams parsePhysics(const QJsonValue& value, const PhysicsParams& defaults)
 {
     const ObjectReader in(value, QStringLiteral("physics"),
                           {"gravity", "mu_slide", "mu_roll", "mu_spin", "ball_ball", "ball_cushion", "ball_table"});
-    PhysicsParams p;
+    PhysicsParams p = defaults;
     if (const auto g = in.optionalNumber("gravity")) p.gravity = *g;
     if (const auto mu = in.optionalNumber("mu_slide")) p.muSlide = *mu;
     if (const auto mu = in.optionalNumber("mu_roll")) p.muRoll = *mu;
@@ -382,7 +384,9 @@ Setup parseDocument(const QJsonValue& document)
     setup.name = in.optionalString("name").value_or(QString()).toStdString();
     setup.notes = in.optionalString("notes").value_or(QString()).toStdString();
     if (in.has("table")) setup.table = parseTable(in.value("table"));
-    if (in.has("physics")) setup.physics = parsePhysics(in.value("physics"));
+    // A table kind brings its own cloth: a carom table's keys left out are carom cloth's.
+    setup.physics = defaultPhysics(setup.table.kind);
+    if (in.has("physics")) setup.physics = parsePhysics(in.value("physics"), setup.physics);
     setup.balls = parseBalls(in.required("balls"), makeTable(setup.table.kind));
     if (in.has("shot")) setup.shot = parseShot(in.value("shot"));
     if (in.has("simulation")) setup.simulation = parseSimulation(in.value("simulation"));

@@ -1,5 +1,6 @@
 #include "RecordingSetup.h"
 
+#include "KindDefaults.h"
 #include "LegalPlacement.h"
 #include "LegalSetup.h"
 #include "Simulation.h"
@@ -67,6 +68,7 @@ std::optional<Setup> setupFromRecording(const Recording& recording)
     Setup setup;
     setup.name = recording.name;
     setup.table = recording.table;
+    setup.physics = defaultPhysics(recording.table.kind);  // a carom recording gets carom cloth
     const Table table = makeTable(recording.table);
     for (const RecordedBall& b : recording.balls) {
         Ball ball;
