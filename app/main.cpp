@@ -16,6 +16,7 @@
 #include <QMessageBox>
 #include <QSurfaceFormat>
 #include <QTimer>
+#include <QUrl>
 
 #include <cstdio>
 #include <optional>
@@ -149,7 +150,11 @@ int main(int argc, char* argv[])
     }
     if (!args.isEmpty()) {
         // After the window is up, so that a refused file's message has a window to sit on.
-        QTimer::singleShot(0, &window, [&window, path = args.front()] { window.openFile(path); });
+        // A launcher passes a file as a path or a file: URL (the desktop entry's %u); a cuelab: link is
+        // a shot code and opens as one.
+        QString path = args.front();
+        if (path.startsWith(QLatin1String("file:"))) path = QUrl(path).toLocalFile();
+        QTimer::singleShot(0, &window, [&window, path] { window.openFile(path); });
     }
     if (parser.isSet(QStringLiteral("recording"))) {
         // After the setup (when one is given), so that the recording meets its balls.

@@ -17,6 +17,7 @@ void installFeatures(MainWindow& window)
     installRecording(window);
     installPredict(window);
     installVideo(window);
+    installShotCode(window);
 }
 
 }  // namespace cuelab

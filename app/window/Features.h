@@ -24,6 +24,7 @@ void installCompare(MainWindow& window);  // features/CompareFeature.cpp
 void installRecording(MainWindow& window);  // features/RecordingFeature.cpp: recorded shots (issue 24)
 void installPredict(MainWindow& window);  // features/PredictFeature.cpp: predict, then reveal (issue 22)
 void installVideo(MainWindow& window);    // features/VideoFeature.cpp: File > Export > Video (issue 22)
+void installShotCode(MainWindow& window);  // features/ShotCodeFeature.cpp: Edit > Copy/Paste Shot Code (issue 44)
 
 // Opens a recording file in the window's Recording dock (RecordingFeature.cpp). A recording of balls
 // the shot lacks starts a new shot from the recording, after asking when `ask` and the current shot

@@ -11,6 +11,7 @@
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
 #include "editor/EventsPanel.h"
+#include "editor/ResultFeed.h"
 #include "editor/InspectorPanel.h"
 #include "editor/PhysicsPanel.h"
 #include "editor/Playback.h"
@@ -96,6 +97,7 @@ MainWindow::MainWindow(QWidget* parent)
     layout_->arrange(Arrangement::Default);
 
     connect(document_, &Document::resultChanged, this, &MainWindow::onResultChanged);
+    ResultFeed::follow(document_, this, [this] { refreshResultLists(); });
     // The drag keeps clear of the setup's balls, not of the last result's (which lags behind while
     // a re-simulation runs); a dropped ball moved to a free spot says so.
     view_->setSetupBalls(document_->setup().balls);
@@ -311,12 +313,20 @@ void MainWindow::onResultChanged()
     transport_->refreshTimeline();
     view_->setScene(ViewScene{result, document_->setup().shot});
     view_->setTime(playback_->time());
-    events_->setResult(result);
-    events_->setTime(playback_->time());
     if (selection_->event() >= static_cast<int>(result->events.size())) selection_->selectEvent(-1);
-    else events_->setSelectedEvent(selection_->event());
     if (selection_->ball() >= static_cast<int>(result->balls.size())) selection_->selectBall(-1);
     refreshInspector();
+}
+
+// The Events list and the summary beside it: every result, a few times a second during a drag
+// (ResultFeed), while the view above shows each one.
+void MainWindow::refreshResultLists()
+{
+    const auto result = document_->result();
+    if (!result) return;
+    events_->setResult(result);
+    events_->setTime(playback_->time());
+    events_->setSelectedEvent(selection_->event());
 
     QString summary = tr("%n event(s), at rest at %1", nullptr, static_cast<int>(result->events.size()))
                           .arg(formatQuantity(result->endTime, QStringLiteral("s"), 3));

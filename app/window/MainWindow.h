@@ -126,6 +126,7 @@ private:
     void about();
 
     void onResultChanged();
+    void refreshResultLists();
     void scopeForBusyShot();  // a setup with many balls opens with the struck ball's paths and times
 
     void onTimeChanged(double seconds);

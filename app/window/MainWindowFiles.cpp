@@ -109,9 +109,14 @@ bool MainWindow::openFile(const QString& path)
         showError(tr("Cannot Open Setup"), error);
         return false;
     }
-    recentMenu_->add(document_->filePath());
-    QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(path).absolutePath());
-    const QString opened = tr("Opened %1").arg(QDir::toNativeSeparators(document_->filePath()));
+    QString opened;
+    if (document_->filePath().isEmpty()) {  // a shot code (Edit > Paste Shot Code, a cuelab: link)
+        opened = tr("Opened the shot code as %1").arg(document_->displayName());
+    } else {
+        recentMenu_->add(document_->filePath());
+        QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(path).absolutePath());
+        opened = tr("Opened %1").arg(QDir::toNativeSeparators(document_->filePath()));
+    }
     const QString warnings = realPlayWarnings(document_->setup());
     if (warnings.isEmpty()) statusBar()->showMessage(opened, window::kStatusMessageMs);
     else statusBar()->showMessage(tr("%1. Beyond real play: %2").arg(opened, warnings), 3 * window::kStatusMessageMs);

@@ -4,7 +4,8 @@
 //   {"static_fps": ..., "orbit_fps": ..., "overlays_off_fps": ..., "frames": N, "size": "1600x1000"}
 // static_fps: all overlays and their labels, fixed camera, time running through the shot;
 // orbit_fps: the same with the camera orbiting a little every frame (the table must be redrawn);
-// overlays_off_fps: no overlays, fixed camera, time running. Run under `xvfb-run -a`; argument 1 is N.
+// overlays_off_fps: no overlays, fixed camera, time running; labels_off_fps: the overlays without their
+// labels; new_result_fps: as static_fps with the scene's result replaced every frame (a drag). Run under `xvfb-run -a`; argument 1 is N.
 
 #include "OpenGLProbe.h"
 #include "view/OverlayLabels.h"
@@ -33,6 +34,8 @@ constexpr int kWidth = 1600, kHeight = 1000;  // pixels
 struct Pass {
     bool overlays = true;
     bool orbit = false;
+    bool labels = true;      // the labels painted with QPainter over the frame
+    bool newResult = false;  // the scene handed over again every frame, as while a ball is dragged
 };
 
 // Renders `frames` frames the way TableView::paintGL does (renderer, then the labels with QPainter
@@ -53,6 +56,11 @@ double runPass(cuelab::TableRenderer& renderer, const cuelab::ViewScene& scene, 
     for (int f = -1; f < frames; ++f) {
         if (f == 0) clock.start();  // frame -1 warms the caches up and is not counted
         if (pass.orbit) camera.orbit(0.5f, 0.0f);
+        if (pass.newResult) {  // a copy: the renderer sees a result it has not drawn before
+            ViewScene next = scene;
+            next.result = std::make_shared<const SimulationResult>(*scene.result);
+            renderer.setScene(next);
+        }
         RenderFrame frame;
         frame.viewProjection = camera.projection(aspect) * camera.viewMatrix();
         frame.eye = camera.eye();
@@ -62,9 +70,11 @@ double runPass(cuelab::TableRenderer& renderer, const cuelab::ViewScene& scene, 
         frame.time = end * (f + 1) / (frames + 1);  // s: time runs as when the shot plays
         frame.overlays = overlays;
         renderer.render(frame);
-        QPainter painter(&device);
-        paintOverlayLabels(painter, scene, LabelFrame{frame.viewProjection, size, frame.time, overlays, -1});
-        painter.end();
+        if (pass.labels) {
+            QPainter painter(&device);
+            paintOverlayLabels(painter, scene, LabelFrame{frame.viewProjection, size, frame.time, overlays, -1});
+            painter.end();
+        }
         gl.glFinish();
     }
     return frames * 1000.0 / std::max<double>(1.0, static_cast<double>(clock.elapsed()));
@@ -103,7 +113,7 @@ int main(int argc, char** argv)
     QOpenGLFramebufferObjectFormat fboFormat;
     fboFormat.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
     fboFormat.setSamples(0);  // as the view's surface (TableView asks for a single-sampled one)
-    double staticFps = 0.0, orbitFps = 0.0, offFps = 0.0;
+    double staticFps = 0.0, orbitFps = 0.0, offFps = 0.0, labelsOffFps = 0.0, newResultFps = 0.0;
     {
         QOpenGLFramebufferObject fbo(QSize(kWidth, kHeight), fboFormat);
         cuelab::TableRenderer renderer;
@@ -116,12 +126,15 @@ int main(int argc, char** argv)
         staticFps = runPass(renderer, scene, *gl, frames, Pass{true, false});
         orbitFps = runPass(renderer, scene, *gl, frames, Pass{true, true});
         offFps = runPass(renderer, scene, *gl, frames, Pass{false, false});
+        labelsOffFps = runPass(renderer, scene, *gl, frames, Pass{true, false, false});
+        newResultFps = runPass(renderer, scene, *gl, frames, Pass{true, false, true, true});
+        renderer.setScene(scene);
         renderer.release();
         fbo.release();
     }
     context.doneCurrent();
-    std::printf("{\"static_fps\": %.1f, \"orbit_fps\": %.1f, \"overlays_off_fps\": %.1f, \"frames\": %d, "
-                "\"size\": \"%dx%d\"}\n",
-                staticFps, orbitFps, offFps, frames, kWidth, kHeight);
+    std::printf("{\"static_fps\": %.1f, \"orbit_fps\": %.1f, \"overlays_off_fps\": %.1f, \"labels_off_fps\": %.1f, "
+                "\"new_result_fps\": %.1f, \"frames\": %d, \"size\": \"%dx%d\"}\n",
+                staticFps, orbitFps, offFps, labelsOffFps, newResultFps, frames, kWidth, kHeight);
     return 0;
 }

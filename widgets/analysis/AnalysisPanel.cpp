@@ -9,6 +9,7 @@
 #include "i18n/DisplayNames.h"
 
 #include "editor/Document.h"
+#include "editor/ResultFeed.h"
 
 #include "SetupFile.h"
 #include "ShotOutcome.h"
@@ -262,7 +263,7 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
         else progress_->setValue(progress_->maximum());
     });
     connect(document_, &Document::setupChanged, this, &AnalysisPanel::onSetupChanged);
-    connect(document_, &Document::resultChanged, this, &AnalysisPanel::onResultChanged);
+    ResultFeed::follow(document_, this, [this] { onResultChanged(); });
     connect(document_, &Document::documentReplaced, this, [this] {
         goalEdited_ = false;
         goal_->clear();
@@ -314,9 +315,16 @@ void AnalysisPanel::updateAxisChoices()
         for (int row = 1; row <= 4; ++row) mapForm_->setRowVisible(row, two);  // x, its range, y, its range
     }
     const QString x = xKey_->currentData().toString(), y = yKey_->currentData().toString();
-    xKey_->clear();
-    yKey_->clear();
-    for (const std::string& key : overridableKeys(s, true)) {
+    // The boxes are filled again only when the keys change (a ball added, renamed, removed): not at
+    // every step of a drag.
+    std::vector<std::string> keys = overridableKeys(s, true);
+    const bool sameKeys = keys == keyChoices_;
+    if (!sameKeys) {
+        keyChoices_ = std::move(keys);
+        xKey_->clear();
+        yKey_->clear();
+    }
+    for (const std::string& key : sameKeys ? std::vector<std::string>() : keyChoices_) {
         // By name, the key itself kept as the item's data (what the sweep is given).
         xKey_->addItem(displayKeyName(key), QString::fromStdString(key));
         yKey_->addItem(displayKeyName(key), QString::fromStdString(key));

@@ -13,6 +13,7 @@
 #include <QWidget>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 class QComboBox;
@@ -81,6 +82,7 @@ private:
     QFormLayout* mapForm_ = nullptr;
     QComboBox* mode_;
     QComboBox* xKey_;
+    std::vector<std::string> keyChoices_;  // the keys the x and y boxes hold
     QComboBox* yKey_;
     QDoubleSpinBox* xFrom_;
     QDoubleSpinBox* xTo_;

@@ -274,9 +274,16 @@ void OddsSection::updateKeys()
     const Setup& s = document_->setup();
     // Each box names its keys in words with their units (the key itself is the item's data).
     const QString x = xKey_->currentData().toString(), y = yKey_->currentData().toString();
-    xKey_->clear();
-    yKey_->clear();
-    for (const std::string& key : overridableKeys(s, true)) {
+    // The boxes are filled again only when the keys change (a ball added, renamed, removed): not at
+    // every step of a drag.
+    std::vector<std::string> keys = overridableKeys(s, true);
+    const bool sameKeys = keys == keyChoices_;
+    if (!sameKeys) {
+        keyChoices_ = std::move(keys);
+        xKey_->clear();
+        yKey_->clear();
+    }
+    for (const std::string& key : sameKeys ? std::vector<std::string>() : keyChoices_) {
         xKey_->addItem(displayKeyName(key), QString::fromStdString(key));
         yKey_->addItem(displayKeyName(key), QString::fromStdString(key));
     }

@@ -15,6 +15,8 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <string>
+#include <vector>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -77,6 +79,7 @@ private:
     QPushButton* oddsButton_;
     QLabel* odds_;
     QComboBox* xKey_;
+    std::vector<std::string> keyChoices_;  // the keys the x and y boxes hold
     QComboBox* yKey_;
     std::array<QDoubleSpinBox*, 4> range_{};  // x from, x to, y from, y to
     QSpinBox* cells_;

@@ -4,6 +4,7 @@
 #include "i18n/DisplayNames.h"
 #include "layout/ColumnFit.h"
 #include "Document.h"
+#include "ResultFeed.h"
 #include "Quantities.h"
 
 #include <QAction>
@@ -143,7 +144,8 @@ BallsPanel::BallsPanel(Document* document, QWidget* parent) : QWidget(parent), d
         if (!refreshing_) emit ballSelected(selectedBall());
     });
     connect(document_, &Document::setupChanged, this, &BallsPanel::rebuild);
-    connect(document_, &Document::resultChanged, this, &BallsPanel::refreshMotion);
+    ResultFeed::follow(document_, this, [this] { refreshMotion(); });
+    connect(document_, &Document::dragFinished, this, &BallsPanel::fitColumns);
     rebuild();
 }
 
@@ -206,7 +208,7 @@ void BallsPanel::rebuild()
     refreshing_ = false;
     editor_->setBall(selectedBall());
     refreshMotion();
-    fitColumns();
+    if (!document_->isDragging()) fitColumns();  // a drag's steps change numbers, not the columns' widths
     updateActions();
 }
 

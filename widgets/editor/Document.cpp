@@ -1,11 +1,14 @@
 #include "Document.h"
+
 #include "i18n/ExampleTexts.h"
 
 #include "LessonIds.h"
 
+#include "KindDefaults.h"
 #include "LegalPlacement.h"
 #include "LegalSetup.h"
 #include "SetupFile.h"
+#include "ShotCode.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -155,6 +158,11 @@ bool Document::load(const QString& path, QString* error)
 {
     std::optional<Setup> loaded = io::loadSetup(path, error);
     if (!loaded) return false;
+    if (io::isShotCode(path)) {  // a pasted code or a cuelab: link: a new untitled document
+        replace(*loaded, QString(), loaded->name.empty() ? tr("Shared shot") : QString::fromStdString(loaded->name));
+        example_ = false;
+        return true;
+    }
     const bool example = isExampleFolder(QFileInfo(path).absolutePath());
     if (example) translateExample(*loaded);  // a lesson reads in the window's language
     replace(*loaded, QFileInfo(path).absoluteFilePath(), QString());
@@ -278,7 +286,9 @@ bool Document::editBall(int index, const QString& text, const Setup& edited, Mer
 void Document::endMerge()
 {
     ++mergeSession_;
+    const bool wasDragging = dragFrom_ != 0;
     dragFrom_ = 0;  // the drag is over: only its last setup's result counts now
+    if (wasDragging) emit dragFinished();
 }
 
 bool Document::moveBall(int index, const Vec2& position)
@@ -402,7 +412,7 @@ bool Document::setPhysics(const PhysicsParams& physics, const QString& text, int
 bool Document::resetPhysics()
 {
     Setup after = setup_;
-    after.physics = PhysicsParams{};
+    after.physics = defaultPhysics(after.table.kind);  // the table kind's own cloth (KindDefaults.h)
     return edit(tr("Reset physics to defaults"), after);
 }
 
@@ -429,10 +439,18 @@ bool Document::setSimulationSettings(const SimulationSettings& settings, const Q
     return edit(text, after, {MergeKind::Simulation, field});
 }
 
+// A new table kind brings its own cloth when the setup had the old kind's (a carom table's is not a
+// pool table's: KindDefaults.h); a cloth the user set stays.
+static void followKindCloth(Setup& after, TableKind before)
+{
+    if (after.table.kind != before && hasKindCloth(after.physics, before)) setKindCloth(after.physics, after.table.kind);
+}
+
 bool Document::setTable(const TableSpec& table, const QString& text)
 {
     Setup after = setup_;
     after.table = table;
+    followKindCloth(after, setup_.table.kind);
     return edit(text, after);
 }
 
@@ -449,6 +467,7 @@ bool Document::setTableMovingBalls(const TableSpec& table, const QString& text, 
 {
     Setup after = setup_;
     after.table = table;
+    followKindCloth(after, setup_.table.kind);
     QStringList ids;
     // Ball by ball, in the order of the list: each misplaced ball goes to the legal spot nearest to
     // where it stood, among the balls as they stand by then (those moved before it included).
@@ -476,8 +495,10 @@ void Document::applySetup(const Setup& setup)
     // Notes written (or taken back) now are written for this setup.
     if (setup.notes != setup_.notes) notesSetup_ = setup;
     setup_ = setup;
+    const bool dragEnds = !editing_ && dragFrom_ != 0;
     if (!editing_) dragFrom_ = 0;  // undo, redo, open: no drag's older results after it
     ++generation_;
+    if (dragEnds) emit dragFinished();
     emit setupChanged();
     startSimulation();
 }
@@ -537,9 +558,11 @@ void Document::noteEdit(MergeKey merge)
                            merge.target == dragKey_.target && mergeSession_ == dragSession_;
     if (continues) return;
     // A merging edit may begin a drag (its later steps merge with it); any other edit ends one.
+    const bool wasDragging = dragFrom_ != 0;
     dragFrom_ = merge.kind != MergeKind::None ? generation_ + 1 : 0;
     dragKey_ = merge;
     dragSession_ = mergeSession_;
+    if (wasDragging && dragFrom_ == 0) emit dragFinished();
 }
 
 void Document::waitForResult()

@@ -91,6 +91,9 @@ public:
     // balls overlapping, ...) is not applied: editRefused carries the validator's message.
     bool edit(const QString& text, const Setup& after, MergeKey merge = {});
     void endMerge();  // the next edit starts a new undo step (drag released, slider let go)
+    // A drag is going on: edits that merge into one undo step (a ball, the tip, a slider), each with a
+    // new result. Panels that are slow to lay out follow it through a ResultFeed.
+    bool isDragging() const { return dragFrom_ != 0; }
 
     bool moveBall(int index, const Vec2& position);  // merges while dragging
     // Any property of a ball (a rename keeps the shot on it); `field` is a BallProperty.
@@ -131,6 +134,7 @@ signals:
     void filePathChanged(const QString& path);
     void modifiedChanged(bool modified);
     void documentReplaced();  // new, load: selection and time should start afresh
+    void dragFinished();      // isDragging() turned false (released, or ended by another edit)
 
 private:
     friend class SetupCommand;

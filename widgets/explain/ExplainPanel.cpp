@@ -2,6 +2,7 @@
 
 #include "ConservationWidget.h"
 #include "editor/Document.h"
+#include "editor/ResultFeed.h"
 #include "Explain.h"
 #include "ExplainLanguage.h"
 #include "ExplainText.h"
@@ -65,7 +66,7 @@ ExplainPanel::ExplainPanel(Document* document, Selection* selection, Playback* p
         });
     if (playback_) connect(playback_, &Playback::timeChanged, this, &ExplainPanel::followTime);
     if (document_) {
-        connect(document_, &Document::resultChanged, this, &ExplainPanel::refresh);
+        ResultFeed::follow(document_, this, [this] { refresh(); });
         connect(document_, &Document::documentReplaced, this, [this] { showEvent(-1); });
     }
     showEvent(-1);

@@ -2,6 +2,7 @@
 
 #include "PredictSession.h"
 #include "editor/Document.h"
+#include "editor/ResultFeed.h"
 #include "editor/Selection.h"
 #include "i18n/DisplayNames.h"
 
@@ -127,7 +128,7 @@ PredictPanel::PredictPanel(Document* document, Playback* playback, Selection* se
     connect(questions_, &QTableWidget::itemSelectionChanged, this, [this] { remove_->setEnabled(questions_->currentRow() >= 0); });
     connect(document_, &Document::setupChanged, this, &PredictPanel::loadQuestions);
     connect(document_, &Document::documentReplaced, this, &PredictPanel::loadQuestions);
-    connect(document_, &Document::resultChanged, this, &PredictPanel::loadQuestions);
+    ResultFeed::follow(document_, this, [this] { loadQuestions(); });
     connect(session_, &PredictSession::stateChanged, this, &PredictPanel::refreshMode);
     connect(session_, &PredictSession::predictionsChanged, this, &PredictPanel::refreshMode);
     connect(session_, &PredictSession::revealedChanged, this, &PredictPanel::refreshResults);

@@ -4,6 +4,7 @@
 #include "RecordingSetup.h"
 #include "StrikeFit.h"
 #include "editor/Document.h"
+#include "editor/ResultFeed.h"
 
 #include <QFutureWatcher>
 #include <QHBoxLayout>
@@ -180,7 +181,7 @@ RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
     connect(calibrate_, &QPushButton::clicked, this, &RecordingPanel::calibrateCloth);
     connect(cancel_, &QPushButton::clicked, this, &RecordingPanel::cancelFit);
     connect(watcher_, &QFutureWatcher<std::shared_ptr<fit::FitResult>>::finished, this, &RecordingPanel::fitDone);
-    connect(document_, &Document::resultChanged, this, &RecordingPanel::refresh);
+    ResultFeed::follow(document_, this, [this] { refresh(); });
     refresh();
 }
 

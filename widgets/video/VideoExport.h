@@ -39,6 +39,10 @@ struct VideoRequest {
     double slow = 1.0;       // times slower than real time, 1 to 1000
     double fps = 30.0;       // frames per second asked (a GIF plays at playedFrameRate)
     QSize size{1280, 720};   // pixels (encodableSize)
+    // The camera: false, the view's own pose (its target, distance and turn); true, the whole table
+    // from above, framed for the video's own aspect (the window's default: a video of a narrow view
+    // is not a narrow video).
+    bool frameTable = false;
 };
 
 class VideoExportJob : public QObject {

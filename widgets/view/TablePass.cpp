@@ -197,22 +197,30 @@ bool TablePass::draw(const RenderFrame& frame, ShaderLibrary& shaders, const std
     GLint samples = 0;
     gl->glGetIntegerv(GL_SAMPLES, &samples);
     const bool moving = hasLastFrame_ && lastViewProjection_ != frame.viewProjection;
+    // The cue moves with a drag of the struck ball or of the aim: the cache then keeps the table alone
+    // and the stick is drawn over it each frame without multisampling, until it stands still again.
+    const bool cueMoving = hasLastFrame_ && cue && lastCue_ != cue;
     lastViewProjection_ = frame.viewProjection;
+    lastCue_ = cue;
     hasLastFrame_ = true;
-    if (!moving && !cacheValid(frame, samples, cue)) buildCache(frame, shaders, samples, cue, target);
-    const bool cached = cacheValid(frame, samples, cue);
+    const std::optional<QMatrix4x4> cachedCue = cueMoving ? std::nullopt : cue;
+    if (!moving && !cacheValid(frame, samples, cachedCue)) buildCache(frame, shaders, samples, cachedCue, target);
+    const bool cached = cacheValid(frame, samples, cachedCue);
     if (cached) {
         const int w = frame.viewportPixels.width(), h = frame.viewportPixels.height();
         gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, cache_->handle());
         gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
         gl->glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
         gl->glBindFramebuffer(GL_FRAMEBUFFER, target);
+        if (cue && !cachedCue) drawCue(frame, shaders, *cue);
     } else {
         gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         drawTable(frame, shaders);
         if (cue) drawCue(frame, shaders, *cue);
     }
-    return moving && !cached;  // not when the cache failed: that would repaint for ever
+    // One more still frame draws what moved antialiased (not when the cache failed: that would
+    // repaint for ever).
+    return (moving && !cached) || (cueMoving && cached);
 }
 
 }  // namespace cuelab

@@ -36,8 +36,9 @@ public:
     void invalidateCache();             // the cue moved: the cached image holds the old one
 
     // Fills the bound framebuffer `target` (colour and depth) with the table and, when `cue` is given,
-    // the stick placed by that model matrix. Returns whether it was drawn without the cache because
-    // the camera moved (one more still frame then draws it antialiased).
+    // the stick placed by that model matrix. Returns whether something was drawn without the cache's
+    // multisampling because the camera or the cue moved (one more still frame then draws it
+    // antialiased).
     bool draw(const RenderFrame& frame, ShaderLibrary& shaders, const std::optional<QMatrix4x4>& cue, unsigned int target);
 
 private:
@@ -65,6 +66,7 @@ private:
     int cacheGeneration_ = -1;
     std::optional<QMatrix4x4> cacheCue_;  // the cue drawn into the cache
     QMatrix4x4 lastViewProjection_;       // the camera of the previous frame, to tell a moving camera
+    std::optional<QMatrix4x4> lastCue_;   // the cue of the previous frame, to tell a moving one
     bool hasLastFrame_ = false;
 };
 

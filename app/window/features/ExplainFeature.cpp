@@ -2,6 +2,7 @@
 // energy), the selected collision's arrows in the table view (View > Overlays > Collision Arrows),
 // the Lesson dock (the setup's name and notes) and File > Export > Explanation….
 
+#include "ExportFolder.h"
 #include "Features.h"
 #include "MainWindow.h"
 
@@ -48,9 +49,11 @@ void exportExplanation(MainWindow& w, ExplainPanel* panel)
     if (!ok) return;
     const std::vector<int> events = choice == selected ? std::vector<int>{panel->shownEvent()} : collisionEvents(*result);
     const QString base = QFileInfo(w.document()->displayName()).completeBaseName();
-    const QString path = QFileDialog::getSaveFileName(&w, QObject::tr("Export explanation"), base + QStringLiteral("-explained.html"),
+    const QString path = QFileDialog::getSaveFileName(&w, QObject::tr("Export explanation"),
+                                                      window::exportStartPath(*w.document(), base + QStringLiteral("-explained.html")),
                                                       QObject::tr("HTML (*.html);;Markdown (*.md)"));
     if (path.isEmpty()) return;
+    window::rememberExportFolder(path);
     const std::string name = w.document()->setup().name;
     const QString title = name.empty() ? base : QString::fromStdString(name);
     QString error;

@@ -3,6 +3,7 @@
 // dialog with Cancel, so that the window never freezes; every file is written atomically.
 
 #include "ExportActions.h"
+#include "ExportFolder.h"
 #include "Features.h"
 #include "MainWindow.h"
 #include "editor/Document.h"
@@ -46,17 +47,18 @@ using Work = std::function<bool(const exports::Progress& progress, QString* erro
 // The context lupdate gives tr() calls in functions of namespace cuelab (resources/translations).
 QString tr(const char* text) { return QCoreApplication::translate("cuelab", text); }
 
-// Asks where to write; empty when the user cancels. Starts beside the document, named after it.
+// Asks where to write; empty when the user cancels. Starts where the last export went (ExportFolder.h),
+// named after the document.
 QString askPath(MainWindow& window, const QString& title, const QString& suffix, const QString& filter)
 {
     const Document* d = window.document();
-    const QString dir = d->filePath().isEmpty() ? QDir::homePath() : QFileInfo(d->filePath()).absolutePath();
     QString base = QFileInfo(d->displayName()).completeBaseName();
     if (base.isEmpty()) base = QStringLiteral("shot");
     // A partial result (still going, cancelled, cut short) is named as one (issue 39).
     if (d->result() && !d->result()->finished()) base += QStringLiteral("-partial");
-    QString path = QFileDialog::getSaveFileName(&window, title, dir + QLatin1Char('/') + base + suffix, filter);
+    QString path = QFileDialog::getSaveFileName(&window, title, window::exportStartPath(*d, base + suffix), filter);
     if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty()) path += suffix;
+    window::rememberExportFolder(path);
     return path;
 }
 

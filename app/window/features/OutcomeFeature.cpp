@@ -4,6 +4,7 @@
 #include "Features.h"
 #include "MainWindow.h"
 #include "editor/Document.h"
+#include "editor/ResultFeed.h"
 #include "editor/Selection.h"
 #include "outcome/OutcomePanel.h"
 
@@ -27,7 +28,7 @@ void installOutcome(MainWindow& window)
     window.statusBar()->addPermanentWidget(line);
     Document* document = window.document();
     Selection* selection = window.selection();
-    QObject::connect(document, &Document::resultChanged, panel, [panel, line, document] {
+    ResultFeed::follow(document, panel, [panel, line, document] {
         panel->setResult(document->result());
         line->setText(panel->summary());
     });

@@ -4,6 +4,7 @@
 #include "Features.h"
 #include "MainWindow.h"
 #include "editor/Document.h"
+#include "editor/ResultFeed.h"
 #include "editor/Playback.h"
 #include "editor/Selection.h"
 #include "plots/PlotsPanel.h"
@@ -20,7 +21,7 @@ void installPlots(MainWindow& window)
     Document* document = window.document();
     Playback* playback = window.playback();
     Selection* selection = window.selection();
-    QObject::connect(document, &Document::resultChanged, panel, [panel, document] { panel->setResult(document->result()); });
+    ResultFeed::follow(document, panel, [panel, document] { panel->setResult(document->result()); });
     QObject::connect(playback, &Playback::timeChanged, panel, &PlotsPanel::setTime);
     QObject::connect(panel, &PlotsPanel::timeScrubbed, playback, [playback](double t) {
         playback->pause();

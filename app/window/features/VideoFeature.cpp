@@ -3,16 +3,19 @@
 // one per turn of the event loop behind a progress dialog with Cancel, so the window stays alive; the
 // file is written atomically (a cancelled or failed export leaves the previous file as it was).
 
+#include "ExportFolder.h"
 #include "Features.h"
 #include "MainWindow.h"
 
 #include "editor/Document.h"
 #include "video/VideoExport.h"
+#include "view/SceneFraming.h"
 #include "view/Screenshot.h"
 #include "view/TableView.h"
 
 #include <QAction>
 #include <QCoreApplication>
+#include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -61,18 +64,52 @@ bool askVideoSettings(MainWindow& w, VideoRequest* request)
         s->setRange(16, 8192);
         s->setSuffix(tr(" px"));
     }
+    width->setObjectName(QStringLiteral("exportVideoWidth"));
+    height->setObjectName(QStringLiteral("exportVideoHeight"));
     width->setValue(request->size.width());
     height->setValue(request->size.height());
     width->setToolTip(tr("Video width in pixels (MP4 and WebM round it down to an even number)"));
     height->setToolTip(tr("Video height in pixels (MP4 and WebM round it down to an even number)"));
-    auto* note = new QLabel(tr("The view as it is now: its camera, overlays, arrows and labels, with the time on every frame."), &dialog);
+    // Sizes by name: landscape presets, the view's own size, or any size typed in.
+    const qreal ratio = w.tableView()->devicePixelRatioF();
+    const QSize viewSize(static_cast<int>(w.tableView()->width() * ratio), static_cast<int>(w.tableView()->height() * ratio));
+    auto* preset = new QComboBox(&dialog);
+    preset->setObjectName(QStringLiteral("exportVideoSize"));
+    preset->addItem(tr("HD, 1280 × 720"), QSize(1280, 720));
+    preset->addItem(tr("Full HD, 1920 × 1080"), QSize(1920, 1080));
+    preset->addItem(tr("As the view, %1 × %2").arg(viewSize.width()).arg(viewSize.height()), viewSize);
+    preset->addItem(tr("Other size"), QSize());
+    preset->setToolTip(tr("The video's size in pixels"));
+    const auto follow = [preset, width, height] {
+        const QSize size = preset->currentData().toSize();
+        width->setEnabled(!size.isValid());
+        height->setEnabled(!size.isValid());
+        if (size.isValid()) {
+            width->setValue(size.width());
+            height->setValue(size.height());
+        }
+    };
+    const int shown = preset->findData(request->size);
+    preset->setCurrentIndex(shown >= 0 ? shown : preset->count() - 1);
+    follow();
+    QObject::connect(preset, &QComboBox::currentIndexChanged, &dialog, follow);
+    auto* camera = new QComboBox(&dialog);
+    camera->setObjectName(QStringLiteral("exportVideoCamera"));
+    camera->addItem(tr("The whole table from above"), true);
+    camera->addItem(tr("The view's camera"), false);
+    camera->setCurrentIndex(request->frameTable ? 0 : 1);
+    camera->setToolTip(tr("From above, the table fills the video whatever its size; the view's camera keeps the "
+                          "angle and the zoom you set"));
+    auto* note = new QLabel(tr("The view's overlays, arrows and labels as they are now, with the time on every frame."), &dialog);
     note->setWordWrap(true);
     auto* form = new QFormLayout(&dialog);
     form->addRow(note);
     form->addRow(tr("Slow motion"), slow);
     form->addRow(tr("Frame rate"), fps);
+    form->addRow(tr("Size"), preset);
     form->addRow(tr("Width"), width);
     form->addRow(tr("Height"), height);
+    form->addRow(tr("Camera"), camera);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
     form->addRow(buttons);
     QObject::connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
@@ -81,6 +118,7 @@ bool askVideoSettings(MainWindow& w, VideoRequest* request)
     request->slow = slow->value();
     request->fps = fps->value();
     request->size = QSize(width->value(), height->value());
+    request->frameTable = camera->currentData().toBool();
     return true;
 }
 
@@ -90,7 +128,12 @@ VideoExportJob* exportVideo(MainWindow& w, const VideoRequest& request)
 {
     TableView* view = w.tableView();
     ViewScene scene = view->scene();
-    auto* job = new VideoExportJob(scene, rendererLike(*view), view->camera().pose(), request, &w);
+    CameraPose pose = view->camera().pose();
+    if (request.frameTable && request.size.height() > 0) {
+        const float aspect = static_cast<float>(request.size.width()) / static_cast<float>(request.size.height());
+        pose = OrbitCamera::presetPose(CameraPreset::Top, presetFrameFor(scene, aspect));
+    }
+    auto* job = new VideoExportJob(scene, rendererLike(*view), pose, request, &w);
     job->setObjectName(QStringLiteral("videoExportJob"));
     auto* dialog = new QProgressDialog(tr("Writing %1…").arg(QFileInfo(request.path).fileName()), tr("Cancel"), 0,
                                        job->plan().frames, &w);
@@ -128,19 +171,19 @@ void installVideo(MainWindow& w)
             return;
         }
         const Document* d = w.document();
-        const QString dir = d->filePath().isEmpty() ? QDir::homePath() : QFileInfo(d->filePath()).absolutePath();
         QString base = QFileInfo(d->displayName()).completeBaseName();
         if (base.isEmpty()) base = QStringLiteral("shot");
-        QString path = QFileDialog::getSaveFileName(&w, tr("Export Video"), dir + QLatin1Char('/') + base + QStringLiteral(".mp4"),
+        QString path = QFileDialog::getSaveFileName(&w, tr("Export Video"), window::exportStartPath(*d, base + QStringLiteral(".mp4")),
                                                     tr("MP4 video (*.mp4);;WebM video (*.webm);;Animated GIF (*.gif)"));
         if (path.isEmpty()) return;
+        window::rememberExportFolder(path);
         VideoFormat format;
         if (!videoFormatOf(path, &format)) path += QStringLiteral(".mp4");
         VideoRequest request;
         request.path = path;
         request.slow = 4.0;
-        const qreal ratio = w.tableView()->devicePixelRatioF();
-        request.size = QSize(static_cast<int>(w.tableView()->width() * ratio), static_cast<int>(w.tableView()->height() * ratio));
+        request.size = QSize(1280, 720);  // landscape, as a table is (issue 44)
+        request.frameTable = true;
         if (!askVideoSettings(w, &request)) return;
         exportVideo(w, request);
     });
