@@ -1,0 +1,273 @@
+#include "Solve.h"
+
+#include "Objective.h"
+#include "Parallel.h"
+#include "Route.h"
+#include "Search.h"
+#include "Seeds.h"
+
+#include "Map.h"
+#include "Override.h"
+#include "Refusal.h"
+#include "ShotOdds.h"
+#include "Sweep.h"
+#include "Tolerance.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <stdexcept>
+
+namespace cuelab::solve {
+
+using analysis::GoalTerm;
+
+namespace {
+
+// Seed candidates per heading: a few speeds (m/s) and tip heights (R: draw, stun, follow).
+constexpr std::array<double, 4> kSeedSpeeds = {0.9, 1.8, 3.2, 5.0};
+constexpr std::array<double, 3> kSeedHeights = {-0.4, 0.0, 0.4};
+// With the elevation varied, each heading is also tried as a jump: a steep firm stroke (°, m/s).
+constexpr double kJumpElevation = 25.0;
+constexpr std::array<double, 2> kJumpSpeeds = {3.5, 5.0};
+// How far each tolerance scan looks either side (the key's unit) and its grid.
+constexpr Strike kToleranceHalfSpan = {2.0, 1.0, 0.3, 0.3, 5.0};
+constexpr int kToleranceCount = 21;
+constexpr int kToleranceRefine = 12;
+
+bool varies(const SolveRequest& r, StrikeKey k)
+{
+    return std::find(r.vary.begin(), r.vary.end(), k) != r.vary.end();
+}
+
+std::size_t at(StrikeKey k) { return static_cast<std::size_t>(k); }
+
+// The ball the goal pots (the first pot term's), -1 for none.
+int targetBall(const Setup& setup, const analysis::Goal& goal)
+{
+    for (const GoalTerm& t : goal.terms) {
+        if (t.kind != GoalTerm::Kind::Pocketed || t.negated) continue;
+        for (std::size_t i = 0; i < setup.balls.size(); ++i)
+            if (setup.balls[i].id == t.ball) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+struct Family {
+    std::size_t seed = 0;  // index into the seed list
+    Strike best{};
+    Score score;
+};
+
+}  // namespace
+
+std::optional<std::string> checkSolvable(const Setup& setup, const analysis::Goal& goal)
+{
+    if (!setup.shot) return std::string("the setup has no shot to strike");
+    const Table table = makeTable(setup.table);
+    for (const GoalTerm& t : goal.terms) {
+        if (t.kind != GoalTerm::Kind::EndsInRegion) continue;
+        const analysis::Region& g = t.region;
+        const bool overlaps = std::max(g.x0, g.x1) >= 0.0 && std::min(g.x0, g.x1) <= table.length &&
+                              std::max(g.y0, g.y1) >= 0.0 && std::min(g.y0, g.y1) <= table.width;
+        if (!overlaps)
+            return "goal: the zone of \"in:" + t.ball + "@...\" lies off the table (0:0 to " +
+                   analysis::roundTrip(table.length) + ":" + analysis::roundTrip(table.width) + ")";
+    }
+    return std::nullopt;
+}
+
+std::variant<std::vector<StrikeKey>, std::string> parseVary(std::string_view text)
+{
+    std::vector<StrikeKey> keys;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find(',', start);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view part = text.substr(start, end - start);
+        while (!part.empty() && part.front() == ' ') part.remove_prefix(1);
+        while (!part.empty() && part.back() == ' ') part.remove_suffix(1);
+        const auto key = analysis::strikeKeyOf(part);
+        if (!key) {
+            std::string names;
+            for (StrikeKey k : analysis::kStrikeKeys) names += (names.empty() ? "" : ", ") + std::string(analysis::keyOf(k));
+            return "\"" + std::string(part) + "\" is not a strike key (--vary takes " + names + ")";
+        }
+        if (std::find(keys.begin(), keys.end(), *key) == keys.end()) keys.push_back(*key);
+        start = end + 1;
+    }
+    // In the fixed order of the strike keys, whatever order they were named in.
+    std::sort(keys.begin(), keys.end(), [](StrikeKey a, StrikeKey b) { return at(a) < at(b); });
+    return keys;
+}
+
+SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveRequest& request, std::stop_token stop,
+                  const std::function<void(const SolveProgress&)>& progress)
+{
+    const auto started = std::chrono::steady_clock::now();
+    if (const auto problem = checkSolvable(setup, goal)) throw std::invalid_argument(*problem);
+    Evaluator evaluator(setup, goal, request, stop);
+    SolveResult result;
+    const auto report = [&](SolvePhase phase, int done, int total) {
+        if (progress) progress({phase, done, total, evaluator.simulations()});
+    };
+    const auto finish = [&]() -> SolveResult& {
+        result.evaluations = evaluator.simulations();
+        result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        if (stop.stop_requested()) {
+            result.cancelled = true;
+            result.shots.clear();
+        }
+        return result;
+    };
+
+    // The search's own draws: two streams derived from the seed, apart from the final measurement's.
+    analysis::SplitMix64 streams(request.seed ^ 0x736F6C7665ULL);  // "solve"
+    const std::uint64_t screenSeed = streams.next();
+    const std::uint64_t searchSeed = streams.next();
+
+    // 1. Seeds: the geometry's headings and the shot as set up, each at a few speeds and tips.
+    const Strike base = evaluator.baseStrike();
+    std::vector<Seed> seeds = geometricSeeds(setup, goal);
+    seeds.insert(seeds.begin(), Seed{base[0], SeedKind::Direct, 0, "as set up"});
+    if (!varies(request, StrikeKey::Heading)) seeds.resize(1);
+    std::vector<Strike> candidates;
+    std::vector<std::size_t> familyOf;
+    for (std::size_t s = 0; s < seeds.size(); ++s) {
+        const auto push = [&](double speed, double height, double elevation) {
+            Strike c = base;
+            c[at(StrikeKey::Heading)] = seeds[s].headingDeg;
+            if (varies(request, StrikeKey::Speed)) c[at(StrikeKey::Speed)] = speed;
+            if (varies(request, StrikeKey::Height)) c[at(StrikeKey::Height)] = height;
+            if (varies(request, StrikeKey::Elevation)) c[at(StrikeKey::Elevation)] = elevation;
+            c = clampToBounds(c, request.bounds);
+            for (std::size_t i = candidates.size(); i-- > 0 && familyOf[i] == s;)
+                if (candidates[i] == c) return;
+            candidates.push_back(c);
+            familyOf.push_back(s);
+        };
+        if (s == 0) push(base[1], base[3], base[4]);
+        for (double speed : kSeedSpeeds)
+            for (double height : kSeedHeights) push(speed, height, 0.0);
+        if (varies(request, StrikeKey::Elevation))
+            for (double speed : kJumpSpeeds) push(speed, 0.0, kJumpElevation);
+    }
+    report(SolvePhase::Seeding, 0, 1);
+    const std::vector<Score> screened = evaluator.score(candidates, request.noise, screenSeed, request.screenSamples);
+    report(SolvePhase::Seeding, 1, 1);
+    if (stop.stop_requested()) return finish();
+
+    std::vector<Family> families(seeds.size());
+    for (std::size_t s = 0; s < seeds.size(); ++s) families[s].seed = s;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        Family& f = families[familyOf[i]];
+        if (better(screened[i], f.score)) {
+            f.score = screened[i];
+            f.best = candidates[i];
+        }
+    }
+    std::stable_sort(families.begin(), families.end(), [](const Family& a, const Family& b) { return better(a.score, b.score); });
+    if (std::getenv("CUELAB_SOLVE_DEBUG"))
+        for (const Family& f : families)
+            std::fprintf(stderr, "family %s: %d/%d close %.4f met %d h %.4f v %.3f z %.2f\n", seeds[f.seed].label.c_str(), f.score.successes,
+                         f.score.samples, f.score.closeness, f.score.nominalMet ? 1 : 0, f.best[0], f.best[1], f.best[3]);
+    const std::size_t refineCount =
+        std::min<std::size_t>(families.size(), static_cast<std::size_t>(std::max(request.refineSeeds, 2 * request.top)));
+    families.resize(refineCount);
+
+    // 2. Refinement of each chosen seed, all on the same draws so that their scores compare.
+    struct Kept {
+        Refined refined;
+        RouteInfo route;
+        std::string key;
+    };
+    std::vector<Kept> kept;
+    const int target = targetBall(setup, goal);
+    for (std::size_t f = 0; f < families.size(); ++f) {
+        report(SolvePhase::Refining, static_cast<int>(f), static_cast<int>(families.size()));
+        Refined refined = refine(evaluator, families[f].best, request, searchSeed);
+        if (stop.stop_requested()) return finish();
+        const Nominal nominal = evaluator.nominal(refined.strike);
+        if (std::getenv("CUELAB_SOLVE_DEBUG"))
+            std::fprintf(stderr, "refined %s: %d/%d close %.4f met %d h %.4f v %.3f s %.3f z %.3f it %d\n", seeds[families[f].seed].label.c_str(), refined.score.successes,
+                         refined.score.samples, refined.score.closeness, refined.score.nominalMet ? 1 : 0, refined.strike[0], refined.strike[1], refined.strike[2], refined.strike[3], refined.iterations);
+        RouteInfo route;
+        if (nominal.simulated)
+            route = routeOf(nominal.result, nominal.outcome, target, refined.strike[at(StrikeKey::Elevation)]);
+        else
+            route.route = "direct";
+        // One shot per route, pocket and first contact: the best refinement of each.
+        const std::string key = route.route + "|" + route.pocket + "|" + route.firstContact.value_or("");
+        auto same = std::find_if(kept.begin(), kept.end(), [&](const Kept& k) { return k.key == key; });
+        if (same == kept.end()) kept.push_back({refined, route, key});
+        else if (better(refined.score, same->refined.score)) *same = {refined, route, key};
+    }
+    report(SolvePhase::Refining, static_cast<int>(families.size()), static_cast<int>(families.size()));
+    std::stable_sort(kept.begin(), kept.end(), [](const Kept& a, const Kept& b) { return better(a.refined.score, b.refined.score); });
+    kept.erase(std::remove_if(kept.begin(), kept.end(),
+                              [](const Kept& k) { return k.refined.score.successes == 0 && !k.refined.score.nominalMet; }),
+               kept.end());
+    kept.resize(std::min<std::size_t>(kept.size(), static_cast<std::size_t>(request.top) + 2));
+
+    // 3. Each kept shot measured as `odds` measures it, then ranked by that measurement.
+    analysis::SweepSpec spec;
+    spec.goal = evaluator.goal();
+    spec.simulation = request.simulation;
+    if (stop.stop_possible()) spec.simulation.cancel = stop;
+    spec.setupName = request.setupName;
+    spec.threads = resolveThreads(request.threads);
+    analysis::OddsRequest odds;
+    odds.noise = request.noise;
+    odds.samples = request.samples;
+    odds.seed = request.seed;
+    std::vector<SolvedShot> shots;
+    const int measureTotal = static_cast<int>(kept.size());
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        report(SolvePhase::Measuring, static_cast<int>(i), measureTotal);
+        spec.base = evaluator.setupWith(kept[i].refined.strike);
+        SolvedShot shot;
+        shot.strike = kept[i].refined.strike;
+        shot.odds = analysis::shotOdds(spec, {}, odds, spec.threads, stop);
+        evaluator.countSimulations(shot.odds.samples);
+        if (stop.stop_requested()) return finish();
+        shot.route = kept[i].route.route;
+        shot.firstContact = kept[i].route.firstContact;
+        shot.pocket = kept[i].route.pocket;
+        if (shot.odds.successes > 0) shots.push_back(std::move(shot));
+    }
+    std::stable_sort(shots.begin(), shots.end(),
+                     [](const SolvedShot& a, const SolvedShot& b) { return a.odds.successes > b.odds.successes; });
+    shots.resize(std::min<std::size_t>(shots.size(), static_cast<std::size_t>(std::max(0, request.top))));
+
+    // 4. Tolerance windows of each varied key around each shot (noise-free, as the Analysis dock's).
+    result.shots = std::move(shots);
+    for (SolvedShot& shot : result.shots) {
+        spec.base = evaluator.setupWith(shot.strike);
+        for (StrikeKey k : request.vary) {
+            ToleranceWindow w;
+            w.key = std::string(analysis::keyOf(k));
+            auto parameter = analysis::Parameter::resolve(spec.base, w.key);
+            analysis::ToleranceRequest t;
+            t.halfSpan = kToleranceHalfSpan[at(k)];
+            t.count = kToleranceCount;
+            t.refineSteps = kToleranceRefine;
+            if (k == StrikeKey::Speed) t.lowest = 0.0;
+            if (k == StrikeKey::Side || k == StrikeKey::Height) t.lowest = -analysis::kMiscueLimit, t.highest = analysis::kMiscueLimit;
+            if (k == StrikeKey::Elevation) t.lowest = 0.0;
+            const analysis::ToleranceScan scan =
+                analysis::scanTolerance(spec, std::get<analysis::Parameter>(parameter), t, stop);
+            evaluator.countSimulations(scan.shots);
+            w.found = scan.found;
+            w.low = scan.low;
+            w.high = scan.high;
+            shot.tolerance.push_back(w);
+        }
+        if (stop.stop_requested()) return finish();
+    }
+    report(SolvePhase::Measuring, measureTotal, measureTotal);
+    return finish();
+}
+
+}  // namespace cuelab::solve
