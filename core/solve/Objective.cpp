@@ -19,6 +19,8 @@ constexpr double kOtherTermPenalty = 0.3;    // m
 constexpr double kScratchPenalty = 0.5;      // m
 constexpr double kOffTablePenalty = 2.0;     // m, a ball that should stop in a zone but is gone
 constexpr int kSamplesPerJob = 8;
+constexpr double kMissWorth = 0.5;           // the most a missing draw is worth
+constexpr double kClosenessScale = 0.1;      // m: a miss by this much is worth half of kMissWorth
 constexpr int kPointsPerSegment = 12;        // a sliding segment curves: its path is read at this many points
 
 double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b)
@@ -77,19 +79,6 @@ Evaluator::Evaluator(const Setup& setup, const analysis::Goal& goal, const Solve
         terms_.push_back(std::move(check));
     }
 
-    noisy_.base = setup_;
-    noisy_.goal = resolved_;
-    noisy_.simulation = simulation_;
-    noisy_.setupName = request.setupName;
-    for (StrikeKey k : analysis::kStrikeKeys) {
-        auto parameter = analysis::Parameter::resolve(setup_, analysis::keyOf(k));
-        noisy_.variations.push_back(analysis::Variation{std::get<analysis::Parameter>(std::move(parameter)), {}});
-    }
-    // As `odds` judges a sample (ShotOdds.cpp): a tip beyond the miscue limit is a miscue, a failure.
-    const auto side = static_cast<std::size_t>(StrikeKey::Side), height = static_cast<std::size_t>(StrikeKey::Height);
-    noisy_.skip = [side, height](const std::vector<double>& v) {
-        return std::hypot(v[side], v[height]) > analysis::kMiscueLimit * (1.0 + 1e-12);
-    };
 }
 
 Strike Evaluator::baseStrike() const
@@ -178,6 +167,19 @@ Nominal Evaluator::nominal(const Strike& strike) const
     return n;
 }
 
+double Evaluator::drawValue(const Strike& strike, bool* met) const
+{
+    *met = false;
+    // As `odds` judges a sample (ShotOdds.cpp): a tip beyond the miscue limit is a miscue and a
+    // speed below 0 is refused, both failures.
+    if (std::hypot(strike[2], strike[3]) > analysis::kMiscueLimit * (1.0 + 1e-12) || strike[1] < 0.0)
+        return 0.0;
+    const Nominal n = nominal(strike);
+    if (!n.simulated) return 0.0;
+    *met = n.met;
+    return n.met ? 1.0 : kMissWorth / (1.0 + n.closeness / kClosenessScale);
+}
+
 std::vector<Score> Evaluator::score(const std::vector<Strike>& candidates, const analysis::NoiseModel& noise,
                                     std::uint64_t crnSeed, int samples)
 {
@@ -186,6 +188,7 @@ std::vector<Score> Evaluator::score(const std::vector<Strike>& candidates, const
     const long long perCandidate = 1 + chunks;
     const long long jobs = static_cast<long long>(candidates.size()) * perCandidate;
     std::vector<int> successes(static_cast<std::size_t>(jobs), 0);
+    std::vector<double> values(static_cast<std::size_t>(jobs), 0.0);
     std::vector<double> closeness(candidates.size(), 1e9);
     std::vector<char> met(candidates.size(), 0);
     parallelFor(
@@ -201,14 +204,14 @@ std::vector<Score> Evaluator::score(const std::vector<Strike>& candidates, const
             }
             const long long first = (part - 1) * kSamplesPerJob;
             const long long end = std::min<long long>(samples, first + kSamplesPerJob);
-            std::vector<double> values(kStrikeKeyCount);
             int count = 0;
+            double sum = 0.0;
             for (long long i = first; i < end; ++i) {
-                const Strike v = analysis::noisyStrike(candidates[c], noise, crnSeed, i);
-                std::copy(v.begin(), v.end(), values.begin());
-                if (analysis::runShotWith(noisy_, values).goalMet) ++count;
+                bool drawMet = false;
+                sum += drawValue(analysis::noisyStrike(candidates[c], noise, crnSeed, i), &drawMet);
+                if (drawMet) ++count;
             }
-            simulations_ += end - first;
+            values[static_cast<std::size_t>(job)] = sum;
             successes[static_cast<std::size_t>(job)] = count;
         },
         stop_);
@@ -216,8 +219,13 @@ std::vector<Score> Evaluator::score(const std::vector<Strike>& candidates, const
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         Score& s = scores[c];
         s.samples = samples;
-        for (long long part = 1; part < perCandidate; ++part)
-            s.successes += successes[c * static_cast<std::size_t>(perCandidate) + static_cast<std::size_t>(part)];
+        double sum = 0.0;
+        for (long long part = 1; part < perCandidate; ++part) {
+            const std::size_t j = c * static_cast<std::size_t>(perCandidate) + static_cast<std::size_t>(part);
+            s.successes += successes[j];
+            sum += values[j];
+        }
+        s.value = samples > 0 ? sum / samples : 0.0;
         s.closeness = closeness[c];
         s.nominalMet = met[c] != 0;
     }

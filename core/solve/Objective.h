@@ -13,8 +13,12 @@
 //              B is not on the table.
 //   every other term (first contact, no scratch, cushions, negations, terms added later): 0 when it
 //              holds, 0.3 m when not (no-scratch: 0.5 m).
-// Candidates compare by successes first and by closeness on a tie: the search climbs on closeness
-// where no draw succeeds yet, and prefers the centre of a plateau where all of them do.
+// A candidate's value is the mean over its draws of 1 for a draw that meets the goal and
+// 0.5 / (1 + c / 0.1 m) for one that misses with closeness c (a miss is worth less than half a
+// success, and a near miss more than a wide one): the success rate where draws succeed, and a slope
+// towards the goal where none does yet. Candidates compare by value, and on a tie (all draws
+// succeed, or all are far misses) by the closeness of the noise-free shot, which prefers the centre
+// of a plateau.
 
 #include "Solve.h"
 
@@ -29,6 +33,7 @@
 namespace cuelab::solve {
 
 struct Score {
+    double value = -1.0;     // mean of the draws' values (see above), in [0, 1]
     int successes = 0;
     int samples = 0;
     double closeness = 1e9;  // m, of the noise-free shot (see above)
@@ -38,7 +43,7 @@ struct Score {
 // a is better than b.
 inline bool better(const Score& a, const Score& b)
 {
-    if (a.successes != b.successes) return a.successes > b.successes;
+    if (a.value != b.value) return a.value > b.value;
     return a.closeness < b.closeness;
 }
 
@@ -62,6 +67,8 @@ public:
                              std::uint64_t crnSeed, int samples);
 
     Nominal nominal(const Strike& strike) const;
+    // The value of one draw (see above): 0 for a miscue or a strike the setup refuses.
+    double drawValue(const Strike& strike, bool* met) const;
 
     // The setup with the strike applied.
     Setup setupWith(const Strike& strike) const;
@@ -84,7 +91,6 @@ private:
     Setup setup_;
     analysis::ResolvedGoal resolved_;
     std::vector<TermCheck> terms_;
-    analysis::SweepSpec noisy_;  // the five strike keys as variations, as `odds` strikes a sample
     SimulationOptions simulation_;
     int threads_ = 1;
     std::stop_token stop_;

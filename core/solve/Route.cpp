@@ -26,10 +26,14 @@ RouteInfo routeOf(const SimulationResult& result, const ShotOutcome& outcome, in
     bool landed = false;
     int banks = 0;
     for (const Event& e : result.events) {
-        if (e.kind == EventKind::BallTable && e.balls[0] == struck && e.time > 0.0 && e.time < contactTime) landed = true;
+        // A landing at more than kJumpLandingSpeed: the ball flew (a hop of a level cue's noise lands
+        // at a few mm/s).
+        if (e.kind == EventKind::BallTable && e.balls[0] == struck && e.time > 0.0 && e.time < contactTime &&
+            e.before[0].vz < -kJumpLandingSpeed)
+            landed = true;
         if (e.kind == EventKind::BallCushion && e.balls[0] == target && dropTime >= 0.0 && e.time < dropTime) ++banks;
     }
-    if (landed) info.route = "jump";
+    if (landed && elevationDeg >= kJumpElevationDeg) info.route = "jump";
     else if (elevationDeg >= kMasseElevationDeg) info.route = "masse";
     else if (outcome.firstContact && target >= 0 && dropTime >= 0.0 && outcome.firstContact->ball != target)
         info.route = "combination";

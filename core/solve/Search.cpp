@@ -1,6 +1,7 @@
 #include "Search.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace cuelab::solve {
@@ -38,16 +39,24 @@ Refined refine(Evaluator& evaluator, const Strike& start, const SolveRequest& re
 
     Refined r;
     r.strike = clampToBounds(start, request.bounds);
-    Strike step = kInitialStep;
-    for (int stage = 0; stage < 2; ++stage) {
+    // The stages: (noise factor, steps as a share of the first ones, draws as a multiple of
+    // searchSamples, iterations as a share of maxIterations).
+    struct Stage {
+        double noise, step;
+        int draws;
+        double iterations;
+    };
+    constexpr std::array<Stage, 3> stages = {Stage{2.0, 1.0, 1, 1.0}, Stage{1.0, 0.25, 1, 1.0}, Stage{1.0, 1.0 / 16.0, 4, 0.5}};
+    Strike step{};
+    for (const Stage& stage : stages) {
         analysis::NoiseModel noise = request.noise;
-        if (stage == 0)
-            for (std::size_t k = 0; k < noise.sigma.size(); ++k)
-                noise.sigma[k] = std::max(2.0 * noise.sigma[k], kSmoothingFloor[k]);
-        else
-            for (std::size_t k : dims) step[k] = kInitialStep[k] / 4.0;
-        Score current = evaluator.score({r.strike}, noise, crnSeed, request.searchSamples).front();
-        for (int it = 0; it < request.maxIterations && !evaluator.stopped(); ++it) {
+        for (std::size_t k = 0; k < noise.sigma.size(); ++k)
+            noise.sigma[k] = std::max(stage.noise * noise.sigma[k], stage.noise > 1.0 ? kSmoothingFloor[k] : 0.0);
+        for (std::size_t k = 0; k < step.size(); ++k) step[k] = stage.step * kInitialStep[k];
+        const int draws = stage.draws * request.searchSamples;
+        const int iterations = static_cast<int>(std::ceil(stage.iterations * request.maxIterations));
+        Score current = evaluator.score({r.strike}, noise, crnSeed, draws).front();
+        for (int it = 0; it < iterations && !evaluator.stopped(); ++it) {
             bool coarse = false;
             for (std::size_t k : dims) coarse = coarse || step[k] >= kSmallestStep[k];
             if (!coarse) break;
@@ -59,7 +68,7 @@ Refined refine(Evaluator& evaluator, const Strike& start, const SolveRequest& re
                     n = clampToBounds(n, request.bounds);
                     if (n != r.strike) neighbours.push_back(n);
                 }
-            const std::vector<Score> scores = evaluator.score(neighbours, noise, crnSeed, request.searchSamples);
+            const std::vector<Score> scores = evaluator.score(neighbours, noise, crnSeed, draws);
             ++r.iterations;
             if (onStep) onStep();
             std::size_t best = scores.size();

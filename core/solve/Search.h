@@ -6,9 +6,10 @@
 // step is halved. It needs no derivatives, which the count of successes does not have, and with
 // common random numbers a comparison of two candidates is not blurred by their draws differing.
 //
-// Two stages: first the noise doubled (the probability under a wider scatter is a smoothed version
+// Three stages: first the noise doubled (the probability under a wider scatter is a smoothed version
 // of the true one: it still slopes where the true one is flat at 0 or 1), then the true noise from
-// a quarter of the first steps.
+// a quarter of the first steps, then a polish from a sixteenth of them on four times the draws
+// (a success rate of 0.1 is told from 0.15 only on many draws).
 
 #include "Objective.h"
 

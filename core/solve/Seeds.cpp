@@ -46,15 +46,27 @@ struct Image {
     int cushions = 0;
     std::string label;
 };
+// A target this close to a cushion line (a pocket in that cushion) has no real mirror image over
+// it: the "bank" would be the direct path again.
+constexpr double kOnTheLine = 0.1;  // m
+
+bool near(const Vec2& p, const Line& line)
+{
+    return std::abs((line.vertical ? p.x() : p.y()) - line.value) < kOnTheLine;
+}
+
 std::vector<Image> images(const Vec2& target, const std::array<Line, 4>& lines)
 {
     std::vector<Image> out;
-    for (const Line& a : lines) out.push_back({mirror(target, a), 1, std::string("over ") + a.name});
+    for (const Line& a : lines)
+        if (!near(target, a)) out.push_back({mirror(target, a), 1, std::string("over ") + a.name});
     for (const Line& a : lines)
         for (const Line& b : lines) {
-            if (&a == &b) continue;
+            if (&a == &b || near(target, b)) continue;
             // Parallel lines twice or crossing ones: both are real two-cushion paths.
-            out.push_back({mirror(mirror(target, b), a), 2, std::string("over ") + a.name + " then " + b.name});
+            const Vec2 once = mirror(target, b);
+            if (near(once, a)) continue;
+            out.push_back({mirror(once, a), 2, std::string("over ") + a.name + " then " + b.name});
         }
     return out;
 }

@@ -15,8 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -169,12 +168,16 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
         }
     }
     std::stable_sort(families.begin(), families.end(), [](const Family& a, const Family& b) { return better(a.score, b.score); });
-    if (std::getenv("CUELAB_SOLVE_DEBUG"))
-        for (const Family& f : families)
-            std::fprintf(stderr, "family %s: %d/%d close %.4f met %d h %.4f v %.3f z %.2f\n", seeds[f.seed].label.c_str(), f.score.successes,
-                         f.score.samples, f.score.closeness, f.score.nominalMet ? 1 : 0, f.best[0], f.best[1], f.best[3]);
+    // The best family of each kind of seed first (a direct pot, a bank, a kick, a combination, ...),
+    // so that the refinements look at different routes; then the rest by their screening.
     const std::size_t refineCount =
         std::min<std::size_t>(families.size(), static_cast<std::size_t>(std::max(request.refineSeeds, 2 * request.top)));
+    std::stable_partition(families.begin(), families.end(), [&, seen = std::vector<SeedKind>()](const Family& f) mutable {
+        const SeedKind kind = seeds[f.seed].kind;
+        if (f.seed == 0 || std::find(seen.begin(), seen.end(), kind) != seen.end()) return false;
+        seen.push_back(kind);
+        return true;
+    });
     families.resize(refineCount);
 
     // 2. Refinement of each chosen seed, all on the same draws so that their scores compare.
@@ -189,29 +192,33 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
         report(SolvePhase::Refining, static_cast<int>(f), static_cast<int>(families.size()));
         Refined refined = refine(evaluator, families[f].best, request, searchSeed);
         if (stop.stop_requested()) return finish();
-        const Nominal nominal = evaluator.nominal(refined.strike);
-        if (std::getenv("CUELAB_SOLVE_DEBUG"))
-            std::fprintf(stderr, "refined %s: %d/%d close %.4f met %d h %.4f v %.3f s %.3f z %.3f it %d\n", seeds[families[f].seed].label.c_str(), refined.score.successes,
-                         refined.score.samples, refined.score.closeness, refined.score.nominalMet ? 1 : 0, refined.strike[0], refined.strike[1], refined.strike[2], refined.strike[3], refined.iterations);
+        Nominal nominal = evaluator.nominal(refined.strike);
+        // A strike that only succeeds when the noise helps is named by its first successful draw:
+        // the route the player's successes take.
+        for (int i = 0; !nominal.met && i < request.searchSamples; ++i) {
+            const Strike draw = analysis::noisyStrike(refined.strike, request.noise, searchSeed, i);
+            if (std::hypot(draw[at(StrikeKey::Side)], draw[at(StrikeKey::Height)]) > analysis::kMiscueLimit) continue;
+            Nominal drawn = evaluator.nominal(draw);
+            if (drawn.met) nominal = std::move(drawn);
+        }
         RouteInfo route;
         if (nominal.simulated)
             route = routeOf(nominal.result, nominal.outcome, target, refined.strike[at(StrikeKey::Elevation)]);
         else
             route.route = "direct";
-        // One shot per route, pocket and first contact: the best refinement of each.
         const std::string key = route.route + "|" + route.pocket + "|" + route.firstContact.value_or("");
-        auto same = std::find_if(kept.begin(), kept.end(), [&](const Kept& k) { return k.key == key; });
-        if (same == kept.end()) kept.push_back({refined, route, key});
-        else if (better(refined.score, same->refined.score)) *same = {refined, route, key};
+        // Two seeds that climbed to the very same strike are one candidate.
+        if (std::none_of(kept.begin(), kept.end(), [&](const Kept& k) { return k.refined.strike == refined.strike; }))
+            kept.push_back({refined, route, key});
     }
     report(SolvePhase::Refining, static_cast<int>(families.size()), static_cast<int>(families.size()));
     std::stable_sort(kept.begin(), kept.end(), [](const Kept& a, const Kept& b) { return better(a.refined.score, b.refined.score); });
     kept.erase(std::remove_if(kept.begin(), kept.end(),
                               [](const Kept& k) { return k.refined.score.successes == 0 && !k.refined.score.nominalMet; }),
                kept.end());
-    kept.resize(std::min<std::size_t>(kept.size(), static_cast<std::size_t>(request.top) + 2));
 
-    // 3. Each kept shot measured as `odds` measures it, then ranked by that measurement.
+    // 3. Each candidate measured as `odds` measures it (many more samples than the search's), then
+    // ranked by that measurement; one shot per route, pocket and first contact: the best of each.
     analysis::SweepSpec spec;
     spec.goal = evaluator.goal();
     spec.simulation = request.simulation;
@@ -239,6 +246,16 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
     }
     std::stable_sort(shots.begin(), shots.end(),
                      [](const SolvedShot& a, const SolvedShot& b) { return a.odds.successes > b.odds.successes; });
+    const auto keyOf = [](const SolvedShot& s) { return s.route + "|" + s.pocket + "|" + s.firstContact.value_or(""); };
+    std::vector<std::string> keys;
+    shots.erase(std::remove_if(shots.begin(), shots.end(),
+                               [&](const SolvedShot& s) {
+                                   const std::string key = keyOf(s);
+                                   if (std::find(keys.begin(), keys.end(), key) != keys.end()) return true;
+                                   keys.push_back(key);
+                                   return false;
+                               }),
+                shots.end());
     shots.resize(std::min<std::size_t>(shots.size(), static_cast<std::size_t>(std::max(0, request.top))));
 
     // 4. Tolerance windows of each varied key around each shot (noise-free, as the Analysis dock's).
