@@ -122,6 +122,17 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
         return result;
     };
 
+    // Ends the phase `into`: what it cost since the last mark.
+    auto mark = started;
+    long long marked = 0;
+    const auto close = [&](SolveResult::Phase& into) {
+        const auto now = std::chrono::steady_clock::now();
+        into.seconds += std::chrono::duration<double>(now - mark).count();
+        into.evaluations += evaluator.simulations() - marked;
+        mark = now;
+        marked = evaluator.simulations();
+    };
+
     // The search's own draws: two streams derived from the seed, apart from the final measurement's.
     analysis::SplitMix64 streams(request.seed ^ 0x736F6C7665ULL);  // "solve"
     const std::uint64_t screenSeed = streams.next();
@@ -156,6 +167,7 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
     report(SolvePhase::Seeding, 0, 1);
     const std::vector<Score> screened = evaluator.score(candidates, request.noise, screenSeed, request.screenSamples);
     report(SolvePhase::Seeding, 1, 1);
+    close(result.seeding);
     if (stop.stop_requested()) return finish();
 
     std::vector<Family> families(seeds.size());
@@ -212,6 +224,7 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
             kept.push_back({refined, route, key});
     }
     report(SolvePhase::Refining, static_cast<int>(families.size()), static_cast<int>(families.size()));
+    close(result.refining);
     std::stable_sort(kept.begin(), kept.end(), [](const Kept& a, const Kept& b) { return better(a.refined.score, b.refined.score); });
     kept.erase(std::remove_if(kept.begin(), kept.end(),
                               [](const Kept& k) { return k.refined.score.successes == 0 && !k.refined.score.nominalMet; }),
@@ -259,6 +272,7 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
     shots.resize(std::min<std::size_t>(shots.size(), static_cast<std::size_t>(std::max(0, request.top))));
 
     // 4. Tolerance windows of each varied key around each shot (noise-free, as the Analysis dock's).
+    close(result.measuring);
     result.shots = std::move(shots);
     for (SolvedShot& shot : result.shots) {
         spec.base = evaluator.setupWith(shot.strike);
@@ -283,6 +297,7 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
         }
         if (stop.stop_requested()) return finish();
     }
+    close(result.tolerance);
     report(SolvePhase::Measuring, measureTotal, measureTotal);
     return finish();
 }

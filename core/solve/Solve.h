@@ -88,6 +88,13 @@ struct SolveResult {
     long long evaluations = 0;      // simulations run (seeds, refinement, final odds, tolerance scans)
     double seconds = 0.0;           // wall time
     bool cancelled = false;
+    // Where the work went: simulations and wall time per phase (seeding, refinement, the final
+    // measurements, the tolerance scans).
+    struct Phase {
+        long long evaluations = 0;
+        double seconds = 0.0;
+    };
+    Phase seeding, refining, measuring, tolerance;
 };
 
 enum class SolvePhase { Seeding, Refining, Measuring };

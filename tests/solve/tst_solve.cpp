@@ -102,8 +102,13 @@ analysis::OddsResult oddsOf(const Setup& setup, const analysis::Goal& g, const S
 
 QByteArray describe(const SolveResult& result)
 {
+    const auto phase = [](const char* name, const SolveResult::Phase& p) {
+        return QByteArray(name) + " " + QByteArray::number(p.evaluations) + " in " + QByteArray::number(p.seconds, 'f', 2) + " s";
+    };
     QByteArray text = "evaluations " + QByteArray::number(result.evaluations) + ", " +
-                      QByteArray::number(result.seconds, 'f', 2) + " s;";
+                      QByteArray::number(result.seconds, 'f', 2) + " s (" + phase("seeds", result.seeding) + ", " +
+                      phase("refinement", result.refining) + ", " + phase("odds", result.measuring) + ", " +
+                      phase("tolerance", result.tolerance) + ");";
     for (const SolvedShot& s : result.shots)
         text += " [" + QByteArray::fromStdString(s.route) + " p=" + QByteArray::number(s.odds.probability()) +
                 " h=" + QByteArray::number(s.strike[0], 'g', 10) + " v=" + QByteArray::number(s.strike[1]) +
