@@ -28,9 +28,10 @@ namespace {
 // Seed candidates per heading: a few speeds (m/s) and tip heights (R: draw, stun, follow).
 constexpr std::array<double, 4> kSeedSpeeds = {0.9, 1.8, 3.2, 5.0};
 constexpr std::array<double, 3> kSeedHeights = {-0.4, 0.0, 0.4};
-// With the elevation varied, each heading is also tried as a jump: a steep firm stroke (°, m/s).
-constexpr double kJumpElevation = 25.0;
-constexpr std::array<double, 2> kJumpSpeeds = {3.5, 5.0};
+// With the elevation varied, each heading is also tried as a jump: a steep firm stroke (°, m/s;
+// resources/examples/jump-over-a-ball.json clears a ball 15 cm away at 45° and 4 m/s).
+constexpr std::array<double, 2> kJumpElevations = {35.0, 45.0};
+constexpr std::array<double, 2> kJumpSpeeds = {3.0, 4.0};
 // How far each tolerance scan looks either side (the key's unit) and its grid.
 constexpr Strike kToleranceHalfSpan = {2.0, 1.0, 0.3, 0.3, 5.0};
 constexpr int kToleranceCount = 21;
@@ -162,7 +163,8 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
         for (double speed : kSeedSpeeds)
             for (double height : kSeedHeights) push(speed, height, 0.0);
         if (varies(request, StrikeKey::Elevation))
-            for (double speed : kJumpSpeeds) push(speed, 0.0, kJumpElevation);
+            for (double elevation : kJumpElevations)
+                for (double speed : kJumpSpeeds) push(speed, 0.0, elevation);
     }
     report(SolvePhase::Seeding, 0, 1);
     const std::vector<Score> screened = evaluator.score(candidates, request.noise, screenSeed, request.screenSamples);
