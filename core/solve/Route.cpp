@@ -23,17 +23,18 @@ RouteInfo routeOf(const SimulationResult& result, const ShotOutcome& outcome, in
             break;
         }
 
-    bool landed = false;
+    bool flies = false;
     int banks = 0;
     for (const Event& e : result.events) {
-        // A landing at more than kJumpLandingSpeed: the ball flew (a hop of a level cue's noise lands
-        // at a few mm/s).
-        if (e.kind == EventKind::BallTable && e.balls[0] == struck && e.time > 0.0 && e.time < contactTime &&
-            e.before[0].vz < -kJumpLandingSpeed)
-            landed = true;
+        // The cloth throws the ball up at more than kJumpTakeOffSpeed (at the strike or a later
+        // bounce) before its first contact: it flies, whether it meets a ball in the air or after
+        // landing.
+        if (e.kind == EventKind::BallTable && e.balls[0] == struck && e.time < contactTime &&
+            e.after[0].vz > kJumpTakeOffSpeed)
+            flies = true;
         if (e.kind == EventKind::BallCushion && e.balls[0] == target && dropTime >= 0.0 && e.time < dropTime) ++banks;
     }
-    if (landed && elevationDeg >= kJumpElevationDeg) info.route = "jump";
+    if (flies && elevationDeg >= kJumpElevationDeg) info.route = "jump";
     else if (elevationDeg >= kMasseElevationDeg) info.route = "masse";
     else if (outcome.firstContact && target >= 0 && dropTime >= 0.0 && outcome.firstContact->ball != target)
         info.route = "combination";

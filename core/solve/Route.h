@@ -1,7 +1,7 @@
 #pragma once
 // The route of a shot as a player names it, read off its noise-free simulation:
-//   jump           an elevated cue (3° or more) and the struck ball flies, landing before its first
-//                  contact
+//   jump           an elevated cue (3° or more) and the struck ball flies (thrown up by the cloth
+//                  at more than 0.5 m/s) before its first contact
 //   masse          a steep cue (elevation of 30° or more) that does not jump: the path curves
 //   combination    the struck ball's first contact is not the ball the goal pots
 //   kick           the struck ball touches a cushion before its first contact
@@ -19,8 +19,8 @@ namespace cuelab::solve {
 
 constexpr double kMasseElevationDeg = 30.0;  // degrees: a steeper cue curves the path visibly
 constexpr double kJumpElevationDeg = 3.0;    // degrees: below this the cue is level (its noise aside)
-// m/s: a landing this fast fell from about v²/2g = 2 mm, a flight and not a hop of the cloth.
-constexpr double kJumpLandingSpeed = 0.2;
+// m/s: thrown up this fast, a ball rises v²/2g = 1.3 cm: a flight, not a hop of the cloth.
+constexpr double kJumpTakeOffSpeed = 0.5;
 
 struct RouteInfo {
     std::string route;

@@ -195,41 +195,20 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
     families.resize(refineCount);
 
     // 2. Refinement of each chosen seed, all on the same draws so that their scores compare.
-    struct Kept {
-        Refined refined;
-        RouteInfo route;
-        std::string key;
-    };
-    std::vector<Kept> kept;
-    const int target = targetBall(setup, goal);
+    std::vector<Refined> kept;
     for (std::size_t f = 0; f < families.size(); ++f) {
         report(SolvePhase::Refining, static_cast<int>(f), static_cast<int>(families.size()));
         Refined refined = refine(evaluator, families[f].best, request, searchSeed);
         if (stop.stop_requested()) return finish();
-        Nominal nominal = evaluator.nominal(refined.strike);
-        // A strike that only succeeds when the noise helps is named by its first successful draw:
-        // the route the player's successes take.
-        for (int i = 0; !nominal.met && i < request.searchSamples; ++i) {
-            const Strike draw = analysis::noisyStrike(refined.strike, request.noise, searchSeed, i);
-            if (std::hypot(draw[at(StrikeKey::Side)], draw[at(StrikeKey::Height)]) > analysis::kMiscueLimit) continue;
-            Nominal drawn = evaluator.nominal(draw);
-            if (drawn.met) nominal = std::move(drawn);
-        }
-        RouteInfo route;
-        if (nominal.simulated)
-            route = routeOf(nominal.result, nominal.outcome, target, refined.strike[at(StrikeKey::Elevation)]);
-        else
-            route.route = "direct";
-        const std::string key = route.route + "|" + route.pocket + "|" + route.firstContact.value_or("");
         // Two seeds that climbed to the very same strike are one candidate.
-        if (std::none_of(kept.begin(), kept.end(), [&](const Kept& k) { return k.refined.strike == refined.strike; }))
-            kept.push_back({refined, route, key});
+        if (std::none_of(kept.begin(), kept.end(), [&](const Refined& k) { return k.strike == refined.strike; }))
+            kept.push_back(refined);
     }
     report(SolvePhase::Refining, static_cast<int>(families.size()), static_cast<int>(families.size()));
     close(result.refining);
-    std::stable_sort(kept.begin(), kept.end(), [](const Kept& a, const Kept& b) { return better(a.refined.score, b.refined.score); });
+    std::stable_sort(kept.begin(), kept.end(), [](const Refined& a, const Refined& b) { return better(a.score, b.score); });
     kept.erase(std::remove_if(kept.begin(), kept.end(),
-                              [](const Kept& k) { return k.refined.score.successes == 0 && !k.refined.score.nominalMet; }),
+                              [](const Refined& k) { return k.score.successes == 0 && !k.score.nominalMet; }),
                kept.end());
 
     // 3. Each candidate measured as `odds` measures it (many more samples than the search's), then
@@ -245,19 +224,31 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
     odds.samples = request.samples;
     odds.seed = request.seed;
     std::vector<SolvedShot> shots;
+    const int target = targetBall(setup, goal);
     const int measureTotal = static_cast<int>(kept.size());
     for (std::size_t i = 0; i < kept.size(); ++i) {
         report(SolvePhase::Measuring, static_cast<int>(i), measureTotal);
-        spec.base = evaluator.setupWith(kept[i].refined.strike);
+        spec.base = evaluator.setupWith(kept[i].strike);
         SolvedShot shot;
-        shot.strike = kept[i].refined.strike;
+        shot.strike = kept[i].strike;
         shot.odds = analysis::shotOdds(spec, {}, odds, spec.threads, stop);
         evaluator.countSimulations(shot.odds.samples);
         if (stop.stop_requested()) return finish();
-        shot.route = kept[i].route.route;
-        shot.firstContact = kept[i].route.firstContact;
-        shot.pocket = kept[i].route.pocket;
-        if (shot.odds.successes > 0) shots.push_back(std::move(shot));
+        if (shot.odds.successes == 0) continue;
+        // The route of the noise-free shot; when that misses, of the first of the measured draws
+        // that succeeds (there is one): the route the player's successes take.
+        Nominal nominal = evaluator.nominal(shot.strike);
+        for (long long d = 0; !nominal.met && d < odds.samples; ++d) {
+            const Strike draw = analysis::noisyStrike(shot.strike, odds.noise, odds.seed, d);
+            if (std::hypot(draw[at(StrikeKey::Side)], draw[at(StrikeKey::Height)]) > analysis::kMiscueLimit) continue;
+            Nominal drawn = evaluator.nominal(draw);
+            if (drawn.met) nominal = std::move(drawn);
+        }
+        const RouteInfo route = routeOf(nominal.result, nominal.outcome, target, shot.strike[at(StrikeKey::Elevation)]);
+        shot.route = route.route;
+        shot.firstContact = route.firstContact;
+        shot.pocket = route.pocket;
+        shots.push_back(std::move(shot));
     }
     std::stable_sort(shots.begin(), shots.end(),
                      [](const SolvedShot& a, const SolvedShot& b) { return a.odds.successes > b.odds.successes; });

@@ -112,7 +112,8 @@ QByteArray describe(const SolveResult& result)
     for (const SolvedShot& s : result.shots)
         text += " [" + QByteArray::fromStdString(s.route) + " p=" + QByteArray::number(s.odds.probability()) +
                 " h=" + QByteArray::number(s.strike[0], 'g', 10) + " v=" + QByteArray::number(s.strike[1]) +
-                " side=" + QByteArray::number(s.strike[2]) + " height=" + QByteArray::number(s.strike[3]) + "]";
+                " side=" + QByteArray::number(s.strike[2]) + " height=" + QByteArray::number(s.strike[3]) +
+                " elevation=" + QByteArray::number(s.strike[4]) + "]";
     return text;
 }
 
@@ -127,6 +128,7 @@ private slots:
     void drawIntoAZoneBehind();
     void followIntoAZoneInFront();
     void blockedPotTakesAnotherRoute();
+    void jumpWhenTheElevationIsSearched();
     void probabilityIsWhatOddsSays();
     void sameForAnyThreadCount();
     void atLeastAsGoodAsABruteForceGrid();
@@ -202,6 +204,23 @@ void TestSolve::blockedPotTakesAnotherRoute()
         QVERIFY(shot.route != "direct");
         QVERIFY(shot.odds.successes > 0);
     }
+}
+
+void TestSolve::jumpWhenTheElevationIsSearched()
+{
+    // resources/examples/jump-over-a-ball.json: the 2 blocks the line to the 1, 15 cm from the cue
+    // ball; the goal asks the 1 to be hit first (no combination off the 2).
+    Setup s = straightShot();
+    s.balls = {ball("cue", 1.3938, 0.3086), ball("2", 1.5087, 0.405), ball("1", 1.93, 0.7586)};
+    SolveRequest r = request("club");
+    r.vary.push_back(StrikeKey::Elevation);
+    const SolveResult result = solve::solve(s, goal("pot:1@pocket-tr,first:1"), r);
+    qInfo("%s", describe(result).constData());
+    QVERIFY(!result.shots.empty());
+    const SolvedShot& best = result.shots.front();
+    QCOMPARE(QString::fromStdString(best.route), QStringLiteral("jump"));
+    QVERIFY(best.strike[4] > 20.0);
+    QVERIFY(best.odds.probability() > 0.1);
 }
 
 void TestSolve::probabilityIsWhatOddsSays()
