@@ -70,7 +70,9 @@ Evaluator::Evaluator(const Setup& setup, const analysis::Goal& goal, const Solve
     for (const GoalTerm& t : goal.terms) {
         TermCheck check;
         check.term = t;
-        check.alone = *analysis::ResolvedGoal::resolve(analysis::Goal{{t}}, setup_, nullptr);
+        // (A term that resolves within the goal resolves alone; the whole goal stands in otherwise.)
+        auto alone = analysis::ResolvedGoal::resolve(analysis::Goal{{t}}, setup_, nullptr);
+        check.alone = alone ? std::move(*alone) : resolved_;
         for (std::size_t i = 0; i < setup_.balls.size(); ++i)
             if (setup_.balls[i].id == t.ball) check.ball = static_cast<int>(i);
         if (t.kind == GoalTerm::Kind::Pocketed)
@@ -78,7 +80,6 @@ Evaluator::Evaluator(const Setup& setup, const analysis::Goal& goal, const Solve
                 if (t.pocket.empty() || table.pockets[p].id == t.pocket) check.pockets.push_back(static_cast<int>(p));
         terms_.push_back(std::move(check));
     }
-
 }
 
 Strike Evaluator::baseStrike() const

@@ -186,12 +186,16 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
     // so that the refinements look at different routes; then the rest by their screening.
     const std::size_t refineCount =
         std::min<std::size_t>(families.size(), static_cast<std::size_t>(std::max(request.refineSeeds, 2 * request.top)));
-    std::stable_partition(families.begin(), families.end(), [&, seen = std::vector<SeedKind>()](const Family& f) mutable {
+    std::vector<Family> leaders, rest;
+    std::vector<SeedKind> seen;
+    for (const Family& f : families) {
         const SeedKind kind = seeds[f.seed].kind;
-        if (f.seed == 0 || std::find(seen.begin(), seen.end(), kind) != seen.end()) return false;
-        seen.push_back(kind);
-        return true;
-    });
+        const bool first = f.seed != 0 && std::find(seen.begin(), seen.end(), kind) == seen.end();
+        if (first) seen.push_back(kind);
+        (first ? leaders : rest).push_back(f);
+    }
+    families = std::move(leaders);
+    families.insert(families.end(), rest.begin(), rest.end());
     families.resize(refineCount);
 
     // 2. Refinement of each chosen seed, all on the same draws so that their scores compare.
