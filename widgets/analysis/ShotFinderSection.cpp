@@ -1,0 +1,199 @@
+#include "ShotFinderSection.h"
+
+#include "AnalysisJob.h"
+
+#include "editor/Document.h"
+
+#include "Goal.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <memory>
+
+namespace cuelab {
+
+namespace {
+
+// Final samples per found shot: the Wilson interval's half-width is at most 2.2 % at 2000.
+constexpr long long kSamples = 2000;
+
+QString percent(double p) { return QString::number(std::lround(p * 100.0)); }
+
+}  // namespace
+
+ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()> goalText,
+                                     std::function<analysis::NoiseModel()> noise, QWidget* parent)
+    : QGroupBox(tr("Find shots"), parent), document_(document), goalText_(std::move(goalText)),
+      noise_(std::move(noise)), job_(new AnalysisJob(this))
+{
+    setToolTip(tr("The strikes that meet the goal most often for the player of the odds section: direct pots, "
+                  "banks, kicks and combinations, each refined over aim, speed and tip (docs/solve.md)."));
+    top_ = new QSpinBox(this);
+    top_->setRange(1, 10);
+    top_->setValue(3);
+    top_->setPrefix(tr("up to "));
+    top_->setSuffix(tr(" shots"));
+    elevation_ = new QCheckBox(tr("Jumps and massés"), this);
+    elevation_->setToolTip(tr("Also search the cue's elevation"));
+    find_ = new QPushButton(tr("Find shots"), this);
+    list_ = new QListWidget(this);
+    list_->setToolTip(tr("Click a shot to load its strike (one undo step)"));
+    list_->setMinimumHeight(80);
+    progress_ = new QProgressBar(this);
+    progress_->setRange(0, 1);
+    progress_->setValue(0);
+    progress_->setTextVisible(false);
+    cancel_ = new QPushButton(tr("Cancel"), this);
+    cancel_->setEnabled(false);
+    status_ = new QLabel(this);
+    status_->setWordWrap(true);
+
+    auto* options = new QHBoxLayout;
+    options->addWidget(top_);
+    options->addWidget(elevation_);
+    options->addStretch(1);
+    options->addWidget(find_);
+    auto* progressRow = new QHBoxLayout;
+    progressRow->addWidget(progress_, 1);
+    progressRow->addWidget(cancel_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(options);
+    layout->addWidget(list_, 1);
+    layout->addLayout(progressRow);
+    layout->addWidget(status_);
+
+    connect(find_, &QPushButton::clicked, this, &ShotFinderSection::find);
+    connect(cancel_, &QPushButton::clicked, this, &ShotFinderSection::cancel);
+    connect(list_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) { loadShot(list_->row(item)); });
+    connect(job_, &AnalysisJob::progressChanged, this, [this](long long done, long long total) {
+        progress_->setRange(0, static_cast<int>(total));
+        progress_->setValue(static_cast<int>(done));
+    });
+    connect(job_, &AnalysisJob::runningChanged, this, [this](bool running) {
+        cancel_->setEnabled(running);
+        find_->setEnabled(!running);
+    });
+    connect(job_, &AnalysisJob::finished, this, [this](bool cancelled) {
+        if (cancelled) setStatus(tr("Cancelled."));
+    });
+    connect(document_, &Document::setupChanged, this, [this] {
+        if (loading_ || shots_.empty() || stale_) return;
+        stale_ = true;
+        list_->setEnabled(false);
+        setStatus(tr("The setup changed since these shots were found; find again."));
+    });
+}
+
+ShotFinderSection::~ShotFinderSection() = default;
+
+QString ShotFinderSection::statusText() const { return status_->text(); }
+
+void ShotFinderSection::setStatus(const QString& text) { status_->setText(text); }
+
+void ShotFinderSection::cancel() { job_->cancel(); }
+
+void ShotFinderSection::find()
+{
+    const Setup setup = document_->setup();
+    auto parsed = analysis::parseGoal(goalText_().trimmed().toStdString());
+    if (auto* error = std::get_if<std::string>(&parsed)) return setStatus(tr("Goal: %1").arg(QString::fromStdString(*error)));
+    const analysis::Goal goal = std::get<analysis::Goal>(parsed);
+    if (goal.empty()) return setStatus(tr("Type a goal above first, e.g. pot:1@pocket-tr,no-scratch."));
+    std::string error;
+    if (!analysis::ResolvedGoal::resolve(goal, setup, &error))
+        return setStatus(tr("Goal: %1").arg(QString::fromStdString(error)));
+    if (const auto problem = solve::checkSolvable(setup, goal))
+        return setStatus(tr("Goal: %1").arg(QString::fromStdString(*problem)));
+
+    solve::SolveRequest request;
+    request.noise = noise_();
+    request.top = top_->value();
+    request.samples = kSamples;
+    if (elevation_->isChecked()) request.vary.push_back(analysis::StrikeKey::Elevation);
+    request.setupName = document_->displayName().toStdString();
+    vary_ = request.vary;
+    shots_.clear();
+    list_->clear();
+    stale_ = false;
+    list_->setEnabled(true);
+    setStatus(tr("Searching…"));
+    job_->start([setup, goal, request, this](AnalysisJob::Context& context) {
+        // Progress: the seeding, each refinement and the measurements as steps of one bar.
+        const auto progress = [&context](const solve::SolveProgress& p) {
+            const long long refinements = p.phase == solve::SolvePhase::Refining ? p.total : 6;
+            const long long total = refinements + 2;
+            long long done = 0;
+            if (p.phase == solve::SolvePhase::Refining) done = 1 + p.done;
+            if (p.phase == solve::SolvePhase::Measuring) done = total - 1 + (p.done == p.total ? 1 : 0);
+            context.progress(done, total);
+        };
+        auto result = std::make_shared<solve::SolveResult>(solve::solve(setup, goal, request, context.stop, progress));
+        if (context.stop.stop_requested()) return;
+        context.post([this, result] { show(*result); });
+    });
+}
+
+void ShotFinderSection::show(const solve::SolveResult& result)
+{
+    shots_ = result.shots;
+    list_->clear();
+    for (std::size_t i = 0; i < shots_.size(); ++i) {
+        const solve::SolvedShot& s = shots_[i];
+        const analysis::Interval ci = s.odds.ci95();
+        QString text = tr("%1. %2: %3 % (%4–%5 %)")
+                           .arg(i + 1)
+                           .arg(QString::fromStdString(s.route))
+                           .arg(percent(s.odds.probability()))
+                           .arg(percent(ci.low))
+                           .arg(percent(ci.high));
+        if (!s.pocket.empty()) text += tr(", into %1").arg(QString::fromStdString(s.pocket));
+        QString tip;
+        for (analysis::StrikeKey k : vary_)
+            tip += QStringLiteral("%1 = %2\n")
+                       .arg(QString::fromUtf8(analysis::keyOf(k).data(), static_cast<qsizetype>(analysis::keyOf(k).size())))
+                       .arg(s.strike[static_cast<std::size_t>(k)], 0, 'g', 6);
+        auto* item = new QListWidgetItem(text, list_);
+        item->setToolTip(tip.trimmed());
+    }
+    setStatus(shots_.empty() ? tr("No strike met the goal (%1 simulations, %2 s).")
+                                   .arg(result.evaluations)
+                                   .arg(result.seconds, 0, 'f', 1)
+                             : tr("%1 simulations in %2 s; each shot's odds from %3 fresh strikes.")
+                                   .arg(result.evaluations)
+                                   .arg(result.seconds, 0, 'f', 1)
+                                   .arg(kSamples));
+}
+
+bool ShotFinderSection::loadShot(int row)
+{
+    if (row < 0 || row >= static_cast<int>(shots_.size())) return false;
+    if (stale_) {
+        setStatus(tr("The setup changed since these shots were found; find again."));
+        return false;
+    }
+    Setup setup = document_->setup();
+    if (!setup.shot) return false;
+    const solve::SolvedShot& s = shots_[static_cast<std::size_t>(row)];
+    setup.shot->headingDeg = s.strike[0];
+    setup.shot->speed = s.strike[1];
+    setup.shot->side = s.strike[2];
+    setup.shot->height = s.strike[3];
+    setup.shot->elevationDeg = s.strike[4];
+    const QString text = tr("Load found shot %1 (%2)").arg(row + 1).arg(QString::fromStdString(s.route));
+    loading_ = true;
+    const bool ok = document_->edit(text, setup);
+    document_->endMerge();
+    loading_ = false;
+    setStatus(ok ? text : tr("That shot is not a legal setup."));
+    return ok;
+}
+
+}  // namespace cuelab

@@ -1,0 +1,69 @@
+#pragma once
+// "Find shots" in the Analysis dock (issue 42): the strikes that meet the dock's goal most often
+// under the odds section's noise, found by core/solve (Solve.h, the same code as `cuelab-cli
+// solve`) on background threads with progress and Cancel, listed best first with their odds and
+// route. A click on a listed shot loads its strike as one undo step.
+
+#include "Solve.h"
+
+#include <QGroupBox>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+class QCheckBox;
+class QLabel;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace cuelab {
+
+class AnalysisJob;
+class Document;
+
+class ShotFinderSection : public QGroupBox {
+    Q_OBJECT
+public:
+    // `goalText`: the dock's goal as typed; `noise`: the odds section's noise model.
+    ShotFinderSection(Document* document, std::function<QString()> goalText,
+                      std::function<analysis::NoiseModel()> noise, QWidget* parent = nullptr);
+    ~ShotFinderSection() override;
+
+    void find();
+    void cancel();
+    bool loadShot(int row);  // what a click on a listed shot does; false if refused
+
+    // For tests.
+    AnalysisJob* job() const { return job_; }
+    QListWidget* list() const { return list_; }
+    QSpinBox* topBox() const { return top_; }
+    QCheckBox* elevationBox() const { return elevation_; }
+    QString statusText() const;
+    const std::vector<solve::SolvedShot>& shots() const { return shots_; }
+
+private:
+    void setStatus(const QString& text);
+    void show(const solve::SolveResult& result);
+
+    Document* document_;
+    std::function<QString()> goalText_;
+    std::function<analysis::NoiseModel()> noise_;
+    AnalysisJob* job_;
+    QSpinBox* top_;
+    QCheckBox* elevation_;
+    QPushButton* find_;
+    QListWidget* list_;
+    QProgressBar* progress_;
+    QPushButton* cancel_;
+    QLabel* status_;
+
+    std::vector<solve::SolvedShot> shots_;
+    std::vector<analysis::StrikeKey> vary_;
+    bool stale_ = false;    // the setup changed since the shots were found
+    bool loading_ = false;  // a listed shot is being loaded (its own setup change)
+};
+
+}  // namespace cuelab
