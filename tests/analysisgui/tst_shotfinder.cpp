@@ -14,6 +14,7 @@
 
 #include <QLineEdit>
 #include <QListWidget>
+#include <QSignalSpy>
 #include <QSpinBox>
 #include <QUndoStack>
 #include <QtTest>
@@ -76,6 +77,18 @@ void TestShotFinder::findsListsAndLoadsOneUndoStep()
     QVERIFY(f.finder->statusText().contains(QStringLiteral("simulations")));
     QVERIFY(f.finder->grab().save(QStringLiteral(CUELAB_BINARY_DIR "/shot-finder.png")));
 
+    // The chosen (first) shot's paths for the table: the cue ball's from its place, the 1's.
+    const ViewLayer layer = f.finder->ghostLayer();
+    QCOMPARE(layer.polylines.size(), std::size_t{2});
+    const Vec2 cue = f.document.setup().balls[0].state.position;
+    QVERIFY((layer.polylines[0].points.front().head<2>() - cue).norm() < 1e-12);
+    QVERIFY(layer.polylines[0].points.size() > 10);
+    QSignalSpy layerChanged(f.finder, &ShotFinderSection::ghostLayerChanged);
+    if (f.finder->list()->count() > 1) {
+        f.finder->list()->setCurrentRow(1);
+        QCOMPARE(layerChanged.count(), 1);
+    }
+
     // A click on the first shot loads its strike: one undo step, undone as one.
     const CueStrike before = *f.document.setup().shot;
     const int steps = f.document.undoStack()->count();
@@ -91,6 +104,7 @@ void TestShotFinder::findsListsAndLoadsOneUndoStep()
     // The undo changed the setup behind the list's back? No: it restored the solved setup, but the
     // list cannot know; any change after a find makes it stale.
     QVERIFY(!f.finder->list()->isEnabled());
+    QVERIFY(f.finder->ghostLayer().polylines.empty());
     QVERIFY(!f.finder->loadShot(0));
     QVERIFY(f.finder->statusText().contains(QStringLiteral("find again")));
 }

@@ -5,6 +5,7 @@
 #include "editor/Document.h"
 
 #include "Goal.h"
+#include "Simulation.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -26,6 +27,46 @@ namespace {
 constexpr long long kSamples = 2000;
 
 QString percent(double p) { return QString::number(std::lround(p * 100.0)); }
+
+constexpr double kPathStep = 0.01;  // s between the samples of a ghost path
+constexpr int kMostPathPoints = 600;
+
+using Paths = std::vector<std::vector<std::vector<Vec2>>>;
+
+// The noise-free paths of each shot: every ball that moves, sampled in time.
+Paths pathsOf(const Setup& setup, const std::vector<solve::SolvedShot>& shots, const std::stop_token& stop)
+{
+    Paths all;
+    for (const solve::SolvedShot& shot : shots) {
+        std::vector<std::vector<Vec2>> paths;
+        Setup s = setup;
+        s.shot->headingDeg = shot.strike[0];
+        s.shot->speed = shot.strike[1];
+        s.shot->side = shot.strike[2];
+        s.shot->height = shot.strike[3];
+        s.shot->elevationDeg = shot.strike[4];
+        SimulationOptions options;
+        options.cancel = stop;
+        try {
+            const SimulationResult r = simulate(s, options);
+            const double step = std::max(kPathStep, r.endTime / kMostPathPoints);
+            for (int b = 0; b < static_cast<int>(r.balls.size()); ++b) {
+                std::vector<Vec2> path;
+                for (double t = 0.0;; t = std::min(r.endTime, t + step)) {
+                    const BallState state = r.stateAt(b, t);
+                    if (state.motion == MotionState::Pocketed || state.motion == MotionState::OffTable) break;
+                    if (path.empty() || (state.position - path.back()).norm() > 1e-6) path.push_back(state.position);
+                    if (t >= r.endTime) break;
+                }
+                if (path.size() > 1) paths.push_back(std::move(path));
+            }
+        } catch (const std::exception&) {
+            // No paths for a shot that cannot be simulated (the list still has it).
+        }
+        all.push_back(std::move(paths));
+    }
+    return all;
+}
 
 }  // namespace
 
@@ -73,6 +114,7 @@ ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()
     connect(find_, &QPushButton::clicked, this, &ShotFinderSection::find);
     connect(cancel_, &QPushButton::clicked, this, &ShotFinderSection::cancel);
     connect(list_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) { loadShot(list_->row(item)); });
+    connect(list_, &QListWidget::currentRowChanged, this, &ShotFinderSection::ghostLayerChanged);
     connect(job_, &AnalysisJob::progressChanged, this, [this](long long done, long long total) {
         progress_->setRange(0, static_cast<int>(total));
         progress_->setValue(static_cast<int>(done));
@@ -89,6 +131,7 @@ ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()
         stale_ = true;
         list_->setEnabled(false);
         setStatus(tr("The setup changed since these shots were found; find again."));
+        emit ghostLayerChanged();
     });
 }
 
@@ -121,8 +164,10 @@ void ShotFinderSection::find()
     request.setupName = document_->displayName().toStdString();
     vary_ = request.vary;
     shots_.clear();
+    paths_.clear();
     list_->clear();
     stale_ = false;
+    emit ghostLayerChanged();
     list_->setEnabled(true);
     setStatus(tr("Searching…"));
     job_->start([setup, goal, request, this](AnalysisJob::Context& context) {
@@ -137,7 +182,12 @@ void ShotFinderSection::find()
         };
         auto result = std::make_shared<solve::SolveResult>(solve::solve(setup, goal, request, context.stop, progress));
         if (context.stop.stop_requested()) return;
-        context.post([this, result] { show(*result); });
+        auto paths = std::make_shared<Paths>(pathsOf(setup, result->shots, context.stop));
+        if (context.stop.stop_requested()) return;
+        context.post([this, result, paths] {
+            paths_ = std::move(*paths);
+            show(*result);
+        });
     });
 }
 
@@ -163,6 +213,8 @@ void ShotFinderSection::show(const solve::SolveResult& result)
         auto* item = new QListWidgetItem(text, list_);
         item->setToolTip(tip.trimmed());
     }
+    if (!shots_.empty()) list_->setCurrentRow(0);  // its paths on the table
+    emit ghostLayerChanged();
     setStatus(shots_.empty() ? tr("No strike met the goal (%1 simulations, %2 s).")
                                    .arg(result.evaluations)
                                    .arg(result.seconds, 0, 'f', 1)
@@ -170,6 +222,23 @@ void ShotFinderSection::show(const solve::SolveResult& result)
                                    .arg(result.evaluations)
                                    .arg(result.seconds, 0, 'f', 1)
                                    .arg(kSamples));
+}
+
+ViewLayer ShotFinderSection::ghostLayer() const
+{
+    ViewLayer layer;
+    const int row = list_->currentRow();
+    if (stale_ || row < 0 || row >= static_cast<int>(paths_.size())) return layer;
+    const double radius = document_->setup().balls.empty() ? 0.028575 : document_->setup().balls.front().radius;
+    for (const std::vector<Vec2>& path : paths_[static_cast<std::size_t>(row)]) {
+        LayerPolyline line;
+        line.colour = QColor(120, 230, 255, 200);
+        line.width = 2.0f;
+        for (const Vec2& p : path) line.points.push_back(Vec3(p.x(), p.y(), radius));
+        layer.polylines.push_back(std::move(line));
+    }
+    if (!layer.polylines.empty()) layer.polylines.front().label = tr("found shot %1").arg(row + 1);
+    return layer;
 }
 
 bool ShotFinderSection::loadShot(int row)

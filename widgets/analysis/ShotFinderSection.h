@@ -2,9 +2,12 @@
 // "Find shots" in the Analysis dock (issue 42): the strikes that meet the dock's goal most often
 // under the odds section's noise, found by core/solve (Solve.h, the same code as `cuelab-cli
 // solve`) on background threads with progress and Cancel, listed best first with their odds and
-// route. A click on a listed shot loads its strike as one undo step.
+// route. The chosen shot's noise-free paths are offered as a view layer (ghost paths on the table);
+// a click on a listed shot loads its strike as one undo step.
 
 #include "Solve.h"
+
+#include "view/ViewLayer.h"
 
 #include <QGroupBox>
 
@@ -44,6 +47,13 @@ public:
     QString statusText() const;
     const std::vector<solve::SolvedShot>& shots() const { return shots_; }
 
+    // The paths of the chosen shot (the list's current row) as a layer for the table view; empty
+    // when there is none or the list is stale.
+    ViewLayer ghostLayer() const;
+
+signals:
+    void ghostLayerChanged();
+
 private:
     void setStatus(const QString& text);
     void show(const solve::SolveResult& result);
@@ -61,6 +71,7 @@ private:
     QLabel* status_;
 
     std::vector<solve::SolvedShot> shots_;
+    std::vector<std::vector<std::vector<Vec2>>> paths_;  // per shot, per moving ball: its noise-free path
     std::vector<analysis::StrikeKey> vary_;
     bool stale_ = false;    // the setup changed since the shots were found
     bool loading_ = false;  // a listed shot is being loaded (its own setup change)

@@ -1,10 +1,12 @@
 // The Analysis dock (issue 11, widgets/analysis): tolerance bars and outcome maps around the current
-// shot, and the Analysis menu's actions for them.
+// shot, the shot finder (issue 42) with its paths over the table, and the Analysis menu's actions.
 
 #include "Features.h"
 #include "MainWindow.h"
 
 #include "analysis/AnalysisPanel.h"
+#include "analysis/ShotFinderSection.h"
+#include "view/TableView.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -43,9 +45,26 @@ void installAnalysis(MainWindow& window)
         panel->mapMode()->setCurrentIndex(AnalysisPanel::TipOffsetDisk);
         panel->runMap();
     });
+    // Find shots (issue 42): the chosen shot's paths drawn over the table while the dock is shown.
+    ShotFinderSection* finder = panel->findChild<ShotFinderSection*>();
+    TableView* view = window.tableView();
+    const auto showPaths = [finder, dock, view] {
+        ViewLayer layer = finder->ghostLayer();
+        if (dock->isVisible() && !layer.polylines.empty()) view->setLayer(QStringLiteral("shot-finder"), std::move(layer));
+        else view->clearLayer(QStringLiteral("shot-finder"));
+    };
+    QObject::connect(finder, &ShotFinderSection::ghostLayerChanged, view, showPaths);
+    QObject::connect(dock, &QDockWidget::visibilityChanged, view, showPaths);
+    QAction* find = menu->addAction(QObject::tr("&Find shots"));
+    find->setStatusTip(QObject::tr("The strikes that meet the goal most often for the chosen player"));
+    QObject::connect(find, &QAction::triggered, panel, [finder, showDock] {
+        showDock();
+        finder->find();
+    });
     QAction* cancel = menu->addAction(QObject::tr("&Cancel analysis"));
     cancel->setStatusTip(QObject::tr("Stop the running scan or map"));
     QObject::connect(cancel, &QAction::triggered, panel, &AnalysisPanel::cancel);
+    QObject::connect(cancel, &QAction::triggered, finder, &ShotFinderSection::cancel);
     menu->addSeparator();
     QAction* toggle = dock->toggleViewAction();
     toggle->setText(QObject::tr("Analysis &panel"));
