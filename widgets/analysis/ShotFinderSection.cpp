@@ -80,8 +80,8 @@ ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()
     top_ = new QSpinBox(this);
     top_->setRange(1, 10);
     top_->setValue(3);
-    top_->setPrefix(tr("up to "));
     top_->setSuffix(tr(" shots"));
+    top_->setToolTip(tr("At most this many shots, each by another route or pocket"));
     elevation_ = new QCheckBox(tr("Jumps and massés"), this);
     elevation_->setToolTip(tr("Also search the cue's elevation"));
     find_ = new QPushButton(tr("Find shots"), this);
@@ -97,9 +97,9 @@ ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()
     status_ = new QLabel(this);
     status_->setWordWrap(true);
 
+    // Two short rows: the dock fits a narrow side column.
     auto* options = new QHBoxLayout;
     options->addWidget(top_);
-    options->addWidget(elevation_);
     options->addStretch(1);
     options->addWidget(find_);
     auto* progressRow = new QHBoxLayout;
@@ -107,6 +107,7 @@ ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()
     progressRow->addWidget(cancel_);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(options);
+    layout->addWidget(elevation_);
     layout->addWidget(list_, 1);
     layout->addLayout(progressRow);
     layout->addWidget(status_);
