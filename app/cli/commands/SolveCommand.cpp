@@ -42,7 +42,9 @@ Command solveCommand()
     c.help = QStringLiteral(
         "  solve SETUP --goal GOAL [--noise PRESET|KEY=SIGMA ...] [--top K] [--vary KEYS] [--seed S]\n"
         "        [--samples N] [--jobs J]      The strikes that meet GOAL most often under the noise\n"
-        "                                        (default preset club): {\"shots\": [...], ...}.\n");
+        "                                        (default preset club; --vary shot.heading,shot.speed,\n"
+        "                                        shot.side,shot.height; 2000 samples per shot):\n"
+        "                                        {\"shots\": [...], ...}.\n");
     c.options = solveOptionSpecs();
     c.run = [](Invocation& in) -> int {
         if (!in.isSet(QStringLiteral("goal"))) return in.usage(QStringLiteral("solve: --goal GOAL is required"));
@@ -59,7 +61,8 @@ Command solveCommand()
         if (!bad.isEmpty()) return in.usage(bad);
         solve::SolveRequest request;
         if (in.isSet(QStringLiteral("vary"))) {
-            auto vary = solve::parseVary(in.value(QStringLiteral("vary")).toStdString());
+            // Comma-separated, and repeatable as sweep's --vary is.
+            auto vary = solve::parseVary(in.values(QStringLiteral("vary")).join(QLatin1Char(',')).toStdString());
             if (auto* error = std::get_if<std::string>(&vary))
                 return in.usage(QStringLiteral("--vary: ") + QString::fromStdString(*error));
             request.vary = std::get<std::vector<analysis::StrikeKey>>(vary);
