@@ -14,6 +14,7 @@
 
 #include <QLineEdit>
 #include <QListWidget>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QUndoStack>
@@ -56,6 +57,7 @@ class TestShotFinder : public QObject {
     Q_OBJECT
 private slots:
     void findsListsAndLoadsOneUndoStep();
+    void pickingMakesTheGoal();
     void badGoalIsSaid();
     void cancelStops();
 };
@@ -107,6 +109,36 @@ void TestShotFinder::findsListsAndLoadsOneUndoStep()
     QVERIFY(f.finder->ghostLayer().polylines.empty());
     QVERIFY(!f.finder->loadShot(0));
     QVERIFY(f.finder->statusText().contains(QStringLiteral("find again")));
+}
+
+void TestShotFinder::pickingMakesTheGoal()
+{
+    Fixture f("straight-shot.json");
+    f.panel.goalEdit()->setText(QStringLiteral("pot:1"));
+    f.finder->pickButton()->setChecked(true);
+    QVERIFY(f.finder->picking());
+    f.finder->pickBall(0);  // the cue ball: not a ball to pot
+    QVERIFY(f.finder->statusText().contains(QStringLiteral("struck ball")));
+    QCOMPARE(f.panel.goalEdit()->text(), QStringLiteral("pot:1"));
+    f.finder->pickBall(1);
+    QCOMPARE(f.panel.goalEdit()->text(), QStringLiteral("pot:1,no-scratch"));
+    f.finder->pickPocket(5);  // pocket-tr (pockets: bl, b, br, tl, t, tr)
+    QCOMPARE(f.panel.goalEdit()->text(), QStringLiteral("pot:1@pocket-tr,no-scratch"));
+    // A zone dragged from its top-right corner to its bottom-left one.
+    QSignalSpy layerChanged(f.finder, &ShotFinderSection::ghostLayerChanged);
+    f.finder->previewZone(Vec2(1.7, 0.58), Vec2(1.5, 0.4));
+    QCOMPARE(layerChanged.count(), 1);
+    f.finder->pickZone(Vec2(1.7, 0.58), Vec2(1.46, 0.34));
+    QCOMPARE(f.panel.goalEdit()->text(), QStringLiteral("pot:1@pocket-tr,no-scratch,in:cue@1.460:0.340:1.700:0.580"));
+    const ViewLayer layer = f.finder->ghostLayer();
+    QCOMPARE(layer.polylines.size(), std::size_t{1});
+    QVERIFY(layer.polylines[0].closed);
+    QCOMPARE(layer.polylines[0].points.size(), std::size_t{4});
+    QCOMPARE(layer.polylines[0].points[0].x(), 1.46);
+    QCOMPARE(layer.polylines[0].points[2].y(), 0.58);
+    // Picking again starts afresh; off, the zone is not drawn.
+    f.finder->pickButton()->setChecked(false);
+    QVERIFY(f.finder->ghostLayer().polylines.empty());
 }
 
 void TestShotFinder::badGoalIsSaid()

@@ -227,7 +227,12 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     layout->addWidget(status_);
     auto* odds = new OddsSection(document_, [this] { return goal_->text(); }, this);
     layout->addWidget(odds, 1);  // issue 25
-    layout->addWidget(new ShotFinderSection(document_, [this] { return goal_->text(); }, [odds] { return odds->noise(); }, this),
+    const auto setGoal = [this](const QString& text) {
+        goal_->setText(text);
+        goalEdited_ = true;
+    };
+    layout->addWidget(new ShotFinderSection(document_, [this] { return goal_->text(); }, [odds] { return odds->noise(); },
+                                            setGoal, this),
                       1);  // issue 42
 
     connect(scan_, &QPushButton::clicked, this, &AnalysisPanel::runTolerance);

@@ -6,6 +6,7 @@
 
 #include "Goal.h"
 #include "Simulation.h"
+#include "Table.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -71,9 +72,10 @@ Paths pathsOf(const Setup& setup, const std::vector<solve::SolvedShot>& shots, c
 }  // namespace
 
 ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()> goalText,
-                                     std::function<analysis::NoiseModel()> noise, QWidget* parent)
+                                     std::function<analysis::NoiseModel()> noise,
+                                     std::function<void(const QString&)> setGoalText, QWidget* parent)
     : QGroupBox(tr("Find shots"), parent), document_(document), goalText_(std::move(goalText)),
-      noise_(std::move(noise)), job_(new AnalysisJob(this))
+      noise_(std::move(noise)), setGoalText_(std::move(setGoalText)), job_(new AnalysisJob(this))
 {
     setToolTip(tr("The strikes that meet the goal most often for the player of the odds section: direct pots, "
                   "banks, kicks and combinations, each refined over aim, speed and tip (docs/solve.md)."));
@@ -85,6 +87,10 @@ ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()
     elevation_ = new QCheckBox(tr("Jumps and massés"), this);
     elevation_->setToolTip(tr("Also search the cue's elevation"));
     find_ = new QPushButton(tr("Find shots"), this);
+    pick_ = new QPushButton(tr("Pick on the table"), this);
+    pick_->setCheckable(true);
+    pick_->setToolTip(tr("Make the goal by clicks on the table: a ball to pot, the pocket, then drag a zone "
+                         "where the cue ball should stop"));
     list_ = new QListWidget(this);
     list_->setToolTip(tr("Click a shot to load its strike (one undo step)"));
     list_->setMinimumHeight(80);
@@ -108,11 +114,21 @@ ShotFinderSection::ShotFinderSection(Document* document, std::function<QString()
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(options);
     layout->addWidget(elevation_);
+    layout->addWidget(pick_, 0, Qt::AlignLeft);
     layout->addWidget(list_, 1);
     layout->addLayout(progressRow);
     layout->addWidget(status_);
 
     connect(find_, &QPushButton::clicked, this, &ShotFinderSection::find);
+    connect(pick_, &QPushButton::toggled, this, [this](bool on) {
+        if (on) {
+            pickedBall_ = pickedPocket_ = -1;
+            pickedZone_.reset();
+            setStatus(tr("Click the ball to pot, then its pocket; drag a zone for the cue ball."));
+        }
+        zonePreview_.reset();
+        emit ghostLayerChanged();
+    });
     connect(cancel_, &QPushButton::clicked, this, &ShotFinderSection::cancel);
     connect(list_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) { loadShot(list_->row(item)); });
     connect(list_, &QListWidget::currentRowChanged, this, &ShotFinderSection::ghostLayerChanged);
@@ -225,9 +241,83 @@ void ShotFinderSection::show(const solve::SolveResult& result)
                                    .arg(kSamples));
 }
 
+bool ShotFinderSection::picking() const { return pick_->isChecked(); }
+
+void ShotFinderSection::pickBall(int index)
+{
+    const Setup& setup = document_->setup();
+    if (index < 0 || index >= static_cast<int>(setup.balls.size())) return;
+    if (setup.shot && setup.balls[static_cast<std::size_t>(index)].id == setup.shot->ball)
+        return setStatus(tr("That is the struck ball: click a ball to pot."));
+    pickedBall_ = index;
+    applyPicks();
+}
+
+void ShotFinderSection::pickPocket(int index)
+{
+    pickedPocket_ = index;
+    applyPicks();
+}
+
+void ShotFinderSection::previewZone(const Vec2& a, const Vec2& b)
+{
+    zonePreview_ = std::make_pair(a, b);
+    emit ghostLayerChanged();
+}
+
+void ShotFinderSection::pickZone(const Vec2& a, const Vec2& b)
+{
+    zonePreview_.reset();
+    pickedZone_ = std::make_pair(Vec2(std::min(a.x(), b.x()), std::min(a.y(), b.y())),
+                                 Vec2(std::max(a.x(), b.x()), std::max(a.y(), b.y())));
+    applyPicks();
+}
+
+QString ShotFinderSection::pickedGoal() const
+{
+    const Setup& setup = document_->setup();
+    if (pickedBall_ < 0 || pickedBall_ >= static_cast<int>(setup.balls.size())) return {};
+    QString goal = QStringLiteral("pot:") + QString::fromStdString(setup.balls[static_cast<std::size_t>(pickedBall_)].id);
+    const Table table = makeTable(setup.table);
+    if (pickedPocket_ >= 0 && pickedPocket_ < static_cast<int>(table.pockets.size()))
+        goal += QLatin1Char('@') + QString::fromStdString(table.pockets[static_cast<std::size_t>(pickedPocket_)].id);
+    if (setup.shot) {
+        goal += QStringLiteral(",no-scratch");
+        if (pickedZone_) {
+            const auto mm = [](double v) { return QString::number(v, 'f', 3); };
+            goal += QStringLiteral(",in:%1@%2:%3:%4:%5")
+                        .arg(QString::fromStdString(setup.shot->ball), mm(pickedZone_->first.x()), mm(pickedZone_->first.y()),
+                             mm(pickedZone_->second.x()), mm(pickedZone_->second.y()));
+        }
+    }
+    return goal;
+}
+
+void ShotFinderSection::applyPicks()
+{
+    const QString goal = pickedGoal();
+    if (!goal.isEmpty()) {
+        setGoalText_(goal);
+        setStatus(tr("Goal: %1").arg(goal));
+    } else {
+        setStatus(tr("Click the ball to pot first."));
+    }
+    emit ghostLayerChanged();
+}
+
 ViewLayer ShotFinderSection::ghostLayer() const
 {
     ViewLayer layer;
+    // The picked (or dragged) zone, a rectangle on the cloth.
+    if (const auto& zone = zonePreview_ ? zonePreview_ : pickedZone_; zone && picking()) {
+        LayerPolyline box;
+        box.colour = QColor(255, 210, 80, 220);
+        box.closed = true;
+        const double z = 0.001;
+        box.points = {Vec3(zone->first.x(), zone->first.y(), z), Vec3(zone->second.x(), zone->first.y(), z),
+                      Vec3(zone->second.x(), zone->second.y(), z), Vec3(zone->first.x(), zone->second.y(), z)};
+        layer.polylines.push_back(std::move(box));
+    }
     const int row = list_->currentRow();
     if (stale_ || row < 0 || row >= static_cast<int>(paths_.size())) return layer;
     const double radius = document_->setup().balls.empty() ? 0.028575 : document_->setup().balls.front().radius;
@@ -238,7 +328,7 @@ ViewLayer ShotFinderSection::ghostLayer() const
         for (const Vec2& p : path) line.points.push_back(Vec3(p.x(), p.y(), radius));
         layer.polylines.push_back(std::move(line));
     }
-    if (!layer.polylines.empty()) layer.polylines.front().label = tr("found shot %1").arg(row + 1);
+    if (!layer.polylines.empty()) layer.polylines.back().label = tr("found shot %1").arg(row + 1);
     return layer;
 }
 
