@@ -5,15 +5,16 @@
 // 1. Seeds from the aiming geometry (Seeds.h): ghost-ball aims for every object ball and pocket the
 //    goal allows, one- and two-cushion banks and kicks by mirror images over the cushion lines,
 //    combinations; each seed heading is tried at a few speeds and tip heights (draw, stun, follow).
-// 2. The most promising seeds are refined (Search.h) by a compass search over the varied strike
-//    keys on common random numbers: every candidate of one refinement is struck with the same noise
-//    draws, first with the noise doubled (a smoothed objective that still has a slope where the true
-//    one is flat), then with the true noise. Candidates are compared by their successes and, on a
-//    tie, by how close the noise-free shot comes to the goal (Objective.h), which also climbs out of
-//    a region where nothing succeeds yet.
-// 3. The refined shots are named by their route (Route.h); one shot per route, pocket and first
-//    contact is kept (neighbours of one optimum collapse into one), and each is re-measured with
-//    fresh samples exactly as `odds` measures it (ShotOdds.h, the request's seed), with its Wilson
+// 2. The most promising seeds (the best of each kind first) are refined (Search.h) by a compass
+//    search over the varied strike keys on common random numbers: every candidate of every
+//    refinement is struck with the same noise draws, first with the noise doubled (a smoothed
+//    objective that still has a slope where the true one is flat), then with the true noise, then a
+//    polish on more draws. A draw is worth 1 when it meets the goal and less the further its shot
+//    misses (Objective.h), so the search climbs out of a region where nothing succeeds yet; ties go
+//    to the most central noise-free shot.
+// 3. Every refined shot is re-measured with fresh samples exactly as `odds` measures it (ShotOdds.h,
+//    the request's seed), ranked by that, and named by its route (Route.h); one shot per route,
+//    pocket and first contact is kept (neighbours of one optimum collapse into one), with its Wilson
 //    interval and its tolerance windows (Tolerance.h).
 //
 // Every evaluation is a function of the candidate and the seed alone, and the search's decisions
@@ -60,9 +61,9 @@ struct SolveRequest {
     int threads = 0;               // 0: every core
     // The search's effort (defaults for a desktop; tests turn them down):
     int screenSamples = 8;         // noisy samples per seed candidate
-    int searchSamples = 24;        // common random numbers per candidate during refinement
+    int searchSamples = 24;        // common random numbers per candidate during refinement (the polish: 4 times)
     int refineSeeds = 6;           // seed families refined (at least 2 × top)
-    int maxIterations = 30;        // compass steps per stage of one refinement
+    int maxIterations = 30;        // compass steps per stage of one refinement (the polish: half)
     StrikeBounds bounds;
     SimulationOptions simulation;  // the event cap (cancel is set from the stop token)
     std::string setupName;         // names the setup in messages
