@@ -236,7 +236,7 @@ SolveResult solve(const Setup& setup, const analysis::Goal& goal, const SolveReq
         SolvedShot shot;
         shot.strike = kept[i].strike;
         shot.odds = analysis::shotOdds(spec, {}, odds, spec.threads, stop);
-        evaluator.countSimulations(shot.odds.samples);
+        evaluator.countSimulations(shot.odds.samples - shot.odds.miscues);  // a miscue is not simulated
         if (stop.stop_requested()) return finish();
         if (shot.odds.successes == 0) continue;
         // The route of the noise-free shot; when that misses, of the first of the measured draws
