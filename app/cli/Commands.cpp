@@ -13,6 +13,7 @@ Command explainCommand();
 Command compareCommand();
 Command sweepCommand();
 Command oddsCommand();
+Command solveCommand();
 Command fitCommand();
 Command calibrateCommand();
 Command codeCommand();
@@ -28,6 +29,7 @@ const QList<Command>& commands()
         compareCommand(),
         sweepCommand(),
         oddsCommand(),
+        solveCommand(),
         fitCommand(),
         calibrateCommand(),
         codeCommand(),

@@ -5,6 +5,7 @@
 #include "AnalysisJob.h"
 #include "OddsSection.h"
 #include "OutcomeMap.h"
+#include "ShotFinderSection.h"
 #include "ToleranceBar.h"
 #include "i18n/DisplayNames.h"
 
@@ -225,7 +226,15 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     progressRow->addWidget(cancel_);
     layout->addLayout(progressRow);
     layout->addWidget(status_);
-    layout->addWidget(new OddsSection(document_, [this] { return goal_->text(); }, this), 1);  // issue 25
+    auto* odds = new OddsSection(document_, [this] { return goal_->text(); }, this);
+    layout->addWidget(odds, 1);  // issue 25
+    const auto setGoal = [this](const QString& text) {
+        goal_->setText(text);
+        goalEdited_ = true;
+    };
+    layout->addWidget(new ShotFinderSection(document_, [this] { return goal_->text(); }, [odds] { return odds->noise(); },
+                                            setGoal, this),
+                      1);  // issue 42
 
     connect(scan_, &QPushButton::clicked, this, &AnalysisPanel::runTolerance);
     connect(mapButton_, &QPushButton::clicked, this, &AnalysisPanel::runMap);

@@ -1,17 +1,95 @@
 // The Analysis dock (issue 11, widgets/analysis): tolerance bars and outcome maps around the current
-// shot, and the Analysis menu's actions for them.
+// shot, the shot finder (issue 42) with its paths over the table, and the Analysis menu's actions.
 
 #include "Features.h"
 #include "MainWindow.h"
 
 #include "analysis/AnalysisPanel.h"
+#include "analysis/ShotFinderSection.h"
+#include "view/TableView.h"
+#include "editor/Document.h"
+
+#include "Table.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QComboBox>
 #include <QMenu>
+#include <QMouseEvent>
+
+#include <optional>
 
 namespace cuelab {
+
+namespace {
+
+// The table view's clicks while the shot finder picks its goal (ShotFinderSection::picking): a
+// left click on a ball picks the ball to pot, one near a pocket the pocket, a left drag on the
+// cloth a zone for the cue ball. Other gestures (and everything while not picking) go to the view.
+class GoalPicker : public QObject {
+public:
+    GoalPicker(TableView* view, ShotFinderSection* finder, Document* document)
+        : QObject(view), view_(view), finder_(finder), document_(document) {}
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched != view_ || !finder_->picking()) return false;
+        const auto cloth = [this](const QPointF& at) -> std::optional<Vec2> {
+            const auto p = view_->clothPointUnder(at, 0.0f);
+            if (!p) return std::nullopt;
+            return Vec2(p->x(), p->y());
+        };
+        switch (event->type()) {
+        case QEvent::MouseButtonPress: {
+            auto* mouse = static_cast<QMouseEvent*>(event);
+            if (mouse->button() != Qt::LeftButton || mouse->modifiers() != Qt::NoModifier) return false;
+            const QPointF at = mouse->position();
+            if (const int ball = view_->pickBall(at); ball >= 0) {
+                finder_->pickBall(ball);
+                return true;
+            }
+            const auto point = cloth(at);
+            if (!point) return false;
+            const Table table = makeTable(document_->setup().table);
+            for (std::size_t i = 0; i < table.pockets.size(); ++i)
+                if ((table.pockets[i].centre - *point).norm() < table.pockets[i].radius + kPocketReach) {
+                    finder_->pickPocket(static_cast<int>(i));
+                    return true;
+                }
+            dragFrom_ = point;
+            return true;
+        }
+        case QEvent::MouseMove:
+            if (dragFrom_) {
+                if (const auto point = cloth(static_cast<QMouseEvent*>(event)->position()))
+                    finder_->previewZone(*dragFrom_, *point);
+                return true;
+            }
+            return false;
+        case QEvent::MouseButtonRelease:
+            if (dragFrom_) {
+                const auto point = cloth(static_cast<QMouseEvent*>(event)->position());
+                if (point && (*point - *dragFrom_).cwiseAbs().minCoeff() >= kSmallestZone) finder_->pickZone(*dragFrom_, *point);
+                else finder_->previewZone(*dragFrom_, *dragFrom_);  // too small: no zone
+                dragFrom_.reset();
+                return true;
+            }
+            return false;
+        default: return false;
+        }
+    }
+
+private:
+    static constexpr double kPocketReach = 0.05;  // m beyond a pocket's circle that still picks it
+    static constexpr double kSmallestZone = 0.02; // m, each side of a dragged zone
+    TableView* view_;
+    ShotFinderSection* finder_;
+    Document* document_;
+    std::optional<Vec2> dragFrom_;
+};
+
+}  // namespace
 
 void installAnalysis(MainWindow& window)
 {
@@ -43,9 +121,27 @@ void installAnalysis(MainWindow& window)
         panel->mapMode()->setCurrentIndex(AnalysisPanel::TipOffsetDisk);
         panel->runMap();
     });
+    // Find shots (issue 42): the chosen shot's paths drawn over the table while the dock is shown.
+    ShotFinderSection* finder = panel->findChild<ShotFinderSection*>();
+    TableView* view = window.tableView();
+    const auto showPaths = [finder, dock, view] {
+        ViewLayer layer = finder->ghostLayer();
+        if (dock->isVisible() && !layer.polylines.empty()) view->setLayer(QStringLiteral("shot-finder"), std::move(layer));
+        else view->clearLayer(QStringLiteral("shot-finder"));
+    };
+    QObject::connect(finder, &ShotFinderSection::ghostLayerChanged, view, showPaths);
+    view->installEventFilter(new GoalPicker(view, finder, window.document()));
+    QObject::connect(dock, &QDockWidget::visibilityChanged, view, showPaths);
+    QAction* find = menu->addAction(QObject::tr("&Find shots"));
+    find->setStatusTip(QObject::tr("The strikes that meet the goal most often for the chosen player"));
+    QObject::connect(find, &QAction::triggered, panel, [finder, showDock] {
+        showDock();
+        finder->find();
+    });
     QAction* cancel = menu->addAction(QObject::tr("&Cancel analysis"));
     cancel->setStatusTip(QObject::tr("Stop the running scan or map"));
     QObject::connect(cancel, &QAction::triggered, panel, &AnalysisPanel::cancel);
+    QObject::connect(cancel, &QAction::triggered, finder, &ShotFinderSection::cancel);
     menu->addSeparator();
     QAction* toggle = dock->toggleViewAction();
     toggle->setText(QObject::tr("Analysis &panel"));
