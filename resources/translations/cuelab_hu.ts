@@ -4931,6 +4931,118 @@ Kimaradt kérdés: %1</translation>
 <context>
     <name>cuelab::explain</name>
     <message>
+        <source>%1 was potted, and %2 was on</source>
+        <translation>%1 esett lyukba, pedig %2 volt soron</translation>
+    </message>
+    <message>
+        <source>a ball other than the 8</source>
+        <translation>egy nem 8-as golyó</translation>
+    </message>
+    <message>
+        <source>a colour</source>
+        <translation>egy színes golyó</translation>
+    </message>
+    <message>
+        <source>a red</source>
+        <translation>egy piros</translation>
+    </message>
+    <message>
+        <source>a solid</source>
+        <translation>egy teli golyó</translation>
+    </message>
+    <message>
+        <source>a stripe</source>
+        <translation>egy csíkos golyó</translation>
+    </message>
+    <message>
+        <source>after the first contact no ball was pocketed and none reached a cushion</source>
+        <translation>az első érintkezés után egy golyó sem esett lyukba, és egy sem ért mantinelt</translation>
+    </message>
+    <message>
+        <source>ball %1 left the table</source>
+        <translation>a(z) %1 golyó elhagyta az asztalt</translation>
+    </message>
+    <message>
+        <source>foul (%1): %2; %3 points to the opponent</source>
+        <translation>szabálytalanság (%1): %2; %3 pont az ellenfélnek</translation>
+    </message>
+    <message>
+        <source>foul (%1): %2; ball in hand for the opponent</source>
+        <translation>szabálytalanság (%1): %2; az ellenfél kézből helyezi a fehér golyót</translation>
+    </message>
+    <message>
+        <source>foul (%1): %2; no point, the turn passes</source>
+        <translation>szabálytalanság (%1): %2; nincs pont, a másik játékos következik</translation>
+    </message>
+    <message>
+        <source>foul (%1): %2; the striker loses the rack</source>
+        <translation>szabálytalanság (%1): %2; a játékos elveszíti a játszmát</translation>
+    </message>
+    <message>
+        <source>legal, but no ball fell into the called %1; the turn passes</source>
+        <translation>szabályos, de a bemondott lyukba (%1) nem esett golyó; a másik játékos következik</translation>
+    </message>
+    <message>
+        <source>legal: %1 pocketed; the striker plays on</source>
+        <translation>szabályos: lyukba esett: %1; a játékos folytatja</translation>
+    </message>
+    <message>
+        <source>legal: %1 pocketed; the striker wins the rack</source>
+        <translation>szabályos: lyukba esett: %1; a játékos megnyeri a játszmát</translation>
+    </message>
+    <message>
+        <source>legal: %1 potted for %2 points; the striker plays on</source>
+        <translation>szabályos: lyukba esett: %1, %2 pont; a játékos folytatja</translation>
+    </message>
+    <message>
+        <source>legal: nothing pocketed; the turn passes</source>
+        <translation>szabályos: nem esett golyó lyukba; a másik játékos következik</translation>
+    </message>
+    <message>
+        <source>legal: nothing potted; the turn passes</source>
+        <translation>szabályos: nem esett golyó lyukba; az ellenfél következik</translation>
+    </message>
+    <message>
+        <source>no point: the cue ball met %1 after only %2 cushions (three needed)</source>
+        <translation>nincs pont: a fehér golyó csak %2 mantinel után érte el ezt: %1 (három kell)</translation>
+    </message>
+    <message>
+        <source>no point: the cue ball met %1 only</source>
+        <translation>nincs pont: a fehér golyó csak ezt érte el: %1</translation>
+    </message>
+    <message>
+        <source>no point: the cue ball met no object ball</source>
+        <translation>nincs pont: a fehér golyó egyik tárgygolyót sem érte el</translation>
+    </message>
+    <message>
+        <source>point: the cue ball met %1, then %2 after %3 cushions</source>
+        <translation>pont: a fehér golyó előbb ezt érte el: %1, majd %3 mantinel után ezt: %2</translation>
+    </message>
+    <message>
+        <source>the 8 fell into %1, not into the called %2</source>
+        <translation>a 8-as ide esett: %1, nem a bemondott lyukba (%2)</translation>
+    </message>
+    <message>
+        <source>the 8 went down before the striker&apos;s group was cleared</source>
+        <translation>a 8-as lyukba esett, mielőtt a játékos a saját csoportját letisztította volna</translation>
+    </message>
+    <message>
+        <source>the break pocketed no ball and drove %1 object balls to a cushion, not four</source>
+        <translation>a kezdőlökés nem juttatott golyót lyukba, és csak %1 tárgygolyót vitt mantinelhez négy helyett</translation>
+    </message>
+    <message>
+        <source>the cue ball fell into %1</source>
+        <translation>a fehér golyó lyukba esett: %1</translation>
+    </message>
+    <message>
+        <source>the cue ball first touched %1, not %2</source>
+        <translation>a fehér golyó először ezt érintette: %1, nem ezt: %2</translation>
+    </message>
+    <message>
+        <source>the cue ball touched no ball</source>
+        <translation>a fehér golyó egy golyót sem érintett</translation>
+    </message>
+    <message>
         <source>Motion after</source>
         <translation>Mozgás utána</translation>
     </message>
