@@ -99,7 +99,7 @@ Verdict judgeSnooker(const ShotFacts& f, const GameSpec& game)
     if (v.continues) {
         std::vector<Text> ids;
         for (const int b : v.scored) ids.push_back(ballText(f, b));
-        v.text = Text::tr("legal: %1 potted for %2 points; the striker plays on")
+        v.text = Text::tr("legal: %1 potted (+%2); the striker plays on")
                      .arg(Text::join(std::move(ids), ", "))
                      .arg(Text(std::to_string(v.points)));
     } else {
