@@ -290,6 +290,10 @@
 <context>
     <name>cuelab</name>
     <message>
+        <source>Verdict: %1</source>
+        <translation>Ítélet: %1</translation>
+    </message>
+    <message>
         <source>a foul</source>
         <translation>szabálytalanság</translation>
     </message>
