@@ -101,7 +101,61 @@ std::string csvField(const std::string& text)
 
 }  // namespace
 
-void writeOutcome(JsonWriter& w, const SimulationResult& result, const ShotOutcome& o, Layout layout)
+void writeVerdict(JsonWriter& w, const SimulationResult& result, const std::optional<rules::Verdict>& verdict)
+{
+    if (!verdict) {
+        w.null();
+        return;
+    }
+    const rules::Verdict& v = *verdict;
+    auto ids = [&](const std::vector<int>& balls) {
+        w.beginArray(Layout::Line);
+        for (const int b : balls) w.value(result.balls.at(static_cast<std::size_t>(b)).id);
+        w.endArray();
+    };
+    w.beginObject(Layout::Line);
+    w.key("rules");
+    w.value(std::string(toString(v.rules)));
+    w.key("legal");
+    w.value(v.legal());
+    w.key("foul");
+    if (v.foul) {
+        w.beginObject(Layout::Line);
+        w.key("rule");
+        w.value(std::string(toString(v.foul->rule)));
+        w.key("event");
+        w.value(v.foul->event);
+        w.key("text");
+        w.value(v.foul->text.english());
+        w.endObject();
+    } else {
+        w.null();
+    }
+    w.key("scored");
+    ids(v.scored);
+    w.key("points");
+    w.value(v.points);
+    w.key("foul_points");
+    w.value(v.foulPoints);
+    w.key("continues");
+    w.value(v.continues);
+    w.key("ball_in_hand");
+    w.value(v.ballInHand);
+    w.key("respotted");
+    ids(v.respotted);
+    // Beyond the contract's keys: how the rack ends, the deciding event of any verdict, its line.
+    w.key("ends");
+    if (v.ends == rules::GameEnd::None) w.null();
+    else w.value(std::string(toString(v.ends)));
+    w.key("event");
+    if (v.event >= 0) w.value(v.event);
+    else w.null();
+    w.key("text");
+    w.value(v.text.english());
+    w.endObject();
+}
+
+void writeOutcome(JsonWriter& w, const SimulationResult& result, const ShotOutcome& o, Layout layout, const GameSpec* game)
 {
     auto id = [&](int ball) -> const std::string& { return result.balls.at(static_cast<std::size_t>(ball)).id; };
     w.beginObject(layout);
@@ -145,10 +199,14 @@ void writeOutcome(JsonWriter& w, const SimulationResult& result, const ShotOutco
     w.value(o.cushionsBeforeFirstContact);
     w.key("struck_ball_pocketed");
     w.value(o.struckBallPocketed);
+    if (game) {
+        w.key("verdict");
+        writeVerdict(w, result, rules::judgeShot(result, *game));
+    }
     w.endObject();
 }
 
-std::string simulationJson(const SimulationResult& result)
+std::string simulationJson(const SimulationResult& result, const GameSpec* game)
 {
     JsonWriter w;
     w.beginObject(Layout::Block);
@@ -160,7 +218,7 @@ std::string simulationJson(const SimulationResult& result)
     w.endArray();
     writeBalls(w, result, result.endTime);
     w.key("outcome");
-    writeOutcome(w, result, shotOutcome(result));
+    writeOutcome(w, result, shotOutcome(result), Layout::Block, game);
     w.endObject();
     return w.text();
 }

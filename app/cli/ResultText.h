@@ -6,6 +6,7 @@
 #include "JsonText.h"
 #include "ShotOutcome.h"
 #include "Simulation.h"
+#include "Verdict.h"
 
 #include <functional>
 #include <optional>
@@ -15,14 +16,18 @@
 namespace cuelab::cli {
 
 // `simulate`: { "end_time": ..., "events": [...], "balls": [...], "outcome": {...} }, one event or
-// ball per line.
-std::string simulationJson(const SimulationResult& result);
+// ball per line. With a game (the setup's), the outcome gains its "verdict" (CONTRACT.md, Extensions
+// version 3); without one the text is what it always was.
+std::string simulationJson(const SimulationResult& result, const GameSpec* game = nullptr);
 
 // The `outcome` object of CONTRACT.md (Extensions) as the value of a key just written, e.g.
 // `w.key("outcome"); writeOutcome(w, result, shotOutcome(result), Layout::Line);` for one line.
 // `simulate` lays it out one member per line (Block); inside a Line container it is one line anyway.
 void writeOutcome(io::JsonWriter& w, const SimulationResult& result, const ShotOutcome& outcome,
-                  io::JsonWriter::Layout layout = io::JsonWriter::Layout::Block);
+                  io::JsonWriter::Layout layout = io::JsonWriter::Layout::Block, const GameSpec* game = nullptr);
+
+// The `verdict` object (one line) as the value of a key just written; null for no verdict (no shot).
+void writeVerdict(io::JsonWriter& w, const SimulationResult& result, const std::optional<rules::Verdict>& verdict);
 
 // `state --at T`: { "time": T, "balls": [...] } with the exact state of every ball at t.
 std::string stateJson(const SimulationResult& result, double t);

@@ -1,9 +1,11 @@
 #include "Goal.h"
 
 #include "Override.h"
+#include "Verdict.h"
 
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace cuelab::analysis {
 
@@ -36,13 +38,17 @@ std::variant<GoalTerm, std::string> parseTerm(std::string_view text)
     const std::size_t colon = text.find(':');
     const std::string_view head = text.substr(0, colon);
     const std::string_view rest = colon == std::string_view::npos ? std::string_view() : text.substr(colon + 1);
-    if (head == "no-scratch") {
-        if (colon != std::string_view::npos) return bad("no-scratch takes no argument");
-        term.kind = GoalTerm::Kind::StruckBallUp;
+    for (const auto& [name, kind] : {std::pair{std::string_view("no-scratch"), GoalTerm::Kind::StruckBallUp},
+                                      std::pair{std::string_view("legal"), GoalTerm::Kind::Legal},
+                                      std::pair{std::string_view("scores"), GoalTerm::Kind::Scores},
+                                      std::pair{std::string_view("point"), GoalTerm::Kind::Point}}) {
+        if (head != name) continue;
+        if (colon != std::string_view::npos) return bad(std::string(name) + " takes no argument");
+        term.kind = kind;
         return term;
     }
     if (colon == std::string_view::npos || rest.empty())
-        return bad("expected pot:BALL[@POCKET], first:BALL, no-scratch or in:BALL@X0:Y0:X1:Y1");
+        return bad("expected pot:BALL[@POCKET], first:BALL, no-scratch, in:BALL@X0:Y0:X1:Y1, legal, scores or point");
     if (head == "pot") {
         term.kind = GoalTerm::Kind::Pocketed;
         const std::size_t at = rest.find('@');
@@ -90,7 +96,7 @@ std::variant<GoalTerm, std::string> parseTerm(std::string_view text)
         term.count = static_cast<int>(*n);
         return term;
     }
-    return bad("unknown kind " + quoted(head) + " (expected pot, first, no-scratch, in or cushions)");
+    return bad("unknown kind " + quoted(head) + " (expected pot, first, no-scratch, in, cushions, legal, scores or point)");
 }
 
 const char* compareText(GoalTerm::Compare c)
@@ -140,6 +146,9 @@ std::string goalText(const Goal& goal)
         case GoalTerm::Kind::CushionHits:
             out += "cushions:" + t.ball + compareText(t.compare) + std::to_string(t.count);
             break;
+        case GoalTerm::Kind::Legal: out += "legal"; break;
+        case GoalTerm::Kind::Scores: out += "scores"; break;
+        case GoalTerm::Kind::Point: out += "point"; break;
         }
     }
     return out;
@@ -164,6 +173,9 @@ std::string describeGoal(const Goal& goal)
                    (t.compare == GoalTerm::Compare::AtMost ? "at most " : t.compare == GoalTerm::Compare::AtLeast ? "at least " : "") +
                    std::to_string(t.count) + (t.count == 1 ? " cushion" : " cushions");
             break;
+        case GoalTerm::Kind::Legal: out += t.negated ? "a foul" : "a legal shot"; break;
+        case GoalTerm::Kind::Scores: out += t.negated ? "the turn passes" : "the striker plays on"; break;
+        case GoalTerm::Kind::Point: out += t.negated ? "no point" : "a three-cushion point"; break;
         }
     }
     return out;
@@ -175,6 +187,23 @@ std::optional<ResolvedGoal> ResolvedGoal::resolve(const Goal& goal, const Setup&
     ResolvedGoal resolved;
     for (const GoalTerm& t : goal.terms) {
         Term term{t.kind, t.negated, -1, -1, t.region, t.count, t.compare};
+        const bool ofRules = t.kind == GoalTerm::Kind::Legal || t.kind == GoalTerm::Kind::Scores || t.kind == GoalTerm::Kind::Point;
+        if (ofRules) {
+            const std::string name = t.kind == GoalTerm::Kind::Legal ? "legal" : t.kind == GoalTerm::Kind::Scores ? "scores" : "point";
+            if (!setup.game) {
+                if (error)
+                    *error = "goal: " + name + " needs the rules of a game, and the setup has none (add \"game\" to it, "
+                             "or --set game.rules=8-ball|9-ball|10-ball|snooker|three-cushion)";
+                return std::nullopt;
+            }
+            if (t.kind == GoalTerm::Kind::Point && setup.game->rules != GameRules::ThreeCushion) {
+                if (error) *error = "goal: point is a three-cushion term, and the setup's game is " + std::string(toString(setup.game->rules));
+                return std::nullopt;
+            }
+            resolved.game_ = setup.game;
+            resolved.terms_.push_back(term);
+            continue;
+        }
         if (t.kind != GoalTerm::Kind::StruckBallUp) {
             for (std::size_t i = 0; i < setup.balls.size(); ++i)
                 if (setup.balls[i].id == t.ball) term.ball = static_cast<int>(i);
@@ -201,8 +230,15 @@ std::optional<ResolvedGoal> ResolvedGoal::resolve(const Goal& goal, const Setup&
     return resolved;
 }
 
-bool ResolvedGoal::met(const ShotOutcome& outcome) const
+bool ResolvedGoal::met(const SimulationResult& result, const ShotOutcome& outcome) const
 {
+    std::optional<rules::Verdict> verdict;
+    bool judged = false;
+    const auto verdictOf = [&]() -> const std::optional<rules::Verdict>& {
+        if (!judged && game_) verdict = rules::judgeShot(result, *game_);
+        judged = true;
+        return verdict;
+    };
     for (const Term& t : terms_) {
         bool holds = false;
         switch (t.kind) {
@@ -229,6 +265,10 @@ bool ResolvedGoal::met(const ShotOutcome& outcome) const
                                                              : hits >= t.count;
             break;
         }
+        // A shot without a strike has no verdict: it is neither legal, nor scores, nor a point.
+        case GoalTerm::Kind::Legal: holds = verdictOf() && verdictOf()->legal(); break;
+        case GoalTerm::Kind::Scores: holds = verdictOf() && verdictOf()->legal() && verdictOf()->continues; break;
+        case GoalTerm::Kind::Point: holds = verdictOf() && verdictOf()->points > 0; break;
         }
         if (holds == t.negated) return false;
     }

@@ -10,11 +10,16 @@
 //   in:BALL@X0:Y0:X1:Y1   BALL ends on the table inside the rectangle [X0, X1] x [Y0, Y1] (m)
 //   cushions:BALL=N       BALL touches cushions (jaws included) exactly N times; also <=N and >=N
 //                         ("cushions:1=0" with "pot:1": a clean pot, no rattle in the jaws)
+//   legal                 the game's rules find no foul (the setup needs a "game")
+//   scores                the striker keeps the table: legal, and plays on
+//   point                 three-cushion: a point (the cue ball meets both object balls, three cushions
+//                         or more before the second)
 //   !TERM                 TERM does not hold
 // e.g. "pot:1@pocket-tr,no-scratch".
 
 #include "Setup.h"
 #include "ShotOutcome.h"
+#include "Simulation.h"
 
 #include <algorithm>
 #include <optional>
@@ -35,7 +40,7 @@ struct Region {  // an axis-aligned rectangle of the table, m
 };
 
 struct GoalTerm {
-    enum class Kind { Pocketed, FirstContact, StruckBallUp, EndsInRegion, CushionHits };
+    enum class Kind { Pocketed, FirstContact, StruckBallUp, EndsInRegion, CushionHits, Legal, Scores, Point };
     enum class Compare { Equal, AtMost, AtLeast };
     Kind kind = Kind::Pocketed;
     bool negated = false;
@@ -64,11 +69,14 @@ std::string describeGoal(const Goal& goal);
 class ResolvedGoal {
 public:
     ResolvedGoal() = default;
-    // nullopt and *error naming the unknown ball or pocket when the goal does not fit the setup.
+    // nullopt and *error naming the unknown ball or pocket when the goal does not fit the setup (or
+    // a term of the rules, legal, scores or point, when the setup has no game or another game).
     static std::optional<ResolvedGoal> resolve(const Goal& goal, const Setup& setup, std::string* error);
 
     bool empty() const { return terms_.empty(); }
-    bool met(const ShotOutcome& outcome) const;
+    // Whether the shot of `result` (whose outcome is `outcome`) meets the goal. Terms of the rules
+    // ask core/rules for the verdict of the game the goal was resolved with (once per call).
+    bool met(const SimulationResult& result, const ShotOutcome& outcome) const;
 
 private:
     struct Term {
@@ -81,6 +89,7 @@ private:
         GoalTerm::Compare compare;
     };
     std::vector<Term> terms_;
+    std::optional<GameSpec> game_;  // the setup's game, for the terms of the rules
 };
 
 }  // namespace cuelab::analysis

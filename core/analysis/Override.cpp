@@ -19,6 +19,7 @@ enum class Parameter::Field : int {
     BallX, BallY, BallVx, BallVy, BallWx, BallWy, BallWz, BallRadius, BallMass,
     MaxTime, FrameDt,
     Name, Notes,
+    GameRules, GameGroup, GameOn, GameNominated, GameBreak,
 };
 
 namespace {
@@ -64,6 +65,13 @@ constexpr std::array kKeys{
     KeyInfo{"simulation.frame_dt", Field::FrameDt, Type::Number},
     KeyInfo{"name", Field::Name, Type::Text},
     KeyInfo{"notes", Field::Notes, Type::Text},
+    // The game (CONTRACT.md, Extensions version 3): listed only for a setup that has one, so that the
+    // keys of a setup without a game read as before; game.rules sets one up (or "none" takes it away).
+    KeyInfo{"game.rules", Field::GameRules, Type::Text},
+    KeyInfo{"game.group", Field::GameGroup, Type::Text},
+    KeyInfo{"game.on", Field::GameOn, Type::Text},
+    KeyInfo{"game.nominated", Field::GameNominated, Type::Text},
+    KeyInfo{"game.break", Field::GameBreak, Type::Bool},
 };
 
 constexpr std::string_view kCushionPrefix = "physics.ball_cushion.";
@@ -87,6 +95,7 @@ const KeyInfo& infoOf(Field field)
 }
 
 bool isShotField(Field f) { return f >= Field::ShotBall && f <= Field::ShotEndMass; }
+bool isGameField(Field f) { return f >= Field::GameRules && f <= Field::GameBreak; }
 
 std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
 
@@ -182,6 +191,8 @@ std::variant<Parameter, OverrideError> Parameter::resolve(const Setup& setup, st
         if (key != k.name) continue;
         if (isShotField(k.field) && !setup.shot)
             return unknownKey(key, "the setup has no shot to override");
+        if (isGameField(k.field) && k.field != Field::GameRules && !setup.game)
+            return unknownKey(key, "the setup has no game; set game.rules first");
         return Parameter(std::string(key), k.field, -1);
     }
     // A cushion model's own parameter, from the registry: a key of the setup's current model only, as
@@ -275,6 +286,11 @@ std::string Parameter::text(const Setup& s) const
     case Field::BallCushionModel: return std::string(toString(s.physics.ballCushionModel));
     case Field::TableKind: return std::string(toString(s.table.kind));
     case Field::TablePockets: return s.table.pockets ? "true" : "false";
+    case Field::GameRules: return s.game ? std::string(toString(s.game->rules)) : "none";
+    case Field::GameGroup: return std::string(toString(s.game->group.value_or(PoolGroup::Open)));
+    case Field::GameOn: return std::string(toString(s.game->on.value_or(SnookerOn::Red)));
+    case Field::GameNominated: return s.game->nominated;
+    case Field::GameBreak: return s.game->breakShot ? "true" : "false";
     case Field::BallBallFriction:
         if (s.physics.ballBallFrictionKind == BallBallFriction::Alciatore) return "alciatore";
         return numberText(number(s));
@@ -360,6 +376,40 @@ std::optional<OverrideError> Parameter::setText(Setup& s, std::string_view value
         s.table.kind = kind;
         return std::nullopt;
     }
+    case Field::GameRules: {
+        if (value == "none") {
+            s.game.reset();
+            return std::nullopt;
+        }
+        cuelab::GameRules rules{};
+        if (!parseGameRules(value, rules)) return badValue(key_, value, gameRulesNames() + " (or none)");
+        // Keys of the old rules that the new ones do not have go (a group is 8-ball's, ...).
+        GameSpec game = s.game.value_or(GameSpec{});
+        game.rules = rules;
+        if (rules != cuelab::GameRules::EightBall) game.group.reset();
+        if (rules != cuelab::GameRules::Snooker) game.on.reset();
+        if (rules == cuelab::GameRules::Snooker || rules == cuelab::GameRules::ThreeCushion) game.breakShot = false;
+        s.game = game;
+        return std::nullopt;
+    }
+    case Field::GameGroup: {
+        PoolGroup group{};
+        if (!parsePoolGroup(value, group)) return badValue(key_, value, poolGroupNames());
+        s.game->group = group;
+        return std::nullopt;
+    }
+    case Field::GameOn: {
+        SnookerOn on{};
+        if (!parseSnookerOn(value, on)) return badValue(key_, value, snookerOnNames());
+        s.game->on = on;
+        return std::nullopt;
+    }
+    case Field::GameNominated: s.game->nominated = std::string(value); return std::nullopt;
+    case Field::GameBreak:
+        if (value == "true") s.game->breakShot = true;
+        else if (value == "false") s.game->breakShot = false;
+        else return badValue(key_, value, "true or false");
+        return std::nullopt;
     case Field::TablePockets:
         if (value == "true") s.table.pockets = true;
         else if (value == "false") s.table.pockets = false;
@@ -397,6 +447,7 @@ std::vector<std::string> overridableKeys(const Setup& setup, bool numbersOnly)
     for (const KeyInfo& k : kKeys) {
         if (numbersOnly && k.type != Type::Number) continue;
         if (isShotField(k.field) && !setup.shot) continue;
+        if (isGameField(k.field) && !setup.game) continue;
         keys.emplace_back(k.name);
         // The current cushion model's own parameters, from the registry, after its common ones.
         if (k.field == Field::BallCushionFriction)

@@ -15,6 +15,8 @@
 //   balls.<id>.x|y|vx|vy|wx|wy|wz|radius|mass         (<id> may itself contain dots)
 //   simulation.max_time|frame_dt
 //   name|notes                                        (text)
+//   game.rules|group|on|nominated|break               (game.rules=none takes the game away; the other
+//                                                      game keys need a game; listed only with one)
 // so that every key of a setup file can be overridden (CONTRACT.md, Extensions version 2). An unknown
 // key's message lists the valid ones; an unknown model lists the registered ones.
 //

@@ -159,7 +159,7 @@ ShotResult runShotWith(const SweepSpec& spec, const std::vector<double>& values)
             shot.status = ShotStatus::Unfinished;
             shot.message = (spec.setupName.empty() ? std::string("setup") : spec.setupName) + ": " + *why;
         } else {
-            shot.goalMet = spec.goal.met(shot.outcome);
+            shot.goalMet = spec.goal.met(result, shot.outcome);
         }
     } catch (const std::exception& e) {
         shot.status = ShotStatus::Unfinished;

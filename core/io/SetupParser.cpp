@@ -374,12 +374,43 @@ std::vector<PredictQuestion> parseLesson(const QJsonValue& value, const std::vec
     return questions;
 }
 
+// "game": {"rules": "9-ball", "group": "open", "on": "red", "nominated": "pocket-tr", "break": true}
+// (CONTRACT.md, Extensions version 3). The names only; whether the balls fit the game is the
+// validator's (core/setup, LegalGame.h).
+GameSpec parseGame(const QJsonValue& value)
+{
+    const ObjectReader in(value, QStringLiteral("game"), {"rules", "group", "on", "nominated", "break"});
+    GameSpec game;
+    const QString rules = in.string("rules");
+    if (!parseGameRules(rules.toStdString(), game.rules))
+        refuse(in.pathOf("rules"), QStringLiteral("unknown rules \"%1\" (expected %2)")
+                                       .arg(rules, QString::fromStdString(gameRulesNames())));
+    if (const auto group = in.optionalString("group")) {
+        PoolGroup g{};
+        if (!parsePoolGroup(group->toStdString(), g))
+            refuse(in.pathOf("group"), QStringLiteral("unknown group \"%1\" (expected %2)")
+                                           .arg(*group, QString::fromStdString(poolGroupNames())));
+        game.group = g;
+    }
+    if (const auto on = in.optionalString("on")) {
+        SnookerOn o{};
+        if (!parseSnookerOn(on->toStdString(), o))
+            refuse(in.pathOf("on"), QStringLiteral("unknown ball on \"%1\" (expected %2)")
+                                        .arg(*on, QString::fromStdString(snookerOnNames())));
+        game.on = o;
+    }
+    game.nominated = in.optionalString("nominated").value_or(QString()).toStdString();
+    game.breakShot = in.optionalBool("break").value_or(false);
+    return game;
+}
+
 Setup parseDocument(const QJsonValue& document)
 {
     if (!document.isObject()) wrongType(QString(), "a JSON object at the top level", document);
     checkHeader(document.toObject());
     const ObjectReader in(document, QString(),
-                          {"format", "version", "name", "notes", "lesson", "table", "physics", "balls", "shot", "simulation"});
+                          {"format", "version", "name", "notes", "lesson", "table", "physics", "balls", "shot", "simulation",
+                           "game"});
     Setup setup;
     setup.name = in.optionalString("name").value_or(QString()).toStdString();
     setup.notes = in.optionalString("notes").value_or(QString()).toStdString();
@@ -391,6 +422,7 @@ Setup parseDocument(const QJsonValue& document)
     if (in.has("shot")) setup.shot = parseShot(in.value("shot"));
     if (in.has("simulation")) setup.simulation = parseSimulation(in.value("simulation"));
     if (in.has("lesson")) setup.questions = parseLesson(in.value("lesson"), setup.balls);
+    if (in.has("game")) setup.game = parseGame(in.value("game"));
     // The values and the geometry: the one validator's first problem, its message as it is.
     if (const std::optional<cuelab::SetupProblem> problem = firstSetupProblem(setup))
         refuse(QString::fromStdString(problem->path), QString::fromStdString(problem->message));

@@ -194,6 +194,32 @@ void writeLesson(JsonWriter& w, const std::vector<PredictQuestion>& questions)
     w.endObject();
 }
 
+// The game, only when there is one (a file without it stays as it was); optional keys only when set.
+void writeGame(JsonWriter& w, const GameSpec& game)
+{
+    w.key("game");
+    w.beginObject(Layout::Line);
+    w.key("rules");
+    w.value(std::string(toString(game.rules)));
+    if (game.group) {
+        w.key("group");
+        w.value(std::string(toString(*game.group)));
+    }
+    if (game.on) {
+        w.key("on");
+        w.value(std::string(toString(*game.on)));
+    }
+    if (!game.nominated.empty()) {
+        w.key("nominated");
+        w.value(game.nominated);
+    }
+    if (game.breakShot) {
+        w.key("break");
+        w.value(true);
+    }
+    w.endObject();
+}
+
 }  // namespace
 
 QByteArray serializeSetup(const Setup& setup)
@@ -221,6 +247,7 @@ QByteArray serializeSetup(const Setup& setup)
     for (const Ball& ball : setup.balls) writeBall(w, ball, table);
     w.endArray();
     if (setup.shot) writeShot(w, *setup.shot);
+    if (setup.game) writeGame(w, *setup.game);
     w.key("simulation");
     w.beginObject(Layout::Line);
     w.key("frame_dt");

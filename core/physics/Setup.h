@@ -3,6 +3,7 @@
 
 #include "Ball.h"
 #include "CueStrike.h"
+#include "GameSpec.h"
 #include "LessonQuestion.h"
 #include "Parameters.h"
 #include "Table.h"
@@ -27,6 +28,7 @@ struct Setup {
     std::optional<CueStrike> shot;
     SimulationSettings simulation;
     std::vector<PredictQuestion> questions;  // the lesson's predict-then-reveal questions (file: lesson.questions)
+    std::optional<GameSpec> game;            // the rules that judge the shot (file: game); none = no verdict
 };
 
 }  // namespace cuelab

@@ -1,5 +1,6 @@
 #include "LegalSetup.h"
 
+#include "LegalGame.h"
 #include "LegalGeometry.h"
 #include "resolve/CushionModel.h"
 
@@ -217,6 +218,7 @@ std::vector<SetupProblem> run(const Setup& setup, bool firstOnly)
     for (std::size_t i = 0; i < setup.balls.size(); ++i) placeable[i] = checkBallValues(setup, i, out);
     checkShot(setup, out);
     checkSimulation(setup.simulation, out);
+    for (SetupProblem& p : gameProblems(setup)) out.add(std::move(p));
     if (out.done() || !legal::tableSpecUsable(setup.table)) return out.take();
 
     const Table table = makeTable(setup.table);

@@ -290,6 +290,34 @@
 <context>
     <name>cuelab</name>
     <message>
+        <source>Verdict: %1</source>
+        <translation>Ítélet: %1</translation>
+    </message>
+    <message>
+        <source>a foul</source>
+        <translation>szabálytalanság</translation>
+    </message>
+    <message>
+        <source>a legal shot</source>
+        <translation>szabályos lökés</translation>
+    </message>
+    <message>
+        <source>the turn passes</source>
+        <translation>a másik játékos következik</translation>
+    </message>
+    <message>
+        <source>the striker plays on</source>
+        <translation>a játékos folytatja</translation>
+    </message>
+    <message>
+        <source>no point</source>
+        <translation>nincs pont</translation>
+    </message>
+    <message>
+        <source>a three-cushion point</source>
+        <translation>háromfalas pont</translation>
+    </message>
+    <message>
         <source>Cancel</source>
         <translation>Mégse</translation>
     </message>
@@ -1316,6 +1344,7 @@ first:BALL — the struck ball hits BALL first
 no-scratch — the struck ball stays on the table
 in:BALL@X0:Y0:X1:Y1 — the ball ends inside that rectangle (m)
 cushions:BALL=N (or &lt;=N, &gt;=N) — cushion hits of the ball, jaws included
+legal, scores, point — the rules of the setup&apos;s game: no foul; the striker plays on; a three-cushion point
 !TERM — the term does not hold</source>
         <translation>Mit kell tennie az ütésnek; a feltételeket vessző választja el, mindnek teljesülnie kell:
 pot:BALL vagy pot:BALL@POCKET — a golyó lyukba esik (abba a lyukba)
@@ -1323,6 +1352,7 @@ first:BALL — a megütött golyó először a BALL golyót találja el
 no-scratch — a megütött golyó az asztalon marad
 in:BALL@X0:Y0:X1:Y1 — a golyó abban a téglalapban áll meg (m)
 cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpofákkal együtt
+legal, scores, point — a beállított játék szabályai: nincs szabálytalanság; a játékos folytatja; háromfalas pont
 !TERM — a feltétel nem teljesül</translation>
     </message>
     <message>
@@ -3278,6 +3308,26 @@ cushions:BALL=N (vagy &lt;=N, &gt;=N) — a golyó mantinelérintései, a lyukpo
 <context>
     <name>cuelab::OutcomePanel</name>
     <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source> (#%1)</source>
+        <translation> (#%1)</translation>
+    </message>
+    <message>
+        <source>Verdict: legal</source>
+        <translation>Ítélet: szabályos</translation>
+    </message>
+    <message>
+        <source>Verdict: foul</source>
+        <translation>Ítélet: szabálytalanság</translation>
+    </message>
+    <message>
+        <source>The rules of the setup&apos;s game on this shot; double-click to go to the event that decides it</source>
+        <translation>A beállított játék szabályainak ítélete erről a lökésről; dupla kattintással a döntő eseményre ugrik</translation>
+    </message>
+    <message>
         <source>What</source>
         <translation>Tétel</translation>
     </message>
@@ -4377,7 +4427,98 @@ Kimaradt kérdés: %1</translation>
     </message>
 </context>
 <context>
+    <name>cuelab::GameControl</name>
+    <message>
+        <source>The game whose rules judge the shot: the Outcome dock then says whether it is legal or a foul, and why (docs/rules.md)</source>
+        <translation>A játék, amelynek szabályai a lökést megítélik: az Eredmény panel ekkor megmondja, hogy szabályos-e vagy szabálytalan, és miért (docs/rules.md)</translation>
+    </message>
+    <message>
+        <source>No rules</source>
+        <translation>Nincs szabály</translation>
+    </message>
+    <message>
+        <source>Snooker</source>
+        <translation>Snooker</translation>
+    </message>
+    <message>
+        <source>Three-cushion</source>
+        <translation>Háromfalas</translation>
+    </message>
+    <message>
+        <source>The striker&apos;s group: open table, solids (1-7) or stripes (9-15)</source>
+        <translation>A játékos csoportja: nyitott asztal, teli (1–7) vagy csíkos (9–15) golyók</translation>
+    </message>
+    <message>
+        <source>Open table</source>
+        <translation>Nyitott asztal</translation>
+    </message>
+    <message>
+        <source>Solids</source>
+        <translation>Teli golyók</translation>
+    </message>
+    <message>
+        <source>Stripes</source>
+        <translation>Csíkos golyók</translation>
+    </message>
+    <message>
+        <source>The ball on: a red, any colour (after a red), or a named colour</source>
+        <translation>A soron lévő golyó: piros, bármely színes (piros után) vagy egy megnevezett színes</translation>
+    </message>
+    <message>
+        <source>Red on</source>
+        <translation>Piros van soron</translation>
+    </message>
+    <message>
+        <source>Colour on</source>
+        <translation>Színes van soron</translation>
+    </message>
+    <message>
+        <source>Yellow on</source>
+        <translation>Sárga van soron</translation>
+    </message>
+    <message>
+        <source>Green on</source>
+        <translation>Zöld van soron</translation>
+    </message>
+    <message>
+        <source>Brown on</source>
+        <translation>Barna van soron</translation>
+    </message>
+    <message>
+        <source>Blue on</source>
+        <translation>Kék van soron</translation>
+    </message>
+    <message>
+        <source>Pink on</source>
+        <translation>Rózsaszín van soron</translation>
+    </message>
+    <message>
+        <source>Black on</source>
+        <translation>Fekete van soron</translation>
+    </message>
+    <message>
+        <source>Judge the shot by the rules of %1</source>
+        <translation>A lökés megítélése a(z) %1 szabályai szerint</translation>
+    </message>
+    <message>
+        <source>Judge the shot by no rules</source>
+        <translation>A lökés megítélése szabályok nélkül</translation>
+    </message>
+    <message>
+        <source>Set the striker&apos;s group to %1</source>
+        <translation>A játékos csoportja: %1</translation>
+    </message>
+    <message>
+        <source>Set the ball on: %1</source>
+        <translation>Soron lévő golyó: %1</translation>
+    </message>
+</context>
+<context>
     <name>cuelab::ShotPanel</name>
+    <message>
+        <source>Game</source>
+        <translation>Játék</translation>
+    </message>
     <message>
         <source>Strike a ball at t = 0</source>
         <translation>Ütés t = 0-kor</translation>
@@ -4792,6 +4933,38 @@ Kimaradt kérdés: %1</translation>
 <context>
     <name>cuelab::examples</name>
     <message>
+        <source>9-ball safety</source>
+        <translation>9-es biztonsági lökés</translation>
+    </message>
+    <message>
+        <source>9-ball under WPA rules (&quot;game&quot;: 9-ball): the 1 is the ball on, close to the top rail with the 9 beyond it, and no pot is on. The player plays safe instead: a soft hit (1 m/s) on the left of the 1 sends it into the top rail (#6) and off the right rail, while the cue ball follows to the top rail and stops with the 9 exactly between it and the 1. Verdict: legal, nothing pocketed, the turn passes. Legal because the cue ball met the ball on first (#3) and a ball reached a cushion after that contact; the opponent now has no straight line to the 1. Play it at 0.45 m/s and the 1 stops short of the rail with no ball touching one after the contact: a foul (no-rail), ball in hand for the opponent.</source>
+        <translation>9-es a WPA szabályai szerint (&quot;game&quot;: 9-ball): az 1-es van soron, közel a felső mantinelhez, mögötte a 9-es, és nincs lyukra lökhető golyó. A játékos ezért biztonsági lökést választ: egy lágy lökés (1 m/s) az 1-es bal oldalára a felső mantinelbe küldi az 1-est (#6), majd onnan a jobb mantinelre, a fehér golyó pedig a felső mantinelig követi, és úgy áll meg, hogy a 9-es pontosan közte és az 1-es között van. Ítélet: szabályos, nem esett golyó lyukba, a másik játékos következik. Azért szabályos, mert a fehér golyó először a soron lévő golyót érte el (#3), és az érintkezés után egy golyó mantinelt ért; az ellenfélnek most nincs egyenes útja az 1-eshez. 0,45 m/s-mal lökve az 1-es megáll a mantinel előtt, és az érintkezés után egy golyó sem ér mantinelt: szabálytalanság (no-rail), az ellenfél kézből helyezi a fehér golyót.</translation>
+    </message>
+    <message>
+        <source>Snooker plant, red on</source>
+        <translation>Snooker plant, piros van soron</translation>
+    </message>
+    <message>
+        <source>The snooker plant judged by the rules of snooker (&quot;game&quot;: snooker, a red on), with the black on its spot. The cue ball meets red-1 first (#2): a red, so the contact is legal although red-2 is the ball that drops (#7, top-right pocket). Verdict: legal, red-2 potted (+1), the striker plays on (next on a colour). A plant is a legal way to pot a red: the rules ask only that the first ball hit is on and that no ball that is not on goes down. Aim at the black instead (heading -2.6°): the cue ball&apos;s first contact is a ball not on, a foul (wrong-ball-first) worth 7 points to the opponent, the black&apos;s value, more than the minimum of 4.</source>
+        <translation>A snooker plant a snooker szabályai szerint megítélve (&quot;game&quot;: snooker, piros van soron), a feketével a helyén. A fehér golyó először a red-1-et éri el (#2): ez piros, tehát az érintkezés szabályos, noha a red-2 esik lyukba (#7, jobb felső lyuk). Ítélet: szabályos, lyukba esett a red-2 (+1), a játékos folytatja (ezután színes golyó van soron). A plant szabályos módja egy piros lyukba juttatásának: a szabály csak azt kéri, hogy az elsőként eltalált golyó soron legyen, és ne essen lyukba soron kívüli golyó. Ha a feketére céloz (irány -2,6°), a fehér golyó először soron kívüli golyót ér el: szabálytalanság (wrong-ball-first), 7 pont az ellenfélnek, a fekete értéke, ami több a 4 pontos minimumnál.</translation>
+    </message>
+    <message>
+        <source>Three-cushion point</source>
+        <translation>Háromfalas pont</translation>
+    </message>
+    <message>
+        <source>The three-cushion carom judged by UMB rules (&quot;game&quot;: three-cushion): the struck white is the striker&apos;s ball, the red and the yellow the object balls. Count the white&apos;s own cushions before it meets its second object ball, on the event list: it meets the red (#2), then the right rail (#7), the bottom rail (#9) and the left rail (#13), and then the yellow (#17). Three cushions before the second object ball: verdict, a point, and the striker plays on. The red&apos;s cushions (#5, #11, #15) do not count, nor would any after the yellow. Headings from about 23.4° to 23.7° score; the Three-cushion near miss example moves the yellow onto the white&apos;s path.</source>
+        <translation>A háromfalas karambol az UMB szabályai szerint megítélve (&quot;game&quot;: three-cushion): a meglökött fehér a játékos golyója, a piros és a sárga a tárgygolyók. Számolja meg az eseménylistán a fehér saját mantinelérintéseit, mielőtt a második tárgygolyót eléri: eltalálja a pirosat (#2), majd a jobb mantinelt (#7), az alsót (#9) és a bal mantinelt (#13), aztán a sárgát (#17). Három mantinel a második tárgygolyó előtt: az ítélet pont, és a játékos folytatja. A piros mantinelérintései (#5, #11, #15) nem számítanak, ahogy a sárga utániak sem számítanának. Nagyjából 23,4° és 23,7° közötti irányok adnak pontot; a Háromfalas: majdnem pont példa a sárgát a fehér útjába teszi.</translation>
+    </message>
+    <message>
+        <source>Three-cushion near miss</source>
+        <translation>Háromfalas: majdnem pont</translation>
+    </message>
+    <message>
+        <source>The three-cushion point&apos;s stroke with the yellow moved onto the white&apos;s path from the bottom rail to the left rail. The white meets the red (#2), the right rail (#7) and the bottom rail (#9), and then the yellow (#13), before it can reach the left rail. Verdict: no point, the turn passes: the white met both object balls, but with only two cushions before the second (UMB: three or more). Only the white&apos;s own cushions before its second object ball count; the red&apos;s (#5, #11) never do.</source>
+        <translation>A háromfalas pont lökése, a sárgával a fehérnek az alsó mantineltől a bal mantinel felé vezető útjába helyezve. A fehér eltalálja a pirosat (#2), a jobb mantinelt (#7) és az alsót (#9), majd a sárgát (#13), mielőtt a bal mantinelt elérhetné. Ítélet: nincs pont, a másik játékos következik: a fehér mindkét tárgygolyót elérte, de a második előtt csak két mantinellel (UMB: legalább három kell). Csak a fehér saját mantinelérintései számítanak a második tárgygolyó előtt; a piroséi (#5, #11) sohasem.</translation>
+    </message>
+    <message>
         <source>8-ball break</source>
         <translation>8-as nyitás</translation>
     </message>
@@ -4930,6 +5103,118 @@ Kimaradt kérdés: %1</translation>
 </context>
 <context>
     <name>cuelab::explain</name>
+    <message>
+        <source>%1 was potted, and %2 was on</source>
+        <translation>%1 esett lyukba, pedig %2 volt soron</translation>
+    </message>
+    <message>
+        <source>a ball other than the 8</source>
+        <translation>egy nem 8-as golyó</translation>
+    </message>
+    <message>
+        <source>a colour</source>
+        <translation>egy színes golyó</translation>
+    </message>
+    <message>
+        <source>a red</source>
+        <translation>egy piros</translation>
+    </message>
+    <message>
+        <source>a solid</source>
+        <translation>egy teli golyó</translation>
+    </message>
+    <message>
+        <source>a stripe</source>
+        <translation>egy csíkos golyó</translation>
+    </message>
+    <message>
+        <source>after the first contact no ball was pocketed and none reached a cushion</source>
+        <translation>az első érintkezés után egy golyó sem esett lyukba, és egy sem ért mantinelt</translation>
+    </message>
+    <message>
+        <source>ball %1 left the table</source>
+        <translation>a(z) %1 golyó elhagyta az asztalt</translation>
+    </message>
+    <message>
+        <source>foul (%1): %2; %3 points to the opponent</source>
+        <translation>szabálytalanság (%1): %2; %3 pont az ellenfélnek</translation>
+    </message>
+    <message>
+        <source>foul (%1): %2; ball in hand for the opponent</source>
+        <translation>szabálytalanság (%1): %2; az ellenfél kézből helyezi a fehér golyót</translation>
+    </message>
+    <message>
+        <source>foul (%1): %2; no point, the turn passes</source>
+        <translation>szabálytalanság (%1): %2; nincs pont, a másik játékos következik</translation>
+    </message>
+    <message>
+        <source>foul (%1): %2; the striker loses the rack</source>
+        <translation>szabálytalanság (%1): %2; a játékos elveszíti a játszmát</translation>
+    </message>
+    <message>
+        <source>legal, but no ball fell into the called %1; the turn passes</source>
+        <translation>szabályos, de a bemondott lyukba (%1) nem esett golyó; a másik játékos következik</translation>
+    </message>
+    <message>
+        <source>legal: %1 pocketed; the striker plays on</source>
+        <translation>szabályos: lyukba esett: %1; a játékos folytatja</translation>
+    </message>
+    <message>
+        <source>legal: %1 pocketed; the striker wins the rack</source>
+        <translation>szabályos: lyukba esett: %1; a játékos megnyeri a játszmát</translation>
+    </message>
+    <message>
+        <source>legal: %1 potted (+%2); the striker plays on</source>
+        <translation>szabályos: lyukba esett: %1 (+%2); a játékos folytatja</translation>
+    </message>
+    <message>
+        <source>legal: nothing pocketed; the turn passes</source>
+        <translation>szabályos: nem esett golyó lyukba; a másik játékos következik</translation>
+    </message>
+    <message>
+        <source>legal: nothing potted; the turn passes</source>
+        <translation>szabályos: nem esett golyó lyukba; az ellenfél következik</translation>
+    </message>
+    <message>
+        <source>no point: the cue ball met %1 after only %2 cushions (three needed)</source>
+        <translation>nincs pont: a fehér golyó csak %2 mantinel után érte el ezt: %1 (három kell)</translation>
+    </message>
+    <message>
+        <source>no point: the cue ball met %1 only</source>
+        <translation>nincs pont: a fehér golyó csak ezt érte el: %1</translation>
+    </message>
+    <message>
+        <source>no point: the cue ball met no object ball</source>
+        <translation>nincs pont: a fehér golyó egyik tárgygolyót sem érte el</translation>
+    </message>
+    <message>
+        <source>point: the cue ball met %1, then %2 after %3 cushions</source>
+        <translation>pont: a fehér golyó előbb ezt érte el: %1, majd %3 mantinel után ezt: %2</translation>
+    </message>
+    <message>
+        <source>the 8 fell into %1, not into the called %2</source>
+        <translation>a 8-as ide esett: %1, nem a bemondott lyukba (%2)</translation>
+    </message>
+    <message>
+        <source>the 8 went down before the striker&apos;s group was cleared</source>
+        <translation>a 8-as lyukba esett, mielőtt a játékos a saját csoportját letisztította volna</translation>
+    </message>
+    <message>
+        <source>the break pocketed no ball and drove %1 object balls to a cushion, not four</source>
+        <translation>a kezdőlökés nem juttatott golyót lyukba, és csak %1 tárgygolyót vitt mantinelhez négy helyett</translation>
+    </message>
+    <message>
+        <source>the cue ball fell into %1</source>
+        <translation>a fehér golyó lyukba esett: %1</translation>
+    </message>
+    <message>
+        <source>the cue ball first touched %1, not %2</source>
+        <translation>a fehér golyó először ezt érintette: %1, nem ezt: %2</translation>
+    </message>
+    <message>
+        <source>the cue ball touched no ball</source>
+        <translation>a fehér golyó egy golyót sem érintett</translation>
+    </message>
     <message>
         <source>Motion after</source>
         <translation>Mozgás utána</translation>

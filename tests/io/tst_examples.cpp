@@ -79,6 +79,9 @@ static const QStringList kExamples{
     QStringLiteral("9-ball-break.json"),   QStringLiteral("newtons-cradle.json"), QStringLiteral("snooker-plant.json"),
     QStringLiteral("three-cushion.json"),  QStringLiteral("fast-graze.json"),     QStringLiteral("masse-around-a-ball.json"),
     QStringLiteral("jump-over-a-ball.json"), QStringLiteral("off-the-table.json"),
+    // Issue 43: examples judged by a game's rules (tests/rules/tst_exampleverdicts checks the verdicts).
+    QStringLiteral("9-ball-safety.json"),  QStringLiteral("snooker-plant-red-on.json"),
+    QStringLiteral("three-cushion-point.json"), QStringLiteral("three-cushion-near-miss.json"),
 };
 
 void TestExamples::everyFileIsListed()
@@ -116,6 +119,10 @@ void TestExamples::loadsAndSimulatesToRest_data()
     QTest::newRow("massé around a ball") << "masse-around-a-ball.json" << QStringList{"1:pocket-tr"};
     QTest::newRow("jump over a ball") << "jump-over-a-ball.json" << QStringList{"1:pocket-tr"};
     QTest::newRow("off the table") << "off-the-table.json" << QStringList{"cue:off-table"};
+    QTest::newRow("9-ball safety") << "9-ball-safety.json" << none;
+    QTest::newRow("snooker plant, red on") << "snooker-plant-red-on.json" << QStringList{"red-2:pocket-tr"};
+    QTest::newRow("three-cushion point") << "three-cushion-point.json" << none;
+    QTest::newRow("three-cushion near miss") << "three-cushion-near-miss.json" << none;
 }
 
 void TestExamples::loadsAndSimulatesToRest()

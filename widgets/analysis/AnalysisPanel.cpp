@@ -119,6 +119,7 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
                          "no-scratch — the struck ball stays on the table\n"
                          "in:BALL@X0:Y0:X1:Y1 — the ball ends inside that rectangle (m)\n"
                          "cushions:BALL=N (or <=N, >=N) — cushion hits of the ball, jaws included\n"
+                         "legal, scores, point — the rules of the setup's game: no foul; the striker plays on; a three-cushion point\n"
                          "!TERM — the term does not hold"));
     goalFromShot_ = new QPushButton(tr("From shot"), this);
     goalFromShot_->setToolTip(tr("Set the goal to what the current shot does (the ball it pots, and no scratch)"));

@@ -44,6 +44,10 @@ QString termWords(const GoalTerm& t)
         }
         return tr(words, t.count).arg(ball);
     }
+    // The terms of the game's rules (issue 43, core/rules).
+    case GoalTerm::Kind::Legal: return t.negated ? tr("a foul") : tr("a legal shot");
+    case GoalTerm::Kind::Scores: return t.negated ? tr("the turn passes") : tr("the striker plays on");
+    case GoalTerm::Kind::Point: return t.negated ? tr("no point") : tr("a three-cushion point");
     }
     return {};
 }

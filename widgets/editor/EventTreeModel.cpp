@@ -186,12 +186,25 @@ QVariant EventTreeModel::data(const QModelIndex& idx, int role) const
     return eventData(eventAt(idx), idx.column(), role);
 }
 
+void EventTreeModel::setMarkedEvent(int event, const QString& note)
+{
+    if (event == marked_ && note == markedNote_) return;
+    marked_ = event;
+    markedNote_ = note;
+    if (rowCount() > 0) emit dataChanged(index(0, 0), index(rowCount() - 1, Column::ColumnCount - 1));
+}
+
 QVariant EventTreeModel::eventData(int event, int column, int role) const
 {
     if (role == Qt::FontRole && event == current_) {
         QFont font;
         font.setBold(true);
         return font;
+    }
+    // The verdict's deciding event: a flag after its number, the verdict as its tooltip.
+    if (event == marked_ && marked_ >= 0 && column == Column::IndexColumn) {
+        if (role == Qt::DisplayRole) return flat_.data(flat_.index(event, column), role).toString() + QStringLiteral(" \u2691");
+        if (role == Qt::ToolTipRole) return markedNote_;
     }
     return flat_.data(flat_.index(event, column), role);
 }
@@ -200,7 +213,11 @@ QVariant EventTreeModel::groupData(const std::vector<int>& group, int column, in
 {
     if (role == Qt::DisplayRole) {
         switch (column) {
-        case Column::IndexColumn: return QStringLiteral("%1–%2").arg(eventNumber(group.front()), eventNumber(group.back()));
+        case Column::IndexColumn: {
+            const QString numbers = QStringLiteral("%1–%2").arg(eventNumber(group.front()), eventNumber(group.back()));
+            const bool marked = std::find(group.begin(), group.end(), marked_) != group.end();
+            return marked ? numbers + QStringLiteral(" \u2691") : numbers;  // it holds the verdict's event
+        }
         case Column::TimeColumn:
         case Column::GapColumn: return flat_.data(flat_.index(group.front(), column), role);
         case Column::KindColumn: {

@@ -46,6 +46,10 @@ public:
     void setFilter(const EventFilter& filter);
     const EventFilter& filter() const { return filter_; }
     void setTime(double seconds);
+    // The event that decides the shot's verdict (issue 43): its row carries a flag and `note` as its
+    // tooltip; -1 marks none.
+    void setMarkedEvent(int event, const QString& note);
+    int markedEvent() const { return marked_; }
 
     // The event a row stands for: its index in the result; a group row stands for its first event.
     // -1 for an invalid index.
@@ -78,6 +82,8 @@ private:
     std::vector<int> groupOf_;              // per result event: its group, or -1 when hidden
     EventTableModel flat_;                  // the per-event texts
     double time_ = 0.0;                     // s
+    int marked_ = -1;                       // the verdict's deciding event, -1 none
+    QString markedNote_;
     int current_ = -1;
 };
 

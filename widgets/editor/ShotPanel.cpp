@@ -1,6 +1,7 @@
 #include "ShotPanel.h"
 
 #include "AimControl.h"
+#include "GameControl.h"
 #include "LaunchReadout.h"
 #include "SquirtControl.h"
 
@@ -73,6 +74,7 @@ ShotPanel::ShotPanel(Document* document, QWidget* parent) : QWidget(parent), doc
     form->addRow(tr("Tip"), tipRow_);
     form->addRow(tr("Cue mass"), cueMass_);
     form->addRow(tr("End mass"), new SquirtControl(document_, this));  // squirt (shot.end_mass)
+    form->addRow(tr("Game"), new GameControl(document_, this));  // the rules that judge the shot (setup's game)
 
     connect(enabled_, &QCheckBox::toggled, this, [this] { commit(Enabled, enabled_->isChecked() ? tr("Add the cue strike") : tr("Remove the cue strike")); });
     connect(ball_, &QComboBox::activated, this, [this] { commit(BallField, tr("Strike ball %1").arg(ball_->currentText())); });

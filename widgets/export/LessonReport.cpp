@@ -4,6 +4,7 @@
 #include "CurvePainter.h"
 #include "ShotDiagram.h"
 #include "ShotOutcome.h"
+#include "Verdict.h"
 #include "Explain.h"
 #include "ExplainText.h"
 #include "explain/ConservationWidget.h"
@@ -101,7 +102,7 @@ double factTable(QPainter& p, double x, double y, double width, const QString& h
 }
 
 void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& title, const QString& notes,
-                         const ShotFacts& facts, const QStringList& noteChanges)
+                         const ShotFacts& facts, const QStringList& noteChanges, const std::optional<GameSpec>& game)
 {
     double y = 60.0;
     y = paragraph(p, y, title.isEmpty() ? tr("Shot") : title, 26, true);
@@ -135,6 +136,10 @@ void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& 
         pocketed << tr("%1 in the %2 at %3 s").arg(id(r, b.ball), displayElementName(r.table.pockets[b.pocket].id)).arg(b.time, 0, 'f', 4);
     lines << tr("Pocketed: %1").arg(pocketed.isEmpty() ? tr("none") : pocketed.join(QStringLiteral("; ")));
     lines << tr("Struck ball pocketed: %1").arg(o.struckBallPocketed ? tr("yes") : tr("no"));
+    // The verdict of the setup's game (issue 43), with the event that decides it.
+    if (const std::optional<rules::Verdict> verdict = game && r.finished() ? rules::judgeShot(r, *game) : std::nullopt)
+        lines << tr("Verdict: %1").arg(translated(verdict->text) +
+                                         (verdict->event >= 0 ? QStringLiteral(" (#%1)").arg(verdict->event + 1) : QString()));
     // A partial run (still going, cancelled, cut short) is said to be one (issue 39).
     const QString unfinished = RunState::unfinishedNote(r);
     lines << (unfinished.isEmpty() ? tr("The shot ends at %1 s, after %2 events.").arg(r.endTime, 0, 'f', 4).arg(r.events.size())
@@ -255,7 +260,7 @@ LessonReport::LessonReport(std::shared_ptr<const SimulationResult> result, QStri
 
 LessonReport::LessonReport(std::shared_ptr<const SimulationResult> result, const Setup& setup, QStringList noteChanges)
     : result_(std::move(result)), title_(QString::fromStdString(setup.name)), notes_(QString::fromStdString(setup.notes)),
-      facts_(shotFacts(setup)), shot_(setup.shot), noteChanges_(std::move(noteChanges))
+      facts_(shotFacts(setup)), shot_(setup.shot), game_(setup.game), noteChanges_(std::move(noteChanges))
 {
 }
 
@@ -337,7 +342,7 @@ bool LessonReport::write(const QString& path, QString* error, const Progress& pr
         diagram.paint(painter, QRectF(kMargin, 60, kWidth - 2 * kMargin, kHeight - 140));
         if (next()) {
             layout.begin(page, pages, header);
-            notesAndOutcomePage(painter, *result_, title_, notes_, facts_, noteChanges_);
+            notesAndOutcomePage(painter, *result_, title_, notes_, facts_, noteChanges_, game_);
             bool going = next();
             if (going) {
                 layout.begin(page, pages, header);

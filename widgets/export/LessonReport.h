@@ -50,6 +50,7 @@ private:
     QString notes_;
     ShotFacts facts_;
     std::optional<CueStrike> shot_;
+    std::optional<GameSpec> game_;  // the rules that judge the shot: the outcome ends with their verdict
     QStringList noteChanges_;
 };
 

@@ -3,6 +3,7 @@
 #include "layout/ColumnFit.h"
 
 #include "OutcomeLine.h"
+#include "explain/ExplainLanguage.h"
 #include "i18n/DisplayNames.h"
 
 #include <QEvent>
@@ -82,6 +83,8 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
     result_ = std::move(result);
     facts_->setRowCount(0);
     balls_->setRowCount(0);
+    verdict_.reset();
+    verdictLine_.clear();
     if (!result_) {
         outcome_ = {};
         summary_.clear();
@@ -91,6 +94,12 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
     const SimulationResult& r = *result_;
     outcome_ = shotOutcome(r);
     summary_ = outcomeLine(r, outcome_);
+    // The verdict of the game's rules (only for a finished run: a partial one cannot be judged yet).
+    if (game_ && r.finished()) verdict_ = rules::judgeShot(r, *game_);
+    if (verdict_) {
+        verdictLine_ = translated(verdict_->text);
+        summary_ = tr("%1. %2").arg(verdictLine_, summary_);
+    }
     // A partial run's outcome is the outcome so far, and says where it stopped.
     if (const QString note = RunState::unfinishedNote(r); !note.isEmpty()) summary_ = tr("%1. So far: %2").arg(note, summary_);
     header_->setText(summary_);
@@ -104,6 +113,11 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
         facts_->setItem(row, 1, item(value, tip));
     };
     const ShotOutcome& o = outcome_;
+    if (verdict_) {
+        const QString where = verdict_->event >= 0 ? tr(" (#%1)").arg(verdict_->event + 1) : QString();
+        addFact(verdict_->legal() ? tr("Verdict: legal") : tr("Verdict: foul"), verdictLine_ + where, verdict_->event,
+                tr("The rules of the setup's game on this shot; double-click to go to the event that decides it"));
+    }
     addFact(tr("Struck ball"), o.struckBall >= 0 ? id(o.struckBall) : tr("none (no shot)"));
     if (o.firstContact)
         addFact(tr("First contact"), tr("%1 at %2 s").arg(id(o.firstContact->ball)).arg(o.firstContact->time, 0, 'f', 4),

@@ -1,10 +1,13 @@
 #pragma once
 // The Outcome panel: what the shot did, from core/outcome. The struck ball, the first contact, the
 // cushions before it, the pocketed balls (pocket, time), and per ball its cushion contacts and where
-// it ended. Double-clicking the first contact or a pocketing selects that event.
+// it ended. Double-clicking the first contact or a pocketing selects that event. With a game (the
+// setup's), the verdict of its rules comes first (issue 43): legal or the foul and why, in one line,
+// linked to the event that decides it.
 
 #include "ShotOutcome.h"
 #include "Simulation.h"
+#include "Verdict.h"
 
 #include <QWidget>
 
@@ -21,6 +24,10 @@ public:
     explicit OutcomePanel(QWidget* parent = nullptr);
 
     void setResult(std::shared_ptr<const SimulationResult> result);
+    // The game whose rules judge the shot (none: no verdict); takes effect at the next setResult.
+    void setGame(const std::optional<GameSpec>& game) { game_ = game; }
+    const std::optional<rules::Verdict>& verdict() const { return verdict_; }
+    QString verdictLine() const { return verdictLine_; }  // the verdict in the window's language; empty: none
     const ShotOutcome& outcome() const { return outcome_; }
     QString summary() const { return summary_; }  // the status bar's line
     // The residual against an open recording (issue 24), a row of the facts; empty: no row.
@@ -40,6 +47,9 @@ private:
 
     std::shared_ptr<const SimulationResult> result_;
     ShotOutcome outcome_;
+    std::optional<GameSpec> game_;
+    std::optional<rules::Verdict> verdict_;
+    QString verdictLine_;
     QString summary_;
     QString recordingResidual_;
     QLabel* header_ = nullptr;

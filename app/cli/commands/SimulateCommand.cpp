@@ -20,7 +20,7 @@ Command simulateCommand()
         if (!setup) return status;
         SimulationResult result;
         const bool finished = in.simulate(*setup, until.value_or(-1.0), result);
-        in.out() += QByteArray::fromStdString(simulationJson(result));
+        in.out() += QByteArray::fromStdString(simulationJson(result, setup->game ? &*setup->game : nullptr));
         return finished ? Success : SimulationUnfinished;
     };
     return c;

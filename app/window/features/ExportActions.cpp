@@ -37,9 +37,9 @@ bool eventsCsv(const SimulationResult& result, const QString& path, QString* err
     return writeFileAtomically(path, QByteArray::fromStdString(cli::eventsCsv(result)), error);
 }
 
-bool eventsJson(const SimulationResult& result, const QString& path, QString* error)
+bool eventsJson(const SimulationResult& result, const QString& path, QString* error, const GameSpec* game)
 {
-    return writeFileAtomically(path, QByteArray::fromStdString(cli::simulationJson(result)), error);
+    return writeFileAtomically(path, QByteArray::fromStdString(cli::simulationJson(result, game)), error);
 }
 
 bool lessonReport(std::shared_ptr<const SimulationResult> result, const Setup& setup, const QStringList& noteChanges,

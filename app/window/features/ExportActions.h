@@ -26,7 +26,7 @@ bool trajectoryJson(const SimulationResult& result, double frameDt, const QStrin
 
 // The events: CSV one row per event and agent; JSON as `cuelab-cli simulate` prints it (with the outcome).
 bool eventsCsv(const SimulationResult& result, const QString& path, QString* error);
-bool eventsJson(const SimulationResult& result, const QString& path, QString* error);
+bool eventsJson(const SimulationResult& result, const QString& path, QString* error, const GameSpec* game = nullptr);
 
 // The lesson report (widgets/export/LessonReport): several PDF pages, with the setup's shot and
 // physics, and `noteChanges` (what changed since the notes were written) beside the notes.

@@ -264,12 +264,15 @@ void installExport(MainWindow& window)
             if (d.trajectory && !askFrameStep(*w, &frameDt)) return;
             const QString path = askPath(*w, tr("Export"), QString::fromLatin1(d.suffix), tr(d.filter));
             if (path.isEmpty()) return;
+            // The events as `simulate` prints them: with the setup's game, the outcome's verdict too.
+            const std::optional<GameSpec> game = w->document()->setup().game;
             runInBackground(*w, d.trajectory ? tr("Writing the trajectory...") : tr("Writing the events..."), path,
-                            [result, d, frameDt, path](const exports::Progress& progress, QString* error) {
+                            [result, d, frameDt, path, game](const exports::Progress& progress, QString* error) {
                                 if (d.trajectory)
                                     return d.json ? exports::trajectoryJson(*result, frameDt, path, error, progress)
                                                   : exports::trajectoryCsv(*result, frameDt, path, error, progress);
-                                return d.json ? exports::eventsJson(*result, path, error) : exports::eventsCsv(*result, path, error);
+                                return d.json ? exports::eventsJson(*result, path, error, game ? &*game : nullptr)
+                                              : exports::eventsCsv(*result, path, error);
                             });
         });
         a->setObjectName(QString::fromLatin1(d.name));

@@ -4,6 +4,8 @@
 #include "Features.h"
 #include "MainWindow.h"
 #include "editor/Document.h"
+#include "editor/EventTreeModel.h"
+#include "editor/EventsPanel.h"
 #include "editor/ResultFeed.h"
 #include "editor/Selection.h"
 #include "outcome/OutcomePanel.h"
@@ -28,14 +30,18 @@ void installOutcome(MainWindow& window)
     window.statusBar()->addPermanentWidget(line);
     Document* document = window.document();
     Selection* selection = window.selection();
-    ResultFeed::follow(document, panel, [panel, line, document] {
+    // The Events list marks the event that decides the verdict (issue 43).
+    auto* events = window.findChild<EventsPanel*>();
+    auto show = [panel, line, document, events] {
+        panel->setGame(document->setup().game);
         panel->setResult(document->result());
         line->setText(panel->summary());
-    });
+        if (events) events->model()->setMarkedEvent(panel->verdict() ? panel->verdict()->event : -1, panel->verdictLine());
+    };
+    ResultFeed::follow(document, panel, show);  // a drag's results a few times a second (issue 39)
     QObject::connect(panel, &OutcomePanel::eventActivated, selection, &Selection::selectEvent);
     QObject::connect(panel, &OutcomePanel::ballActivated, selection, &Selection::selectBall);
-    panel->setResult(document->result());
-    line->setText(panel->summary());
+    show();
 }
 
 }  // namespace cuelab
