@@ -199,6 +199,17 @@ void writeOutcome(JsonWriter& w, const SimulationResult& result, const ShotOutco
     w.value(o.cushionsBeforeFirstContact);
     w.key("struck_ball_pocketed");
     w.value(o.struckBallPocketed);
+    w.key("off_table");  // balls that left the table, in time order (an additive key)
+    w.beginArray(Layout::Line);
+    for (const OffTableBall& b : o.offTable) {
+        w.beginObject(Layout::Line);
+        w.key("ball");
+        w.value(id(b.ball));
+        w.key("time");
+        w.value(b.time);
+        w.endObject();
+    }
+    w.endArray();
     if (game) {
         w.key("verdict");
         writeVerdict(w, result, rules::judgeShot(result, *game));

@@ -33,6 +33,9 @@ ShotOutcome shotOutcome(const SimulationResult& result)
             o.pocketed.push_back({e.balls[0], e.pocket, e.time});
             if (e.balls[0] == o.struckBall) o.struckBallPocketed = true;
             break;
+        case EventKind::BallOffTable:
+            o.offTable.push_back({e.balls[0], e.time});
+            break;
         default:
             break;
         }
@@ -71,15 +74,19 @@ std::string outcomeSummary(const SimulationResult& result, const ShotOutcome& o)
         line = id(o.struckBall) + " touched no ball";
         line += ", " + plural(o.cushionsBeforeFirstContact, "cushion");
     }
-    line += "; pocketed: ";
-    if (o.pocketed.empty()) line += "none";
-    for (std::size_t i = 0; i < o.pocketed.size(); ++i) {
-        const PocketedBall& p = o.pocketed[i];
-        if (i > 0) line += ", ";
-        line += id(p.ball) + " (" + result.table.pockets.at(static_cast<std::size_t>(p.pocket)).id + ", " +
-                seconds(p.time) + ")";
+    if (!result.table.pockets.empty()) {
+        line += "; pocketed: ";
+        if (o.pocketed.empty()) line += "none";
+        for (std::size_t i = 0; i < o.pocketed.size(); ++i) {
+            const PocketedBall& p = o.pocketed[i];
+            if (i > 0) line += ", ";
+            line += id(p.ball) + " (" + result.table.pockets.at(static_cast<std::size_t>(p.pocket)).id + ", " +
+                    seconds(p.time) + ")";
+        }
+        if (o.struckBall >= 0 && o.struckBallPocketed) line += "; " + id(o.struckBall) + " pocketed too";
     }
-    if (o.struckBall >= 0 && o.struckBallPocketed) line += "; " + id(o.struckBall) + " pocketed too";
+    for (std::size_t i = 0; i < o.offTable.size(); ++i)
+        line += (i == 0 ? "; off the table: " : ", ") + id(o.offTable[i].ball) + " (" + seconds(o.offTable[i].time) + ")";
     return line;
 }
 

@@ -24,6 +24,11 @@ struct PocketedBall {
     double time = 0.0;  // s, of the ball-pocket event
 };
 
+struct OffTableBall {
+    int ball = -1;      // ball index
+    double time = 0.0;  // s, of the ball-off-table event
+};
+
 struct ShotOutcome {
     int struckBall = -1;                      // the cue strike's ball; -1 without a shot
     std::optional<FirstContact> firstContact; // none without a shot or when it touched no ball
@@ -31,6 +36,7 @@ struct ShotOutcome {
     std::vector<int> cushionHits;             // per ball index: ball-cushion events, jaws included
     int cushionsBeforeFirstContact = 0;       // of the struck ball (all of them if it met no ball)
     bool struckBallPocketed = false;
+    std::vector<OffTableBall> offTable;       // balls that left the table (jumped over a rail), in time order
     std::vector<BallState> finalStates;       // per ball, at the result's endTime
 
     int pocketCount() const { return static_cast<int>(pocketed.size()); }
@@ -41,7 +47,8 @@ struct ShotOutcome {
 ShotOutcome shotOutcome(const SimulationResult& result);
 
 // One line for a status bar, e.g. "cue → 1 at 0.293 s, 1 cushion before; pocketed: 1 (pocket-tr,
-// 0.694 s); cue ball stays up". Plain UTF-8.
+// 0.694 s)"; a ball that left the table is named ("; off the table: 1 (0.520 s)"); a table without
+// pockets (carom) says nothing of pockets. Plain UTF-8.
 std::string outcomeSummary(const SimulationResult& result, const ShotOutcome& outcome);
 
 }  // namespace cuelab

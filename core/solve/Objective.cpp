@@ -103,7 +103,7 @@ double Evaluator::closeness(const SimulationResult& r, const ShotOutcome& o) con
 {
     double sum = 0.0;
     for (const TermCheck& c : terms_) {
-        const bool holds = c.alone.met(o);
+        const bool holds = c.alone.met(r, o);
         if (c.term.kind == GoalTerm::Kind::Pocketed && !c.term.negated && c.ball >= 0) {
             const PocketedBall* dropped = nullptr;
             for (const PocketedBall& p : o.pocketed)
@@ -163,7 +163,7 @@ Nominal Evaluator::nominal(const Strike& strike) const
     if (!n.result.finished()) return n;
     n.simulated = true;
     n.outcome = shotOutcome(n.result);
-    n.met = resolved_.met(n.outcome);
+    n.met = resolved_.met(n.result, n.outcome);
     n.closeness = closeness(n.result, n.outcome);
     return n;
 }

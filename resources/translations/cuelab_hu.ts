@@ -286,6 +286,14 @@
         <source>Predict</source>
         <translation>Jóslás</translation>
     </message>
+    <message>
+        <source>&amp;Find shots</source>
+        <translation>&amp;Lökések keresése</translation>
+    </message>
+    <message>
+        <source>The strikes that meet the goal most often for the chosen player</source>
+        <translation>Azok a lökések, amelyek a választott játékosnál a leggyakrabban teljesítik a célt</translation>
+    </message>
 </context>
 <context>
     <name>cuelab</name>
@@ -950,6 +958,10 @@
         <translation>; lyukba esett: %1</translation>
     </message>
     <message>
+        <source>; off the table: %1</source>
+        <translation>; az asztalról leesett: %1</translation>
+    </message>
+    <message>
         <source>; %1 pocketed too</source>
         <translation>; %1 is lyukba esett</translation>
     </message>
@@ -1092,10 +1104,6 @@
     <message>
         <source>Video height in pixels (MP4 and WebM round it down to an even number)</source>
         <translation>A videó magassága képpontban (MP4 és WebM esetén lefelé kerekítve páros számra)</translation>
-    </message>
-    <message>
-        <source>The view as it is now: its camera, overlays, arrows and labels, with the time on every frame.</source>
-        <translation>A nézet, ahogy most látszik: kamerája, rátétei, nyilai és feliratai, minden képkockán az idővel.</translation>
     </message>
     <message>
         <source>Slow motion</source>
@@ -1262,6 +1270,80 @@
 Export the events computed so far?</source>
         <translation>%1.
 Exportálja az eddig kiszámolt eseményeket?</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Shot Code</source>
+        <translation>Lökéskód &amp;másolása</translation>
+    </message>
+    <message>
+        <source>Copy the whole setup as one line of text (cuelab:1:...) to share: anyone pastes it into CueLab, or passes it to cuelab-cli, and gets the same shot</source>
+        <translation>Az egész felállás másolása egyetlen szövegsorként (cuelab:1:...) megosztáshoz: aki beilleszti a CueLabbe vagy átadja a cuelab-cli-nek, ugyanazt a lökést kapja</translation>
+    </message>
+    <message numerus="yes">
+        <source>Shot code copied: %n character(s)</source>
+        <translation>
+            <numerusform>Lökéskód másolva: %n karakter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Paste Shot Code</source>
+        <translation>Lökéskód &amp;beillesztése</translation>
+    </message>
+    <message>
+        <source>Open the shot code on the clipboard as a new setup</source>
+        <translation>A vágólapon lévő lökéskód megnyitása új felállásként</translation>
+    </message>
+    <message>
+        <source>Paste Shot Code</source>
+        <translation>Lökéskód beillesztése</translation>
+    </message>
+    <message>
+        <source>The clipboard holds no shot code. A shot code is one line beginning with &quot;cuelab:&quot;, as Edit › Copy Shot Code makes it.</source>
+        <translation>A vágólapon nincs lökéskód. A lökéskód egyetlen, „cuelab:” kezdetű sor, amilyet a Szerkesztés › Lökéskód másolása készít.</translation>
+    </message>
+    <message>
+        <source>HD, 1280 × 720</source>
+        <translation>HD, 1280 × 720</translation>
+    </message>
+    <message>
+        <source>Full HD, 1920 × 1080</source>
+        <translation>Full HD, 1920 × 1080</translation>
+    </message>
+    <message>
+        <source>As the view, %1 × %2</source>
+        <translation>Mint a nézet, %1 × %2</translation>
+    </message>
+    <message>
+        <source>Other size</source>
+        <translation>Más méret</translation>
+    </message>
+    <message>
+        <source>The video&apos;s size in pixels</source>
+        <translation>A videó mérete képpontban</translation>
+    </message>
+    <message>
+        <source>The whole table from above</source>
+        <translation>Az egész asztal felülről</translation>
+    </message>
+    <message>
+        <source>The view&apos;s camera</source>
+        <translation>A nézet kamerája</translation>
+    </message>
+    <message>
+        <source>From above, the table fills the video whatever its size; the view&apos;s camera keeps the angle and the zoom you set</source>
+        <translation>Felülről az asztal bármilyen méretnél kitölti a videót; a nézet kamerája megtartja a beállított szöget és nagyítást</translation>
+    </message>
+    <message>
+        <source>The view&apos;s overlays, arrows and labels as they are now, with the time on every frame.</source>
+        <translation>A nézet rétegei, nyilai és feliratai a mostani állapotukban, minden képkockán az idővel.</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Méret</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
     </message>
 </context>
 <context>
@@ -2220,6 +2302,10 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
         <source>Edit the lesson&apos;s notes</source>
         <translation>A lecke megjegyzéseinek szerkesztése</translation>
     </message>
+    <message>
+        <source>Shared shot</source>
+        <translation>Megosztott lökés</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::EventTableModel</name>
@@ -2380,6 +2466,93 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
     <message>
         <source>&lt;b&gt;New to CueLab?&lt;/b&gt; Open a lesson from &lt;i&gt;File › Examples&lt;/i&gt;. &lt;b&gt;Space&lt;/b&gt; plays the shot, &lt;b&gt;←/→&lt;/b&gt; step a frame, &lt;b&gt;Shift+←/→&lt;/b&gt; jump to the next event; click an event in &lt;i&gt;Events&lt;/i&gt; to read its mathematics. Drag a ball to move it; every edit can be undone (&lt;b&gt;Ctrl+Z&lt;/b&gt;). &lt;b&gt;F1&lt;/b&gt; opens the user guide; &lt;i&gt;Help › Keyboard and Mouse&lt;/i&gt; lists every shortcut and mouse gesture.</source>
         <translation>&lt;b&gt;Először használja a CueLabot?&lt;/b&gt; Nyisson meg egy leckét a &lt;i&gt;Fájl › Példák&lt;/i&gt; menüből. A &lt;b&gt;Szóköz&lt;/b&gt; lejátssza az ütést, a &lt;b&gt;←/→&lt;/b&gt; egy képkockát lép, a &lt;b&gt;Shift+←/→&lt;/b&gt; a következő eseményre ugrik; kattintson egy eseményre az &lt;i&gt;Események&lt;/i&gt; panelen, hogy elolvassa a matematikáját. Egy golyót húzással helyezhet át; minden szerkesztés visszavonható (&lt;b&gt;Ctrl+Z&lt;/b&gt;). Az &lt;b&gt;F1&lt;/b&gt; megnyitja a felhasználói útmutatót; a &lt;i&gt;Súgó › Billentyűzet és egér&lt;/i&gt; felsorol minden billentyűparancsot és egérmozdulatot.</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::GameControl</name>
+    <message>
+        <source>The game whose rules judge the shot: the Outcome dock then says whether it is legal or a foul, and why (docs/rules.md)</source>
+        <translation>A játék, amelynek szabályai a lökést megítélik: az Eredmény panel ekkor megmondja, hogy szabályos-e vagy szabálytalan, és miért (docs/rules.md)</translation>
+    </message>
+    <message>
+        <source>No rules</source>
+        <translation>Nincs szabály</translation>
+    </message>
+    <message>
+        <source>Snooker</source>
+        <translation>Snooker</translation>
+    </message>
+    <message>
+        <source>Three-cushion</source>
+        <translation>Háromfalas</translation>
+    </message>
+    <message>
+        <source>The striker&apos;s group: open table, solids (1-7) or stripes (9-15)</source>
+        <translation>A játékos csoportja: nyitott asztal, teli (1–7) vagy csíkos (9–15) golyók</translation>
+    </message>
+    <message>
+        <source>Open table</source>
+        <translation>Nyitott asztal</translation>
+    </message>
+    <message>
+        <source>Solids</source>
+        <translation>Teli golyók</translation>
+    </message>
+    <message>
+        <source>Stripes</source>
+        <translation>Csíkos golyók</translation>
+    </message>
+    <message>
+        <source>The ball on: a red, any colour (after a red), or a named colour</source>
+        <translation>A soron lévő golyó: piros, bármely színes (piros után) vagy egy megnevezett színes</translation>
+    </message>
+    <message>
+        <source>Red on</source>
+        <translation>Piros van soron</translation>
+    </message>
+    <message>
+        <source>Colour on</source>
+        <translation>Színes van soron</translation>
+    </message>
+    <message>
+        <source>Yellow on</source>
+        <translation>Sárga van soron</translation>
+    </message>
+    <message>
+        <source>Green on</source>
+        <translation>Zöld van soron</translation>
+    </message>
+    <message>
+        <source>Brown on</source>
+        <translation>Barna van soron</translation>
+    </message>
+    <message>
+        <source>Blue on</source>
+        <translation>Kék van soron</translation>
+    </message>
+    <message>
+        <source>Pink on</source>
+        <translation>Rózsaszín van soron</translation>
+    </message>
+    <message>
+        <source>Black on</source>
+        <translation>Fekete van soron</translation>
+    </message>
+    <message>
+        <source>Judge the shot by the rules of %1</source>
+        <translation>A lökés megítélése a(z) %1 szabályai szerint</translation>
+    </message>
+    <message>
+        <source>Judge the shot by no rules</source>
+        <translation>A lökés megítélése szabályok nélkül</translation>
+    </message>
+    <message>
+        <source>Set the striker&apos;s group to %1</source>
+        <translation>A játékos csoportja: %1</translation>
+    </message>
+    <message>
+        <source>Set the ball on: %1</source>
+        <translation>Soron lévő golyó: %1</translation>
     </message>
 </context>
 <context>
@@ -3031,6 +3204,10 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
         <source>Stop the running simulation; the events computed so far stay, marked as a partial result</source>
         <translation>Leállítja a futó szimulációt; az eddig kiszámolt események megmaradnak, részeredményként jelölve</translation>
     </message>
+    <message>
+        <source>Opened the shot code as %1</source>
+        <translation>A lökéskód megnyitva ezen a néven: %1</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::OddsMap</name>
@@ -3062,8 +3239,8 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
 <context>
     <name>cuelab::OddsSection</name>
     <message>
-        <source>FastFiz defaults</source>
-        <translation>A FastFiz alapértékei</translation>
+        <source>Computer tournaments (FastFiz)</source>
+        <translation>Számítógépes versenyek (FastFiz)</translation>
     </message>
     <message>
         <source>Club player</source>
@@ -3122,8 +3299,8 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
         <translation>Esélyek a kivitelezés szórásával</translation>
     </message>
     <message>
-        <source>How the player&apos;s strike scatters: normal errors of these standard deviations on every strike parameter (FastFiz&apos;s model). FastFiz&apos;s defaults are those of the computational pool tournaments; the club player and the professional are explained in docs/analysis.md</source>
-        <translation>Mennyire szór a játékos ütése: ekkora szórású normális hibák minden ütésparaméteren (a FastFiz modellje). A FastFiz alapértékei a számítógépes pooltornákéi; a klubjátékos és a profi magyarázata a docs/analysis.md-ben</translation>
+        <source>How the player&apos;s strike scatters: normal errors of these standard deviations on every strike parameter (FastFiz&apos;s model). Computer tournaments: the noise of the computational pool tournaments played on FastFiz, a little steadier than a club player and looser than a professional; all three are explained in docs/analysis.md</source>
+        <translation>Mennyire szór a játékos ütése: ekkora szórású normális hibák minden ütésparaméteren (a FastFiz modellje). Számítógépes versenyek: a FastFizen játszott számítógépes pooltornák szórása, valamivel egyenletesebb egy klubjátékosénál és lazább egy profiénál; mindhárom magyarázata a docs/analysis.md-ben</translation>
     </message>
     <message>
         <source>Strikes of the current shot at most; it stops sooner once the 95% interval is within ±1%</source>
@@ -4427,90 +4604,106 @@ Kimaradt kérdés: %1</translation>
     </message>
 </context>
 <context>
-    <name>cuelab::GameControl</name>
+    <name>cuelab::ShotFinderSection</name>
     <message>
-        <source>The game whose rules judge the shot: the Outcome dock then says whether it is legal or a foul, and why (docs/rules.md)</source>
-        <translation>A játék, amelynek szabályai a lökést megítélik: az Eredmény panel ekkor megmondja, hogy szabályos-e vagy szabálytalan, és miért (docs/rules.md)</translation>
+        <source>Find shots</source>
+        <translation>Lökések keresése</translation>
     </message>
     <message>
-        <source>No rules</source>
-        <translation>Nincs szabály</translation>
+        <source>The strikes that meet the goal most often for the player of the odds section: direct pots, banks, kicks and combinations, each refined over aim, speed and tip (docs/solve.md).</source>
+        <translation>Azok a lökések, amelyek az esélyszakasz játékosánál a leggyakrabban teljesítik a célt: egyenes lökések, falazások, kerülések és kombinációk, mindegyik célzásra, sebességre és dákóvégre finomítva (docs/solve.md).</translation>
     </message>
     <message>
-        <source>Snooker</source>
-        <translation>Snooker</translation>
+        <source> shots</source>
+        <translation> lökés</translation>
     </message>
     <message>
-        <source>Three-cushion</source>
-        <translation>Háromfalas</translation>
+        <source>At most this many shots, each by another route or pocket</source>
+        <translation>Legfeljebb ennyi lökés, mindegyik más úton vagy más lyukba</translation>
     </message>
     <message>
-        <source>The striker&apos;s group: open table, solids (1-7) or stripes (9-15)</source>
-        <translation>A játékos csoportja: nyitott asztal, teli (1–7) vagy csíkos (9–15) golyók</translation>
+        <source>Jumps and massés</source>
+        <translation>Ugratások és masszék</translation>
     </message>
     <message>
-        <source>Open table</source>
-        <translation>Nyitott asztal</translation>
+        <source>Also search the cue&apos;s elevation</source>
+        <translation>A dákó emelését is keresi</translation>
     </message>
     <message>
-        <source>Solids</source>
-        <translation>Teli golyók</translation>
+        <source>Pick on the table</source>
+        <translation>Kijelölés az asztalon</translation>
     </message>
     <message>
-        <source>Stripes</source>
-        <translation>Csíkos golyók</translation>
+        <source>Make the goal by clicks on the table: a ball to pot, the pocket, then drag a zone where the cue ball should stop</source>
+        <translation>A cél összeállítása kattintásokkal az asztalon: a lökendő golyó, a lyuk, majd húzással egy terület, ahol a fehér golyónak meg kell állnia</translation>
     </message>
     <message>
-        <source>The ball on: a red, any colour (after a red), or a named colour</source>
-        <translation>A soron lévő golyó: piros, bármely színes (piros után) vagy egy megnevezett színes</translation>
+        <source>Click a shot to load its strike (one undo step)</source>
+        <translation>Kattintson egy lökésre a betöltéséhez (egy visszavonási lépés)</translation>
     </message>
     <message>
-        <source>Red on</source>
-        <translation>Piros van soron</translation>
+        <source>Cancel</source>
+        <translation>Mégse</translation>
     </message>
     <message>
-        <source>Colour on</source>
-        <translation>Színes van soron</translation>
+        <source>Click the ball to pot, then its pocket; drag a zone for the cue ball.</source>
+        <translation>Kattintson a lökendő golyóra, majd a lyukára; húzzon ki egy területet a fehér golyónak.</translation>
     </message>
     <message>
-        <source>Yellow on</source>
-        <translation>Sárga van soron</translation>
+        <source>Cancelled.</source>
+        <translation>Megszakítva.</translation>
     </message>
     <message>
-        <source>Green on</source>
-        <translation>Zöld van soron</translation>
+        <source>The setup changed since these shots were found; find again.</source>
+        <translation>A felállás megváltozott, mióta ezek a lökések megvannak; keressen újra.</translation>
     </message>
     <message>
-        <source>Brown on</source>
-        <translation>Barna van soron</translation>
+        <source>Goal: %1</source>
+        <translation>Cél: %1</translation>
     </message>
     <message>
-        <source>Blue on</source>
-        <translation>Kék van soron</translation>
+        <source>Type a goal above first, e.g. pot:1@pocket-tr,no-scratch.</source>
+        <translation>Előbb adjon meg fent egy célt, pl. pot:1@pocket-tr,no-scratch.</translation>
     </message>
     <message>
-        <source>Pink on</source>
-        <translation>Rózsaszín van soron</translation>
+        <source>Searching…</source>
+        <translation>Keresés…</translation>
     </message>
     <message>
-        <source>Black on</source>
-        <translation>Fekete van soron</translation>
+        <source>%1. %2: %3 % (%4–%5 %)</source>
+        <translation>%1. %2: %3% (%4–%5%)</translation>
     </message>
     <message>
-        <source>Judge the shot by the rules of %1</source>
-        <translation>A lökés megítélése a(z) %1 szabályai szerint</translation>
+        <source>, into %1</source>
+        <translation>, ide: %1</translation>
     </message>
     <message>
-        <source>Judge the shot by no rules</source>
-        <translation>A lökés megítélése szabályok nélkül</translation>
+        <source>No strike met the goal (%1 simulations, %2 s).</source>
+        <translation>Egyik lökés sem teljesítette a célt (%1 szimuláció, %2 s).</translation>
     </message>
     <message>
-        <source>Set the striker&apos;s group to %1</source>
-        <translation>A játékos csoportja: %1</translation>
+        <source>%1 simulations in %2 s; each shot&apos;s odds from %3 fresh strikes.</source>
+        <translation>%1 szimuláció %2 s alatt; minden lökés esélye %3 új lökésből.</translation>
     </message>
     <message>
-        <source>Set the ball on: %1</source>
-        <translation>Soron lévő golyó: %1</translation>
+        <source>That is the struck ball: click a ball to pot.</source>
+        <translation>Ez a megütött golyó: kattintson egy lökendő golyóra.</translation>
+    </message>
+    <message>
+        <source>Click the ball to pot first.</source>
+        <translation>Előbb a lökendő golyóra kattintson.</translation>
+    </message>
+    <message>
+        <source>found shot %1</source>
+        <translation>%1. talált lökés</translation>
+    </message>
+    <message>
+        <source>Load found shot %1 (%2)</source>
+        <translation>A(z) %1. talált lökés betöltése (%2)</translation>
+    </message>
+    <message>
+        <source>That shot is not a legal setup.</source>
+        <translation>Ez a lökés nem szabályos felállás.</translation>
     </message>
 </context>
 <context>
@@ -4953,16 +5146,16 @@ Kimaradt kérdés: %1</translation>
         <translation>Háromfalas pont</translation>
     </message>
     <message>
-        <source>The three-cushion carom judged by UMB rules (&quot;game&quot;: three-cushion): the struck white is the striker&apos;s ball, the red and the yellow the object balls. Count the white&apos;s own cushions before it meets its second object ball, on the event list: it meets the red (#2), then the right rail (#7), the bottom rail (#9) and the left rail (#13), and then the yellow (#17). Three cushions before the second object ball: verdict, a point, and the striker plays on. The red&apos;s cushions (#5, #11, #15) do not count, nor would any after the yellow. Headings from about 23.4° to 23.7° score; the Three-cushion near miss example moves the yellow onto the white&apos;s path.</source>
-        <translation>A háromfalas karambol az UMB szabályai szerint megítélve (&quot;game&quot;: three-cushion): a meglökött fehér a játékos golyója, a piros és a sárga a tárgygolyók. Számolja meg az eseménylistán a fehér saját mantinelérintéseit, mielőtt a második tárgygolyót eléri: eltalálja a pirosat (#2), majd a jobb mantinelt (#7), az alsót (#9) és a bal mantinelt (#13), aztán a sárgát (#17). Három mantinel a második tárgygolyó előtt: az ítélet pont, és a játékos folytatja. A piros mantinelérintései (#5, #11, #15) nem számítanak, ahogy a sárga utániak sem számítanának. Nagyjából 23,4° és 23,7° közötti irányok adnak pontot; a Háromfalas: majdnem pont példa a sárgát a fehér útjába teszi.</translation>
+        <source>The three-cushion carom judged by UMB rules (&quot;game&quot;: three-cushion): the struck white is the striker&apos;s ball, the red and the yellow the object balls. Count the white&apos;s own cushions before it meets its second object ball, on the event list: it meets the red (#2), then the right rail (#6), the bottom rail (#8) and the left rail (#12), and then the yellow (#16). Three cushions before the second object ball: verdict, a point, and the striker plays on. The red&apos;s cushions (#4, #10, #14) do not count, nor would any after the yellow. Headings from about 23.4° to 23.7° score; the Three-cushion near miss example moves the yellow onto the white&apos;s path.</source>
+        <translation>A háromfalas karambol az UMB szabályai szerint megítélve (&quot;game&quot;: three-cushion): a meglökött fehér a játékos golyója, a piros és a sárga a tárgygolyók. Számolja meg az eseménylistán a fehér saját mantinelérintéseit, mielőtt a második tárgygolyót eléri: eltalálja a pirosat (#2), majd a jobb mantinelt (#6), az alsót (#8) és a bal mantinelt (#12), aztán a sárgát (#16). Három mantinel a második tárgygolyó előtt: az ítélet pont, és a játékos folytatja. A piros mantinelérintései (#4, #10, #14) nem számítanak, ahogy a sárga utániak sem számítanának. Nagyjából 23,4° és 23,7° közötti irányok adnak pontot; a Háromfalas: majdnem pont példa a sárgát a fehér útjába teszi.</translation>
     </message>
     <message>
         <source>Three-cushion near miss</source>
         <translation>Háromfalas: majdnem pont</translation>
     </message>
     <message>
-        <source>The three-cushion point&apos;s stroke with the yellow moved onto the white&apos;s path from the bottom rail to the left rail. The white meets the red (#2), the right rail (#7) and the bottom rail (#9), and then the yellow (#13), before it can reach the left rail. Verdict: no point, the turn passes: the white met both object balls, but with only two cushions before the second (UMB: three or more). Only the white&apos;s own cushions before its second object ball count; the red&apos;s (#5, #11) never do.</source>
-        <translation>A háromfalas pont lökése, a sárgával a fehérnek az alsó mantineltől a bal mantinel felé vezető útjába helyezve. A fehér eltalálja a pirosat (#2), a jobb mantinelt (#7) és az alsót (#9), majd a sárgát (#13), mielőtt a bal mantinelt elérhetné. Ítélet: nincs pont, a másik játékos következik: a fehér mindkét tárgygolyót elérte, de a második előtt csak két mantinellel (UMB: legalább három kell). Csak a fehér saját mantinelérintései számítanak a második tárgygolyó előtt; a piroséi (#5, #11) sohasem.</translation>
+        <source>The three-cushion point&apos;s stroke with the yellow moved onto the white&apos;s path from the bottom rail to the left rail. The white meets the red (#2), the right rail (#6) and the bottom rail (#8), and then the yellow (#12), before it can reach the left rail. Verdict: no point, the turn passes: the white met both object balls, but with only two cushions before the second (UMB: three or more). Only the white&apos;s own cushions before its second object ball count; the red&apos;s (#4, #10) never do.</source>
+        <translation>A háromfalas pont lökése, a sárgával a fehérnek az alsó mantineltől a bal mantinel felé vezető útjába helyezve. A fehér eltalálja a pirosat (#2), a jobb mantinelt (#6) és az alsót (#8), majd a sárgát (#12), mielőtt a bal mantinelt elérhetné. Ítélet: nincs pont, a másik játékos következik: a fehér mindkét tárgygolyót elérte, de a második előtt csak két mantinellel (UMB: legalább három kell). Csak a fehér saját mantinelérintései számítanak a második tárgygolyó előtt; a piroséi (#4, #10) sohasem.</translation>
     </message>
     <message>
         <source>8-ball break</source>

@@ -43,8 +43,9 @@ void TestOutcomeJson::keysAndValues()
 {
     const QJsonObject o = simulate(example("half-ball-cut.json")).value("outcome").toObject();
     QStringList keys = o.keys();
-    QCOMPARE(keys, (QStringList{"cushion_hits", "cushions_before_first_contact", "first_contact", "pocketed",
-                                "struck_ball", "struck_ball_pocketed"}));
+    QCOMPARE(keys, (QStringList{"cushion_hits", "cushions_before_first_contact", "first_contact", "off_table",
+                                "pocketed", "struck_ball", "struck_ball_pocketed"}));
+    QVERIFY(o.value("off_table").isArray() && o.value("off_table").toArray().isEmpty());
     QCOMPARE(o.value("struck_ball").toString(), QStringLiteral("cue"));
     const QJsonObject first = o.value("first_contact").toObject();
     QCOMPARE(first.value("ball").toString(), QStringLiteral("1"));

@@ -61,6 +61,8 @@ private slots:
     void noShot();
     void scratchIsStruckBallPocketed();
     void summaryLine();
+    void offTableIsNamed();
+    void caromSpeaksOfNoPockets();
 };
 
 void TestOutcome::lessons_data()
@@ -245,6 +247,38 @@ void TestOutcome::summaryLine()
     QVERIFY2(line.rfind("cue \u2192 1 at ", 0) == 0, line.c_str());
     QVERIFY2(line.find("0 cushions before") != std::string::npos, line.c_str());
     QVERIFY2(line.find("pocketed: 1 (pocket-tr, ") != std::string::npos, line.c_str());
+}
+
+// Issue 43: a ball jumped off the table is part of the outcome (it was missing from the summary).
+void TestOutcome::offTableIsNamed()
+{
+    const Run r = run(QStringLiteral("off-the-table.json"));
+    QVERIFY(!r.outcome.offTable.empty());
+    int events = 0;
+    for (const Event& e : r.result.events)
+        if (e.kind == EventKind::BallOffTable) {
+            QCOMPARE(r.outcome.offTable.at(static_cast<std::size_t>(events)).ball, e.balls[0]);
+            QCOMPARE(r.outcome.offTable.at(static_cast<std::size_t>(events)).time, e.time);
+            ++events;
+        }
+    QCOMPARE(static_cast<int>(r.outcome.offTable.size()), events);
+    const std::string line = outcomeSummary(r.result, r.outcome);
+    const std::string gone = id(r, r.outcome.offTable.front().ball).toStdString();
+    QVERIFY2(line.find("; off the table: " + gone + " (") != std::string::npos, line.c_str());
+    // A shot with no ball off the table says nothing of it.
+    const Run cut = run(QStringLiteral("half-ball-cut.json"));
+    QVERIFY(cut.outcome.offTable.empty());
+    QVERIFY(outcomeSummary(cut.result, cut.outcome).find("off the table") == std::string::npos);
+}
+
+// Issue 43: on the carom table (no pockets) the outcome does not speak of pockets.
+void TestOutcome::caromSpeaksOfNoPockets()
+{
+    const Run r = run(QStringLiteral("three-cushion.json"));
+    QVERIFY(r.result.table.pockets.empty());
+    const std::string line = outcomeSummary(r.result, r.outcome);
+    QVERIFY2(line.find("pocket") == std::string::npos, line.c_str());
+    QVERIFY2(line.rfind("white \u2192 red at ", 0) == 0, line.c_str());
 }
 
 QTEST_GUILESS_MAIN(TestOutcome)

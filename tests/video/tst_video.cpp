@@ -375,6 +375,7 @@ void TestVideo::demo()
         request.path = dir_.filePath(QStringLiteral("stun-shot.mp4"));
         request.slow = 8.0;
         request.size = QSize(1280, 720);
+        request.frameTable = true;  // the window's defaults (VideoFeature.cpp)
         askVideoSettings(window, &request);  // left up until the screenshot tool ends the program
     }
     if (frameOut.isEmpty() && qEnvironmentVariableIntValue("CUELAB_SCREENSHOT_DEMO") != 1)

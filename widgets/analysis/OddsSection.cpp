@@ -36,7 +36,7 @@ namespace {
 
 // The presets in the order of the box, then "custom" (the boxes as the user set them).
 const char* const kPresetLabels[] = {
-    QT_TRANSLATE_NOOP("cuelab::OddsSection", "FastFiz defaults"),
+    QT_TRANSLATE_NOOP("cuelab::OddsSection", "Computer tournaments (FastFiz)"),
     QT_TRANSLATE_NOOP("cuelab::OddsSection", "Club player"),
     QT_TRANSLATE_NOOP("cuelab::OddsSection", "Professional"),
     QT_TRANSLATE_NOOP("cuelab::OddsSection", "Custom"),
@@ -87,8 +87,9 @@ OddsSection::OddsSection(Document* document, std::function<QString()> goalText, 
     preset_ = new QComboBox(this);
     for (const char* label : kPresetLabels) preset_->addItem(tr(label));
     preset_->setToolTip(tr("How the player's strike scatters: normal errors of these standard deviations on every "
-                           "strike parameter (FastFiz's model). FastFiz's defaults are those of the computational "
-                           "pool tournaments; the club player and the professional are explained in docs/analysis.md"));
+                           "strike parameter (FastFiz's model). Computer tournaments: the noise of the computational pool "
+                           "tournaments played on FastFiz, a little steadier than a club player and looser than a "
+                           "professional; all three are explained in docs/analysis.md"));
     auto* sigmas = new QGridLayout;
     for (StrikeKey k : kStrikeKeys) {
         const auto i = static_cast<std::size_t>(k);

@@ -29,12 +29,17 @@ QString outcomeLine(const SimulationResult& r, const ShotOutcome& o)
     } else {
         line = tr("%1 touched no ball, %2").arg(id(o.struckBall), cushions(o.cushionsBeforeFirstContact));
     }
-    QStringList pocketed;
-    for (const PocketedBall& p : o.pocketed)
-        pocketed << tr("%1 (%2, %3)").arg(id(p.ball), displayElementName(r.table.pockets.at(static_cast<std::size_t>(p.pocket)).id),
-                                          seconds(p.time));
-    line += tr("; pocketed: %1").arg(pocketed.isEmpty() ? tr("none") : pocketed.join(QStringLiteral(", ")));
-    if (o.struckBall >= 0 && o.struckBallPocketed) line += tr("; %1 pocketed too").arg(id(o.struckBall));
+    if (!r.table.pockets.empty()) {  // a carom table has none to speak of
+        QStringList pocketed;
+        for (const PocketedBall& p : o.pocketed)
+            pocketed << tr("%1 (%2, %3)").arg(id(p.ball), displayElementName(r.table.pockets.at(static_cast<std::size_t>(p.pocket)).id),
+                                              seconds(p.time));
+        line += tr("; pocketed: %1").arg(pocketed.isEmpty() ? tr("none") : pocketed.join(QStringLiteral(", ")));
+        if (o.struckBall >= 0 && o.struckBallPocketed) line += tr("; %1 pocketed too").arg(id(o.struckBall));
+    }
+    QStringList off;
+    for (const OffTableBall& b : o.offTable) off << tr("%1 (%2)").arg(id(b.ball), seconds(b.time));
+    if (!off.isEmpty()) line += tr("; off the table: %1").arg(off.join(QStringLiteral(", ")));
     return line;
 }
 
