@@ -88,6 +88,8 @@ QStringList baselineArguments(const QString& command)
         {QStringLiteral("odds"), {QStringLiteral("--goal"), QStringLiteral("pot:1@pocket-tr"), QStringLiteral("--noise"),
                                   QStringLiteral("fastfiz"), QStringLiteral("--samples"), QStringLiteral("20")}},
         {QStringLiteral("calibrate"), {QStringLiteral("--calibrate"), QStringLiteral("physics.mu_roll")}},
+        {QStringLiteral("solve"), {QStringLiteral("--goal"), QStringLiteral("pot:1@pocket-tr"), QStringLiteral("--samples"),
+                                   QStringLiteral("20"), QStringLiteral("--top"), QStringLiteral("1")}},
     };
     const auto it = needs.find(command);
     return it == needs.end() ? QStringList{} : it->second;
