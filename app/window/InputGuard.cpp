@@ -7,6 +7,8 @@
 #include <QDockWidget>
 #include <QKeyEvent>
 #include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QTextEdit>
 #include <QPointer>
 #include <QScrollBar>
 #include <QTimer>
@@ -45,6 +47,17 @@ QLineEdit* InputGuard::textOf(QObject* editor)
     return nullptr;
 }
 
+QScrollBar* InputGuard::pagedBy(QObject* widget, int key)
+{
+    if (key != Qt::Key_PageUp && key != Qt::Key_PageDown && key != Qt::Key_Home && key != Qt::Key_End) return nullptr;
+    auto* area = qobject_cast<QAbstractScrollArea*>(widget);
+    const auto* rich = qobject_cast<QTextEdit*>(widget);
+    const auto* plain = qobject_cast<QPlainTextEdit*>(widget);
+    if (!area || !((rich && rich->isReadOnly()) || (plain && plain->isReadOnly()))) return nullptr;
+    QScrollBar* bar = area->verticalScrollBar();
+    return bar && bar->maximum() > bar->minimum() ? bar : nullptr;
+}
+
 bool InputGuard::eventFilter(QObject* watched, QEvent* event)
 {
     if (!watched->isWidgetType()) return false;
@@ -63,6 +76,16 @@ bool InputGuard::eventFilter(QObject* watched, QEvent* event)
         }
         break;
     case QEvent::KeyPress: {
+        auto* press = static_cast<QKeyEvent*>(event);
+        if (press->modifiers() == Qt::NoModifier && guards(widget))
+            if (QScrollBar* bar = pagedBy(widget, press->key())) {
+                const int key = press->key();
+                bar->triggerAction(key == Qt::Key_PageUp     ? QAbstractSlider::SliderPageStepSub
+                                   : key == Qt::Key_PageDown ? QAbstractSlider::SliderPageStepAdd
+                                   : key == Qt::Key_Home     ? QAbstractSlider::SliderToMinimum
+                                                             : QAbstractSlider::SliderToMaximum);
+                return true;
+            }
         // Enter commits the field: its text is then the document's, and Ctrl+Z belongs to the document.
         const int key = static_cast<QKeyEvent*>(event)->key();
         if ((key == Qt::Key_Return || key == Qt::Key_Enter) && guards(widget))
@@ -74,6 +97,11 @@ bool InputGuard::eventFilter(QObject* watched, QEvent* event)
     }
     case QEvent::ShortcutOverride: {
         auto* key = static_cast<QKeyEvent*>(event);
+        if (key->modifiers() == Qt::NoModifier && guards(widget) && pagedBy(widget, key->key())) {
+            // A focused text's page keys scroll it: not the transport's shortcuts.
+            event->accept();
+            return true;
+        }
         const bool undoOrRedo = key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo) ||
                                 key->keyCombination() == QKeyCombination(Qt::ControlModifier | Qt::ShiftModifier, Qt::Key_Z) ||
                                 key->keyCombination() == QKeyCombination(Qt::ControlModifier, Qt::Key_Y);

@@ -9,10 +9,14 @@
 //   from the document): a line edit or spin box that keeps the focus after Enter no longer swallows
 //   Ctrl+Z for its own, empty, typing history. While the field holds uncommitted typing, Ctrl+Z
 //   undoes the typing, as in any text field.
+// - Page Up, Page Down, Home and End scroll a read-only text that has the focus (Explain, the
+//   lesson notes, the help); elsewhere they stay the transport's keys (previous and next event,
+//   start and end).
 
 #include <QObject>
 
 class QLineEdit;
+class QScrollBar;
 class QWidget;
 
 namespace cuelab {
@@ -34,6 +38,8 @@ protected:
 private:
     bool guards(const QWidget* widget) const;
     static QLineEdit* textOf(QObject* editor);
+    // The scroll bar a page key moves when `widget` (a read-only text) has the focus, else null.
+    static QScrollBar* pagedBy(QObject* widget, int key);
 
     QWidget* window_;
 };

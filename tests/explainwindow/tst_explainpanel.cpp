@@ -28,7 +28,9 @@
 #include <QMenu>
 #include <QPlainTextEdit>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QTabWidget>
+#include <QTextBrowser>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -184,6 +186,48 @@ private slots:
         QTRY_COMPARE(panel->figureLayout(), ExplainPanel::FigureLayout::Stacked);
         QCOMPARE(tabs->count(), 0);
         QTRY_VERIFY(conservation->isVisible());
+    }
+
+    // Page Down scrolls a focused derivation (it is the transport's next event elsewhere); another
+    // event opens at its heading.
+    void pageKeysScrollTheDerivation()
+    {
+        window_->resize(1024, 700);
+        const auto r = window_->document()->result();
+        const int hit = firstEvent(*r, EventKind::BallBall);
+        QVERIFY(hit >= 0);
+        window_->selection()->selectEvent(hit);
+        auto* text = panel_->findChild<QTextBrowser*>(QStringLiteral("explainText"));
+        QVERIFY(text && text->isVisible());
+        QScrollBar* bar = text->verticalScrollBar();
+        QTRY_VERIFY2(bar->maximum() > 0, "the derivation should need scrolling at 1024x700");
+        window_->activateWindow();
+        text->setFocus();
+        QTRY_VERIFY(text->hasFocus());
+        const double t = window_->playback()->time();
+        QCOMPARE(bar->value(), 0);
+        QTest::keyClick(text, Qt::Key_PageDown);
+        QVERIFY2(bar->value() > 0, "Page Down did not scroll the derivation");
+        QCOMPARE(panel_->shownEvent(), hit);
+        QCOMPARE(window_->playback()->time(), t);
+        QTest::keyClick(text, Qt::Key_End);
+        QCOMPARE(bar->value(), bar->maximum());
+        QTest::keyClick(text, Qt::Key_PageUp);
+        QVERIFY(bar->value() < bar->maximum());
+        QTest::keyClick(text, Qt::Key_Home);
+        QCOMPARE(bar->value(), 0);
+        QTest::keyClick(text, Qt::Key_End);
+        // Another event: at its heading.
+        const int roll = firstEvent(*r, EventKind::SlideToRoll);
+        window_->selection()->selectEvent(roll);
+        QCOMPARE(panel_->shownEvent(), roll);
+        QCOMPARE(bar->value(), 0);
+        // Elsewhere Page Down is still the next event.
+        window_->tableView()->setFocus();
+        QTRY_VERIFY(window_->tableView()->hasFocus());
+        window_->playback()->toStart();
+        QTest::keyClick(window_->tableView(), Qt::Key_PageDown);
+        QVERIFY(window_->playback()->time() > 0.0);
     }
 
     void followsTransport()

@@ -11,6 +11,7 @@
 #include "editor/Selection.h"
 
 #include <QLabel>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QTabWidget>
@@ -161,6 +162,10 @@ void ExplainPanel::refresh()
 void ExplainPanel::showEvent(int index)
 {
     const auto result = document_ ? document_->result() : nullptr;
+    // The same event again (a new result while dragging, or the language changed): the reader keeps
+    // his place. Another event opens at its heading.
+    const bool again = explanation_.has_value() && index == event_;
+    const int scrolled = again ? text_->verticalScrollBar()->value() : 0;
     explanation_.reset();
     if (result && index >= 0 && index < int(result->events.size())) {
         explanation_ = explain::explain(*result, index, document_->setup().shot);
@@ -180,6 +185,8 @@ void ExplainPanel::showEvent(int index)
     conservationShown_ = explanation_ && !explanation_->bodies.empty();
     showFigures();
     text_->setVisible(explanation_.has_value());
+    // Last: showing the text and its figures lays the text out again, which scrolls it.
+    text_->verticalScrollBar()->setValue(scrolled);
     emit explanationChanged();
 }
 
