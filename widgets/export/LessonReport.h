@@ -21,6 +21,10 @@
 
 namespace cuelab {
 
+namespace explain {
+struct Step;
+}
+
 class LessonReport {
 public:
     // Without the setup: no shot or physics table, no derivation of the cue strike's numbers.
@@ -31,6 +35,10 @@ public:
     // The collision the report derives: the struck ball's first contact with a ball, else the first
     // collision of any kind; -1 when the shot has none.
     static int keyCollision(const SimulationResult& result);
+
+    // One step of a derivation as the report prints it: rich text with real subscripts and
+    // superscripts (law, formula in italics, results), in the window's language.
+    static QString stepHtml(const explain::Step& step);
 
     static constexpr int kEventRowsPerPage = 40;
     // One row of the event table: #N (from 1, as everywhere a person reads), time, type, balls,
