@@ -8,6 +8,7 @@
 #include "KindDefaults.h"
 #include "LegalSetup.h"
 #include "SetupFile.h"
+#include "ShotCode.h"
 #include "SetupProblem.h"
 #include "resolve/CushionModel.h"
 #include "resolve/TableModel.h"
@@ -335,9 +336,23 @@ SimulationSettings parseSimulation(const QJsonValue& value)
 // "lesson": {"questions": [{"event": 3, "balls": ["cue", "1"], "prompt": "..."}]} (issue 22: predict,
 // then reveal). Each question is refused as a whole for a wrong shape; a ball it names must be one of
 // the setup's, so that a teacher's typo does not silently drop a ball from the question.
-std::vector<PredictQuestion> parseLesson(const QJsonValue& value, const std::vector<Ball>& balls)
+// "notes_written_for": the shot code of the setup the notes were written for (a code that does not
+// decode is refused, naming its problem).
+std::string parseNotesWrittenFor(const ObjectReader& in)
 {
-    const ObjectReader in(value, QStringLiteral("lesson"), {"questions"});
+    if (!in.has("notes_written_for")) return {};
+    const QJsonValue v = in.value("notes_written_for");
+    if (!v.isString()) wrongType(in.pathOf("notes_written_for"), "a shot code (a string)", v);
+    QString problem;
+    if (!parseShotCode(v.toString(), &problem))
+        refuse(in.pathOf("notes_written_for"), QStringLiteral("not a shot code CueLab can read: %1").arg(problem));
+    return v.toString().toStdString();
+}
+
+std::vector<PredictQuestion> parseLesson(const QJsonValue& value, const std::vector<Ball>& balls, std::string* notesWrittenFor)
+{
+    const ObjectReader in(value, QStringLiteral("lesson"), {"questions", "notes_written_for"});
+    *notesWrittenFor = parseNotesWrittenFor(in);
     std::vector<PredictQuestion> questions;
     if (!in.has("questions")) return questions;
     const QString path = in.pathOf("questions");
@@ -421,7 +436,7 @@ Setup parseDocument(const QJsonValue& document)
     setup.balls = parseBalls(in.required("balls"), makeTable(setup.table.kind));
     if (in.has("shot")) setup.shot = parseShot(in.value("shot"));
     if (in.has("simulation")) setup.simulation = parseSimulation(in.value("simulation"));
-    if (in.has("lesson")) setup.questions = parseLesson(in.value("lesson"), setup.balls);
+    if (in.has("lesson")) setup.questions = parseLesson(in.value("lesson"), setup.balls, &setup.notesWrittenFor);
     if (in.has("game")) setup.game = parseGame(in.value("game"));
     // The values and the geometry: the one validator's first problem, its message as it is.
     if (const std::optional<cuelab::SetupProblem> problem = firstSetupProblem(setup))

@@ -165,11 +165,20 @@ void writeShot(JsonWriter& w, const CueStrike& shot)
     w.endObject();
 }
 
-// The lesson's questions, only when there are any (a file without them stays as it was).
-void writeLesson(JsonWriter& w, const std::vector<PredictQuestion>& questions)
+// The lesson's questions and the setup its notes were written for, only when there are any (a file
+// without them stays as it was).
+void writeLesson(JsonWriter& w, const std::vector<PredictQuestion>& questions, const std::string& notesWrittenFor)
 {
     w.key("lesson");
     w.beginObject(Layout::Block);
+    if (!notesWrittenFor.empty()) {
+        w.key("notes_written_for");
+        w.value(notesWrittenFor);
+    }
+    if (questions.empty()) {
+        w.endObject();
+        return;
+    }
     w.key("questions");
     w.beginArray(Layout::Block);
     for (const PredictQuestion& q : questions) {
@@ -238,7 +247,7 @@ QByteArray serializeSetup(const Setup& setup)
         w.key("notes");
         w.value(setup.notes);
     }
-    if (!setup.questions.empty()) writeLesson(w, setup.questions);
+    if (!setup.questions.empty() || !setup.notesWrittenFor.empty()) writeLesson(w, setup.questions, setup.notesWrittenFor);
     writeTable(w, setup.table);
     writePhysics(w, setup.physics);
     w.key("balls");

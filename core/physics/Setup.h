@@ -28,6 +28,10 @@ struct Setup {
     std::optional<CueStrike> shot;
     SimulationSettings simulation;
     std::vector<PredictQuestion> questions;  // the lesson's predict-then-reveal questions (file: lesson.questions)
+    // The shot code ("cuelab:1:...") of the setup the notes were written for, when the setup changed
+    // since (file: lesson.notes_written_for); "" = the notes describe this setup. The window flags
+    // such notes; the file keeps the flag across a save and a reload.
+    std::string notesWrittenFor;
     std::optional<GameSpec> game;            // the rules that judge the shot (file: game); none = no verdict
 };
 

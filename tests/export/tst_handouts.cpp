@@ -265,6 +265,26 @@ void TestHandouts::lessonFlagsNotesThatNoLongerMatch()
     QVERIFY(panel.staleFlag()->isHidden());
     document.undoStack()->redo();
     QVERIFY(!panel.staleFlag()->isHidden());
+    // Saved and opened again, the notes are still flagged, with the same changes.
+    {
+        const QString flag = panel.staleFlag()->text();
+        const QString path = dir_.filePath(QStringLiteral("stale-notes.json"));
+        QVERIFY2(document.save(path, &error), qPrintable(error));
+        QVERIFY(readAll(path).contains("\"notes_written_for\": \"cuelab:1:"));
+        Document reopened;
+        QVERIFY2(reopened.load(path, &error), qPrintable(error));
+        LessonPanel again(&reopened);
+        QVERIFY(!again.staleFlag()->isHidden());
+        QCOMPARE(again.staleFlag()->text(), flag);
+        QVERIFY(reopened.setup().notesWrittenFor.empty());  // a record of the file, not of the setup
+        // Turned back to the shot the notes describe and saved: the record goes.
+        CueStrike back = *reopened.setup().shot;
+        back.headingDeg -= 2.0;
+        QVERIFY(reopened.setShot(back, QStringLiteral("Heading"), 0));
+        QVERIFY(again.staleFlag()->isHidden());
+        QVERIFY2(reopened.save(path, &error), qPrintable(error));
+        QVERIFY(!readAll(path).contains("notes_written_for"));
+    }
     // Rewriting the notes for the shot as it is clears the flag (one undo step).
     panel.notesEdit()->setPlainText(QStringLiteral("A cut with 2° more heading."));
     panel.commit();

@@ -73,6 +73,10 @@ void TestSetupRefusals::refused_data()
     QTest::newRow("duplicate key, one escaped") << withMembers(R"("physics": {"ball_ball": {"model": "frictional", "mod\u0065l": "frictionless"}})")
                                                 << "physics.ball_ball.model" << "duplicate key";
     QTest::newRow("unknown top-level key") << withMembers(R"("colour": "green")") << "colour" << "unknown key";
+    QTest::newRow("notes written for: a number") << withMembers(R"("lesson": {"notes_written_for": 3})")
+                                                 << "lesson.notes_written_for" << "expected a shot code";
+    QTest::newRow("notes written for: a broken code") << withMembers(R"("lesson": {"notes_written_for": "cuelab:1:AAAA"})")
+                                                      << "lesson.notes_written_for" << "not a shot code CueLab can read";
     QTest::newRow("name not a string") << withMembers(R"("name": 3)") << "name" << "expected a string";
     QTest::newRow("notes null") << withMembers(R"("notes": null)") << "notes" << "found null";
 

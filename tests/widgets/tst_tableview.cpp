@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <set>
 
 using namespace cuelab;
@@ -79,6 +80,7 @@ private slots:
     void newSceneOnTheSameTableRedrawsTheCue();
     void frameRateOnlyWhileAnimating();
     void settlesAfterTheCameraMoves();
+    void zoomToTheSelectedEvent();
     void screenshotShowsTheBalls_data();
     void screenshotShowsTheBalls();
     void screenshotRefusesBadInput();
@@ -332,6 +334,38 @@ void TestTableView::settlesAfterTheCameraMoves()
     QTest::qWait(500);
     QCOMPARE(frames.size(), settled);
     QCOMPARE(view.lastGlError(), 0u);
+}
+
+// Zoom to Selection with an event selected frames that event: its balls where it happens, close up
+// (it did nothing before: no ball selected meant the whole table).
+void TestTableView::zoomToTheSelectedEvent()
+{
+    Setup setup = threeBalls();
+    CueStrike shot;
+    shot.ball = "cue";
+    shot.speed = 2.0;
+    shot.headingDeg = std::atan2(0.4 - 0.635, 1.6 - 0.6) * 180.0 / std::numbers::pi;  // full on the 1
+    setup.shot = shot;
+    TableView view;
+    view.resize(640, 400);
+    const ViewScene scene = sceneOf(setup);
+    view.setScene(scene);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.zoomToSelection(false);  // nothing selected: the whole table
+    const float whole = view.camera().pose().distance;
+    int hit = -1;
+    for (std::size_t i = 0; i < scene.result->events.size() && hit < 0; ++i)
+        if (scene.result->events[i].kind == EventKind::BallBall) hit = int(i);
+    QVERIFY(hit >= 0);
+    view.setHighlightedEvent(hit);
+    view.zoomToSelection(false);
+    const Event& e = scene.result->events[std::size_t(hit)];
+    const Vec2 mid = (scene.result->stateAt(e.balls[0], e.time).position + scene.result->stateAt(e.balls[1], e.time).position) / 2.0;
+    const QVector3D target = view.camera().pose().target;
+    QVERIFY2(std::abs(target.x() - mid.x()) < 1e-4 && std::abs(target.y() - mid.y()) < 1e-4,
+             qPrintable(QStringLiteral("%1, %2").arg(target.x()).arg(target.y())));
+    QVERIFY2(view.camera().pose().distance < whole / 3.0, qPrintable(QString::number(view.camera().pose().distance)));
 }
 
 void TestTableView::screenshotShowsTheBalls_data()

@@ -206,9 +206,31 @@ QString Document::suggestedSavePath(const QString& lastDir) const
     return QDir(dir).filePath((base.isEmpty() ? tr("untitled") : base) + QStringLiteral(".json"));
 }
 
+namespace {
+
+// The part of a setup that notes describe: everything but the name, the notes, the questions and the
+// record of the setup they were written for.
+Setup describedPart(Setup s)
+{
+    s.name.clear();
+    s.notes.clear();
+    s.questions.clear();
+    s.notesWrittenFor.clear();
+    return s;
+}
+
+}  // namespace
+
 bool Document::save(const QString& path, QString* error)
 {
-    if (!io::saveSetup(setup_, path, error)) return false;
+    // Notes written for another setup than this one say so in the file (lesson.notes_written_for):
+    // the flag over them comes back with the file.
+    Setup saved = setup_;
+    const Setup written = describedPart(notesSetup_);
+    saved.notesWrittenFor.clear();
+    if (!setup_.notes.empty() && io::serializeSetup(written) != io::serializeSetup(describedPart(setup_)))
+        saved.notesWrittenFor = io::shotCode(written).toStdString();
+    if (!io::saveSetup(saved, path, error)) return false;
     const QString absolute = QFileInfo(path).absoluteFilePath();
     undoStack_->setClean();
     example_ = isExampleFolder(QFileInfo(absolute).absolutePath());  // saved elsewhere: the user's own file now
@@ -225,8 +247,18 @@ void Document::replace(const Setup& setup, const QString& path, const QString& t
     ++mergeSession_;
     filePath_ = path;
     untitledTitle_ = title;
-    notesSetup_ = setup;
-    applySetup(setup);
+    // The notes were written for this setup, or for the one the file names (lesson.notes_written_for).
+    Setup loaded = setup;
+    loaded.notesWrittenFor.clear();
+    Setup written = loaded;
+    if (!setup.notesWrittenFor.empty())
+        if (std::optional<Setup> code = io::parseShotCode(QString::fromStdString(setup.notesWrittenFor), nullptr)) {
+            written = describedPart(*code);
+            written.notes = loaded.notes;
+        }
+    setup_.notes = loaded.notes;  // the same notes: applySetup keeps notesSetup_
+    notesSetup_ = written;
+    applySetup(loaded);
     emit filePathChanged(filePath_);
     emit modifiedChanged(false);
     emit documentReplaced();

@@ -178,12 +178,6 @@ void TableView::zoomToSelection(bool animated)
 {
     if (!scene_.result) return;
     const SimulationResult& r = *scene_.result;
-    if (selectedBall_ < 0 || static_cast<std::size_t>(selectedBall_) >= r.balls.size()) {
-        setCameraPreset(CameraPreset::Top, animated);
-        return;
-    }
-    // The box around the ball's whole path, sampled at its segment starts and in between.
-    const auto i = static_cast<std::size_t>(selectedBall_);
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
     auto include = [&](const Vec2& p) {
         x0 = std::min(x0, p.x());
@@ -191,6 +185,26 @@ void TableView::zoomToSelection(bool animated)
         y0 = std::min(y0, p.y());
         y1 = std::max(y1, p.y());
     };
+    // A selected event: its balls where it happens, with room around them for its arrows and labels.
+    if (highlightedEvent_ >= 0 && static_cast<std::size_t>(highlightedEvent_) < r.events.size()) {
+        const Event& e = r.events[static_cast<std::size_t>(highlightedEvent_)];
+        double radius = 0.0;
+        for (const int b : {e.balls[0], e.kind == EventKind::BallBall ? e.balls[1] : -1}) {
+            if (b < 0 || static_cast<std::size_t>(b) >= r.balls.size()) continue;
+            include(r.timelines.empty() ? r.balls[static_cast<std::size_t>(b)].state.position : r.stateAt(b, e.time).position);
+            radius = std::max(radius, r.balls[static_cast<std::size_t>(b)].radius);
+        }
+        if (radius > 0.0) {
+            frameBox(x0, y0, x1, y1, 8.0 * radius, animated);
+            return;
+        }
+    }
+    if (selectedBall_ < 0 || static_cast<std::size_t>(selectedBall_) >= r.balls.size()) {
+        setCameraPreset(CameraPreset::Top, animated);
+        return;
+    }
+    // The box around the ball's whole path, sampled at its segment starts and in between.
+    const auto i = static_cast<std::size_t>(selectedBall_);
     include(r.balls[i].state.position);
     if (i < r.timelines.size()) {
         const double end = std::max(r.endTime, 0.0);
@@ -200,7 +214,11 @@ void TableView::zoomToSelection(bool animated)
             include(s.position);
         }
     }
-    const double margin = 4.0 * r.balls[i].radius;
+    frameBox(x0, y0, x1, y1, 4.0 * r.balls[i].radius, animated);
+}
+
+void TableView::frameBox(double x0, double y0, double x1, double y1, double margin, bool animated)
+{
     const double w = x1 - x0 + 2.0 * margin, h = y1 - y0 + 2.0 * margin;
     CameraPose to = camera_.pose();
     to.target = QVector3D(static_cast<float>((x0 + x1) / 2.0), static_cast<float>((y0 + y1) / 2.0), 0.0f);

@@ -60,7 +60,8 @@ public:
     // Cameras. A preset (animated or not) stays fitted to the view when it is resized, until the user
     // moves the camera. Following keeps the selected ball at the centre of the view as time runs
     // (the camera's direction and distance kept); moving the camera by hand stops it.
-    // zoomToSelection frames the selected ball's whole path (or the table when none is selected).
+    // zoomToSelection frames the selected event (its balls where it happens, with room for its arrows
+    // and labels), else the selected ball's whole path, else the whole table.
     void setCameraPreset(CameraPreset preset, bool animated = true);
     void setFollowSelectedBall(bool follow);
     bool followSelectedBall() const { return follow_; }
@@ -134,6 +135,8 @@ private:
     ViewScene scene_;
     double time_ = 0.0;  // s
     int selectedBall_ = -1;
+    // Moves the camera (keeping its direction) to frame the table box [x0, x1] x [y0, y1] (m) with a margin.
+    void frameBox(double x0, double y0, double x1, double y1, double margin, bool animated);
     int highlightedEvent_ = -1;
     std::bitset<kOverlayCount> overlays_;
     BallScope pathScope_ = BallScope::All;
