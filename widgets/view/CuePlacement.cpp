@@ -34,11 +34,8 @@ bool cueClearsBalls(const std::vector<Ball>& balls, int struck, const Vec3& tip,
     return true;
 }
 
-std::optional<CuePose> cuePose(const SimulationResult& result, const std::vector<Ball>& balls, const CueStrike& shot)
+Vec3 tipContactPoint(const Ball& ball, const CueStrike& shot)
 {
-    const int index = result.ballIndex(shot.ball);
-    if (index < 0 || static_cast<std::size_t>(index) >= balls.size()) return std::nullopt;
-    const Ball& ball = balls[static_cast<std::size_t>(index)];
     const double r = ball.radius;
     const double h = shot.headingDeg * std::numbers::pi / 180.0;
     const Vec3 d(std::cos(h), std::sin(h), 0.0);
@@ -47,7 +44,18 @@ std::optional<CuePose> cuePose(const SimulationResult& result, const std::vector
     const double a = std::clamp(shot.side, -0.9, 0.9) * r, b = std::clamp(shot.height, -0.9, 0.9) * r;
     const double depth = std::sqrt(std::max(0.0, r * r - a * a - b * b));
     const Vec3 centre(ball.state.position.x(), ball.state.position.y(), r);
-    const Vec3 contact = centre - depth * d + a * right + b * up;
+    return Vec3(centre - depth * d + a * right + b * up);
+}
+
+std::optional<CuePose> cuePose(const SimulationResult& result, const std::vector<Ball>& balls, const CueStrike& shot)
+{
+    const int index = result.ballIndex(shot.ball);
+    if (index < 0 || static_cast<std::size_t>(index) >= balls.size()) return std::nullopt;
+    const Ball& ball = balls[static_cast<std::size_t>(index)];
+    const double h = shot.headingDeg * std::numbers::pi / 180.0;
+    const Vec3 d(std::cos(h), std::sin(h), 0.0);
+    const Vec3 up(0.0, 0.0, 1.0);
+    const Vec3 contact = tipContactPoint(ball, shot);
 
     auto along = [&d, &up](double elevationDeg) {
         const double e = elevationDeg * std::numbers::pi / 180.0;
