@@ -17,9 +17,15 @@
 #include "ExamplePath.h"
 #include "SetupFile.h"
 
+#include <QAction>
+#include <QDir>
+#include <QHelpEvent>
 #include <QLabel>
 #include <QMouseEvent>
+#include <QPainter>
+#include <QPixmap>
 #include <QSettings>
+#include <QToolTip>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
@@ -82,6 +88,8 @@ private slots:
     void keysStepTheAim();
     void cursorSaysWhatAPressDrags();
     void ballDragAndVelocityDragStillWork();
+    void screenshotsOfAimingByDrag_data();
+    void screenshotsOfAimingByDrag();
 
 private:
     void open(MainWindow& w);
@@ -302,7 +310,13 @@ void TestAimDrag::cursorSaysWhatAPressDrags()
     QCOMPARE(hoverAt(at(*view, g->ghostBall)), Qt::SizeAllCursor);                    // the ghost ball
     QCOMPARE(hoverAt(at(*view, Vec2(kCue + Vec2(0.0, 0.3)))), Qt::ArrowCursor);       // bare cloth
     QCOMPARE(hoverAt(at(*view, kCue)), Qt::OpenHandCursor);                           // a ball to move
-    QVERIFY(AimDrag::toolTipFor(AimHandle::Cue).contains(QStringLiteral("Ctrl+Left")));
+    // The tool tip over the cue says how to drag it and names the keys.
+    const QPoint cue = at(*view, Vec2(kCue - 0.4 * along(0.0))).toPoint();
+    hoverAt(cue);
+    QHelpEvent help(QEvent::ToolTip, cue, view->mapToGlobal(cue));
+    QCoreApplication::sendEvent(view, &help);
+    QTRY_VERIFY(QToolTip::isVisible());
+    QVERIFY2(QToolTip::text().contains(QStringLiteral("Ctrl+Left")), qPrintable(QToolTip::text()));
     QCOMPARE(view->aim().handleAt(at(*view, Vec2(kCue + Vec2(0.0, 0.3)))), AimHandle::None);
     // After the shot (t > 0) the cue is not drawn: nothing to aim with.
     view->setTime(0.2);
@@ -337,6 +351,62 @@ void TestAimDrag::ballDragAndVelocityDragStillWork()
     d->undoStack()->undo();
     d->undoStack()->undo();
     QCOMPARE(io::serializeSetup(d->setup()), io::serializeSetup(start));
+}
+
+void TestAimDrag::screenshotsOfAimingByDrag_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<bool>("player");
+    QTest::newRow("turn-1024x700") << QSize(1024, 700) << false;
+    QTest::newRow("turn-1920x1080") << QSize(1920, 1080) << false;
+    QTest::newRow("tip-1024x700") << QSize(1024, 700) << true;
+    QTest::newRow("tip-1920x1080") << QSize(1920, 1080) << true;
+}
+
+// The user guide's pictures of a drag in progress (docs/user-guide/aim-drag-*.png): the window
+// grabbed with the button still down. Only when CUELAB_SCREENSHOT_DIR names a folder to write to.
+void TestAimDrag::screenshotsOfAimingByDrag()
+{
+    QFETCH(QSize, size);
+    QFETCH(bool, player);
+    const QString dir = qEnvironmentVariable("CUELAB_SCREENSHOT_DIR");
+    if (dir.isEmpty()) QSKIP("set CUELAB_SCREENSHOT_DIR to write the user guide's screenshots");
+    QSettings().setValue(QStringLiteral("help/firstStartTipSeen"), true);  // the tip would cover the view
+    MainWindow w;
+    open(w);
+    w.resize(size);
+    QTest::qWait(300);
+    TableView* view = w.tableView();
+    if (auto* aimOverlay = w.findChild<QAction*>(QStringLiteral("aimOverlayAction"))) aimOverlay->setChecked(true);
+    QList<QPointF> path;
+    if (player) {
+        view->setCameraPreset(CameraPreset::Player, false);
+        QCoreApplication::processEvents();
+        const auto tipAt = [](double side, double height) {
+            const double depth = kR * std::sqrt(1.0 - side * side - height * height);
+            return Vec3(kCue.x() - depth, kCue.y() - side * kR, kR + height * kR);
+        };
+        for (int k = 0; k <= 10; ++k) path << at(*view, tipAt(-0.02 * k, 0.4 - 0.05 * k));  // to (-0.2, -0.1)
+    } else {
+        view->setCameraPreset(CameraPreset::Top, false);
+        QCoreApplication::processEvents();
+        for (int k = 0; k <= 10; ++k) path << at(*view, Vec2(kCue - 1.0 * along(-1.5 * k / 10.0)));  // a thinner cut
+    }
+    send(view, QEvent::MouseButtonPress, path.front(), Qt::LeftButton, Qt::LeftButton);
+    QVERIFY(view->aim().dragged() != AimHandle::None);
+    for (qsizetype i = 1; i < path.size(); ++i) send(view, QEvent::MouseMove, path[i], Qt::NoButton, Qt::LeftButton);
+    QTRY_VERIFY(w.document()->isResultCurrent());
+    QTest::qWait(400);  // the panels' feeds and the view catch up
+    const QString file = QDir(dir).filePath(QStringLiteral("aim-drag-%1.png").arg(QString::fromLatin1(QTest::currentDataTag())));
+    // The window, with the view's own frame over it (the window's grab leaves out what the view
+    // paints over its OpenGL: the labels, the tip mark, the readout).
+    QPixmap shot = w.grab();
+    {
+        QPainter painter(&shot);
+        painter.drawImage(QRect(view->mapTo(&w, QPoint(0, 0)), view->size()), view->grabFramebuffer());
+    }
+    QVERIFY(shot.save(file));
+    send(view, QEvent::MouseButtonRelease, path.back(), Qt::LeftButton, Qt::NoButton);
 }
 
 QTEST_MAIN(TestAimDrag)

@@ -395,7 +395,6 @@ QString AimDrag::readout() const
 
 void AimDrag::paint(QPainter& painter, AimHandle hovered) const
 {
-    painter.setRenderHint(QPainter::Antialiasing);
     const std::optional<Struck> s = struck();
     if (const std::optional<Vec3> mark = tipMark(); mark && s) {
         const Ball& ball = s->ball;
@@ -406,12 +405,15 @@ void AimDrag::paint(QPainter& painter, AimHandle hovered) const
         if (at && c && rim) {
             const double radius = std::max(kTipMarkMinPx, kTipMarkRadius * QLineF(*c, *rim).length());
             const bool hot = hovered == AimHandle::Tip || handle_ == AimHandle::Tip;
+            painter.save();  // the hint is this mark's alone: set on the view's painter it would stay in the GL state
+            painter.setRenderHint(QPainter::Antialiasing);
             painter.setPen(QPen(QColor(20, 20, 20), 1.5));
             painter.setBrush(hot ? QColor(255, 200, 40) : QColor(70, 160, 255));
             painter.drawEllipse(*at, radius, radius);
             painter.setPen(QPen(Qt::white, 1.0));
             painter.setBrush(Qt::NoBrush);
             painter.drawEllipse(*at, radius + 1.5, radius + 1.5);
+            painter.restore();
         }
     }
     const QString text = readout();

@@ -418,8 +418,9 @@ void TableView::leaveEvent(QEvent* event)
 bool TableView::event(QEvent* event)
 {
     if (event->type() == QEvent::ToolTip) {
+        // What the cursor is over as the last move found it (a ball in front of the cue wins).
         const auto* help = static_cast<QHelpEvent*>(event);
-        const QString tip = AimDrag::toolTipFor(aim_->handleAt(help->pos()));
+        const QString tip = AimDrag::toolTipFor(interaction_->hover(help->pos()));
         if (tip.isEmpty()) {
             QToolTip::hideText();
             event->ignore();
