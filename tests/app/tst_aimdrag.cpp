@@ -348,6 +348,12 @@ void TestAimDrag::ballDragAndVelocityDragStillWork()
     drag(view, path, Qt::ControlModifier);
     QVERIFY(d->setup().balls[1].state.velocity.x() > 0.1);
     QCOMPARE(d->undoStack()->count(), 2);
+    // A drag on bare cloth still orbits the camera, and edits nothing.
+    const QQuaternion before = view->camera().pose().rotation;
+    const QPointF bare = at(*view, Vec2(kCue + Vec2(0.0, -0.35)));
+    drag(view, {bare, bare + QPointF(20, 0), bare + QPointF(60, 10)});
+    QVERIFY(!qFuzzyCompare(view->camera().pose().rotation, before));
+    QCOMPARE(d->undoStack()->count(), 2);
     d->undoStack()->undo();
     d->undoStack()->undo();
     QCOMPARE(io::serializeSetup(d->setup()), io::serializeSetup(start));
