@@ -1,7 +1,6 @@
 #include "AimDrag.h"
 
 #include "CuePlacement.h"
-#include "CueStickMesh.h"
 #include "TableView.h"
 
 #include "Aim.h"
@@ -118,9 +117,7 @@ bool AimDrag::overCue(const QPointF& pos) const
             last.reset();
             continue;
         }
-        // The stick's drawn half-width there (it tapers from tip to butt like CueStickMesh).
-        const double radius = 0.0065 + 0.008 * at / kCueLength;
-        const std::optional<QPointF> edge = view_.widgetPointOf(p + static_cast<float>(radius) * across);
+        const std::optional<QPointF> edge = view_.widgetPointOf(p + static_cast<float>(cueStickRadius(at)) * across);
         const double grab = std::max(kCueGrabPx, edge ? QLineF(*here, *edge).length() + 2.0 : 0.0);
         if (distanceToSegment(pos, last.value_or(*here), *here) <= grab) return true;
         last = here;

@@ -16,11 +16,11 @@ constexpr double kTipRadius = 0.0065, kButtRadius = 0.0145;  // m, as CueStickMe
 constexpr double kClearance = 0.002;                         // m kept between the stick and a ball
 constexpr double kMaxElevationDeg = 85.0;
 
-double stickRadius(double along) { return kTipRadius + (kButtRadius - kTipRadius) * along / kCueLength; }
-
 QVector3D q(const Vec3& v) { return QVector3D(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())); }
 
 }  // namespace
+
+double cueStickRadius(double along) { return kTipRadius + (kButtRadius - kTipRadius) * along / kCueLength; }
 
 bool cueClearsBalls(const std::vector<Ball>& balls, int struck, const Vec3& tip, const Vec3& along, double length)
 {
@@ -29,7 +29,7 @@ bool cueClearsBalls(const std::vector<Ball>& balls, int struck, const Vec3& tip,
         const Vec3 c(balls[j].state.position.x(), balls[j].state.position.y(), balls[j].radius);
         const double s = std::clamp((c - tip).dot(along), 0.0, length);
         const double distance = (c - (tip + s * along)).norm();
-        if (distance < balls[j].radius + stickRadius(s) + kClearance) return false;
+        if (distance < balls[j].radius + cueStickRadius(s) + kClearance) return false;
     }
     return true;
 }

@@ -32,6 +32,10 @@ Vec3 tipContactPoint(const Ball& ball, const CueStrike& shot);
 // pocketed ones are ignored.
 std::optional<CuePose> cuePose(const SimulationResult& result, const std::vector<Ball>& balls, const CueStrike& shot);
 
+// m: the stick's radius `along` metres from its tip (tapering from 6.5 mm at the tip to 14.5 mm at
+// the butt, as CueStickMesh draws it).
+double cueStickRadius(double along);
+
 // Whether a stick from `tip` along the unit `along` over `length` metres keeps clear of every ball
 // but `struck` (the stick's radius tapering from tip to butt, plus a hair).
 bool cueClearsBalls(const std::vector<Ball>& balls, int struck, const Vec3& tip, const Vec3& along, double length);
