@@ -105,17 +105,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(view_, &TableView::ballPlacementAdjusted, this, [this](int, const QString& message) {
         statusBar()->showMessage(message, window::kStatusMessageMs);
     });
-    // Dragging a velocity arrow at t = 0 sets that ball's initial velocity: one undo step per drag.
-    connect(view_, &TableView::ballVelocityDragged, this, [this](int index, double vx, double vy) {
-        const auto& balls = document_->setup().balls;
-        if (index < 0 || index >= static_cast<int>(balls.size())) return;
-        Ball ball = balls[static_cast<std::size_t>(index)];
-        ball.state.velocity = Vec2(vx, vy);
-        constexpr int kVelocityDragField = 15;  // Document::setBall merge field of this gesture
-        document_->setBall(index, ball, tr("Set the velocity of ball %1").arg(QString::fromStdString(ball.id)),
-                           kVelocityDragField);
-    });
-    connect(view_, &TableView::ballVelocityDragFinished, document_, &Document::endMerge);
+    // Dragging a velocity arrow at t = 0 sets that ball's initial velocity: features/EditorFeature.cpp.
     connect(document_, &Document::setupChanged, this, [this] {
         // The shot's cue and aim line follow the setup at once; the balls follow with the result.
         ViewScene scene = view_->scene();

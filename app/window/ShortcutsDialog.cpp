@@ -67,6 +67,10 @@ QList<ShortcutsDialog::Row> ShortcutsDialog::mouseRows()
     return {
         {view, tr("Select a ball"), tr("Click the ball")},
         {view, tr("Move a ball (at t = 0)"), tr("Drag the ball; it lands on the nearest free spot")},
+        {view, tr("Aim: turn the cue (at t = 0)"), tr("Drag across the cue, or drag the ghost ball")},
+        {view, tr("Cue speed"), tr("Drag along the cue: back for faster, forward for slower")},
+        {view, tr("Strike off centre (side, height)"), tr("Drag the tip mark on the ball in the player view (Ctrl+2)")},
+        {view, tr("Fine-tune the aim (view focused)"), tr("Ctrl+Left/Right: heading ±0.1°; Ctrl+Up/Down: speed ±0.1 m/s; Shift ×10, Alt ×0.1")},
         {view, tr("Orbit the camera"), tr("Drag on the cloth or the background")},
         {view, tr("Pan the camera"), tr("Right or middle drag, or Shift + drag")},
         {view, tr("Zoom towards the cursor"), tr("Mouse wheel")},

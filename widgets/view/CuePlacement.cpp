@@ -16,11 +16,11 @@ constexpr double kTipRadius = 0.0065, kButtRadius = 0.0145;  // m, as CueStickMe
 constexpr double kClearance = 0.002;                         // m kept between the stick and a ball
 constexpr double kMaxElevationDeg = 85.0;
 
-double stickRadius(double along) { return kTipRadius + (kButtRadius - kTipRadius) * along / kCueLength; }
-
 QVector3D q(const Vec3& v) { return QVector3D(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())); }
 
 }  // namespace
+
+double cueStickRadius(double along) { return kTipRadius + (kButtRadius - kTipRadius) * along / kCueLength; }
 
 bool cueClearsBalls(const std::vector<Ball>& balls, int struck, const Vec3& tip, const Vec3& along, double length)
 {
@@ -29,16 +29,13 @@ bool cueClearsBalls(const std::vector<Ball>& balls, int struck, const Vec3& tip,
         const Vec3 c(balls[j].state.position.x(), balls[j].state.position.y(), balls[j].radius);
         const double s = std::clamp((c - tip).dot(along), 0.0, length);
         const double distance = (c - (tip + s * along)).norm();
-        if (distance < balls[j].radius + stickRadius(s) + kClearance) return false;
+        if (distance < balls[j].radius + cueStickRadius(s) + kClearance) return false;
     }
     return true;
 }
 
-std::optional<CuePose> cuePose(const SimulationResult& result, const std::vector<Ball>& balls, const CueStrike& shot)
+Vec3 tipContactPoint(const Ball& ball, const CueStrike& shot)
 {
-    const int index = result.ballIndex(shot.ball);
-    if (index < 0 || static_cast<std::size_t>(index) >= balls.size()) return std::nullopt;
-    const Ball& ball = balls[static_cast<std::size_t>(index)];
     const double r = ball.radius;
     const double h = shot.headingDeg * std::numbers::pi / 180.0;
     const Vec3 d(std::cos(h), std::sin(h), 0.0);
@@ -47,7 +44,18 @@ std::optional<CuePose> cuePose(const SimulationResult& result, const std::vector
     const double a = std::clamp(shot.side, -0.9, 0.9) * r, b = std::clamp(shot.height, -0.9, 0.9) * r;
     const double depth = std::sqrt(std::max(0.0, r * r - a * a - b * b));
     const Vec3 centre(ball.state.position.x(), ball.state.position.y(), r);
-    const Vec3 contact = centre - depth * d + a * right + b * up;
+    return Vec3(centre - depth * d + a * right + b * up);
+}
+
+std::optional<CuePose> cuePose(const SimulationResult& result, const std::vector<Ball>& balls, const CueStrike& shot)
+{
+    const int index = result.ballIndex(shot.ball);
+    if (index < 0 || static_cast<std::size_t>(index) >= balls.size()) return std::nullopt;
+    const Ball& ball = balls[static_cast<std::size_t>(index)];
+    const double h = shot.headingDeg * std::numbers::pi / 180.0;
+    const Vec3 d(std::cos(h), std::sin(h), 0.0);
+    const Vec3 up(0.0, 0.0, 1.0);
+    const Vec3 contact = tipContactPoint(ball, shot);
 
     auto along = [&d, &up](double elevationDeg) {
         const double e = elevationDeg * std::numbers::pi / 180.0;

@@ -23,9 +23,18 @@ struct CuePose {
     bool raised = false;         // the drawn elevation differs from the shot's
 };
 
+// Where the cue tip meets `ball` (its setup place, centre at z = R): on its surface, facing the cue, offset
+// by the shot's side (to the player's right) and height (up), each clamped to ±0.9 R. The table view
+// draws its tip mark there and drags it (AimDrag).
+Vec3 tipContactPoint(const Ball& ball, const CueStrike& shot);
+
 // nullopt when the shot names no ball of the result. `balls` are where the balls stand (the setup);
 // pocketed ones are ignored.
 std::optional<CuePose> cuePose(const SimulationResult& result, const std::vector<Ball>& balls, const CueStrike& shot);
+
+// m: the stick's radius `along` metres from its tip (tapering from 6.5 mm at the tip to 14.5 mm at
+// the butt, as CueStickMesh draws it).
+double cueStickRadius(double along);
 
 // Whether a stick from `tip` along the unit `along` over `length` metres keeps clear of every ball
 // but `struck` (the stick's radius tapering from tip to butt, plus a hair).

@@ -75,6 +75,12 @@ void TableInteraction::press(QMouseEvent* event)
         emit view_.ballClicked(arrow);
         return;
     }
+    const AimHandle aim = view_.aim_->handleAt(event->position());
+    if (aim == AimHandle::Tip && view_.aim_->begin(aim, event->position())) {
+        mode_ = Mode::Aim;
+        view_.setCursor(AimDrag::cursorFor(aim, true));
+        return;
+    }
     const int ball = view_.pickBall(event->position());
     if (ball >= 0) {
         emit view_.ballClicked(ball);
@@ -97,6 +103,11 @@ void TableInteraction::press(QMouseEvent* event)
                 grabOffset_ = *p - QVector3D(static_cast<float>(c.x()), static_cast<float>(c.y()), r);
             return;
         }
+    }
+    if (ball < 0 && aim != AimHandle::None && view_.aim_->begin(aim, event->position())) {
+        mode_ = Mode::Aim;
+        view_.setCursor(AimDrag::cursorFor(aim, true));
+        return;
     }
     mode_ = Mode::Orbit;
 }
@@ -121,6 +132,7 @@ void TableInteraction::move(QMouseEvent* event)
         break;
     case Mode::Ball: dragBall(pos); break;
     case Mode::Velocity: dragVelocity(pos); break;
+    case Mode::Aim: view_.aim_->drag(pos); break;
     }
     lastPos_ = pos;
 }
@@ -169,6 +181,10 @@ void TableInteraction::release(QMouseEvent* event)
         reportPlacement();
     }
     if (mode_ == Mode::Velocity && moved_) emit view_.ballVelocityDragFinished(ball_);
+    if (mode_ == Mode::Aim) {
+        view_.aim_->end();
+        view_.setCursor(AimDrag::cursorFor(view_.aim_->handleAt(event->position()), false));
+    }
     if (mode_ == Mode::Orbit && !moved_ && event->button() == Qt::LeftButton && view_.pickBall(event->position()) < 0)
         emit view_.ballClicked(-1);
     const bool hadVelocity = velocity_.has_value();
@@ -200,6 +216,19 @@ void TableInteraction::reportPlacement()
     const QString distance = moved >= 0.1 ? tr("%1 m").arg(moved, 0, 'f', 2) : tr("%1 mm").arg(moved * 1e3, 0, 'f', 0);
     emit view_.ballPlacementAdjusted(ball_, tr("Ball \"%1\" placed %2 from the cursor, on the nearest free spot: %3.")
                                                 .arg(QString::fromStdString(ball.id), distance, why));
+}
+
+AimHandle TableInteraction::hover(const QPointF& pos)
+{
+    // What a press there would drag, in the press's order: a velocity arrow's head, the tip mark, a
+    // ball (at t = 0), then the ghost ball or the cue.
+    AimHandle aim = velocityArrowUnder(pos) >= 0 ? AimHandle::None : view_.aim_->handleAt(pos);
+    const bool ball = velocityArrowUnder(pos) >= 0 ||
+                      (aim != AimHandle::Tip && view_.time() <= 0.0 && view_.pickBall(pos) >= 0);
+    if (ball) aim = AimHandle::None;
+    const Qt::CursorShape shape = ball ? Qt::OpenHandCursor : AimDrag::cursorFor(aim, false);
+    if (view_.cursor().shape() != shape) view_.setCursor(shape);
+    return aim;
 }
 
 void TableInteraction::doubleClick(QMouseEvent* event)

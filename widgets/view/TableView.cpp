@@ -1,5 +1,6 @@
 #include "TableView.h"
 
+#include "AimDrag.h"
 #include "CameraAnimator.h"
 #include "FrameRateMeter.h"
 #include "OverlayLabels.h"
@@ -7,11 +8,14 @@
 #include "TableInteraction.h"
 #include "TableRenderer.h"
 
+#include <QHelpEvent>
+#include <QKeyEvent>
 #include <QLineF>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
 #include <QSurfaceFormat>
+#include <QToolTip>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -35,7 +39,7 @@ bool sameTable(const ViewScene& a, const ViewScene& b)
 }  // namespace
 
 TableView::TableView(QWidget* parent)
-    : QOpenGLWidget(parent), interaction_(std::make_unique<TableInteraction>(*this)),
+    : QOpenGLWidget(parent), aim_(std::make_unique<AimDrag>(*this)), interaction_(std::make_unique<TableInteraction>(*this)),
       animator_(new CameraAnimator(camera_, this)), meter_(new FrameRateMeter(this))
 {
     // OpenGL 3.3 core whatever the application's default, and single-sampled: the balls and lines
@@ -50,6 +54,7 @@ TableView::TableView(QWidget* parent)
     setFormat(f);
     overlays_ = defaultOverlays();
     setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);  // the cursor's shape and the highlight say what a press would drag
     setMinimumSize(200, 120);
     connect(animator_, &CameraAnimator::stepped, this, qOverload<>(&QWidget::update));
     connect(meter_, &FrameRateMeter::framesPerSecond, this, &TableView::framesPerSecond);
@@ -390,15 +395,60 @@ void TableView::paintGL()
     paintOverlayLabels(painter, scene_,
                        LabelFrame{frame.viewProjection, size(), time_, overlays_, highlightedEvent_, selectedBall_,
                                   labelScope_, &layers_, pathScope_});
+    aim_->paint(painter, hovered_);
     painter.end();
     meter_->frameDrawn();
 }
 
 void TableView::mousePressEvent(QMouseEvent* event) { interaction_->press(event); }
-void TableView::mouseMoveEvent(QMouseEvent* event) { interaction_->move(event); }
+void TableView::mouseMoveEvent(QMouseEvent* event)
+{
+    if (event->buttons() != Qt::NoButton) return interaction_->move(event);
+    const AimHandle hovered = interaction_->hover(event->position());
+    if (hovered != hovered_) {
+        hovered_ = hovered;
+        update();
+    }
+}
 void TableView::mouseReleaseEvent(QMouseEvent* event) { interaction_->release(event); }
 void TableView::mouseDoubleClickEvent(QMouseEvent* event) { interaction_->doubleClick(event); }
 void TableView::wheelEvent(QWheelEvent* event) { interaction_->wheel(event); }
+
+void TableView::keyPressEvent(QKeyEvent* event)
+{
+    if (!aim_->keyPress(event)) QOpenGLWidget::keyPressEvent(event);
+}
+
+void TableView::keyReleaseEvent(QKeyEvent* event)
+{
+    if (!aim_->keyRelease(event)) QOpenGLWidget::keyReleaseEvent(event);
+}
+
+void TableView::leaveEvent(QEvent* event)
+{
+    if (hovered_ != AimHandle::None) {
+        hovered_ = AimHandle::None;
+        update();
+    }
+    QOpenGLWidget::leaveEvent(event);
+}
+
+bool TableView::event(QEvent* event)
+{
+    if (event->type() == QEvent::ToolTip) {
+        // What the cursor is over as the last move found it (a ball in front of the cue wins).
+        const auto* help = static_cast<QHelpEvent*>(event);
+        const QString tip = AimDrag::toolTipFor(interaction_->hover(help->pos()));
+        if (tip.isEmpty()) {
+            QToolTip::hideText();
+            event->ignore();
+        } else {
+            QToolTip::showText(help->globalPos(), tip, this);
+        }
+        return true;
+    }
+    return QOpenGLWidget::event(event);
+}
 
 float TableView::aspect() const
 {

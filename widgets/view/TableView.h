@@ -4,9 +4,11 @@
 // The widget owns the state and the GL resources; its jobs are in classes of their own:
 //   TableRenderer     the drawing (shared with the offscreen SceneImageRenderer);
 //   TableInteraction  the mouse state machine (select, drag a ball, drag a velocity, orbit, pan, zoom);
+//   AimDrag           aiming: the cue, the ghost ball and the tip mark dragged, the aiming keys;
 //   CameraAnimator    smooth camera moves;
 //   FrameRateMeter    the frame-rate reading.
 
+#include "AimDrag.h"
 #include "OrbitCamera.h"
 #include "OverlayPass.h"
 #include "ViewLayer.h"
@@ -24,6 +26,7 @@
 
 namespace cuelab {
 
+class AimDrag;
 class CameraAnimator;
 class FrameRateMeter;
 class TableInteraction;
@@ -89,6 +92,8 @@ public:
     std::optional<QVector3D> clothPointUnder(const QPointF& widgetPos, float height) const;
     // Where a point of the table lands in the widget (logical pixels); nullopt behind the eye.
     std::optional<QPointF> widgetPointOf(const QVector3D& world) const;
+    // The aiming gestures (AimDrag.h): what is being dragged, and the readout drawn beside the cursor.
+    const AimDrag& aim() const { return *aim_; }
     // The first OpenGL error met while painting the last frame (GL_NO_ERROR = 0 when none).
     unsigned int lastGlError() const { return lastGlError_; }
 
@@ -108,6 +113,12 @@ signals:
     // ballVelocityDragFinished once. Not for the ball the shot strikes (its motion is the shot's).
     void ballVelocityDragged(int index, double vx, double vy);
     void ballVelocityDragFinished(int index);
+    // The shot aimed in the view (AimDrag.h): the cue turned or pulled back, the ghost ball or the tip
+    // mark dragged (at t = 0), or an aiming key (Ctrl+arrows). Emitted at every change with the whole
+    // aim (degrees, m/s, tip offsets / R), then shotAimFinished once per gesture (the button released,
+    // the key let go).
+    void shotAimed(cuelab::AimGesture gesture, double headingDeg, double speed, double side, double height);
+    void shotAimFinished();
     void displayModesChanged();  // path scope, label scope or following changed
     // See FrameRateMeter: the rate of a run of continuous redrawing; 0 once when the run ends.
     void framesPerSecond(double fps);
@@ -121,8 +132,13 @@ protected:
     void mouseReleaseEvent(QMouseEvent* event) override;
     void mouseDoubleClickEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+    bool event(QEvent* event) override;  // tool tips for what the cursor is over
 
 private:
+    friend class AimDrag;
     friend class TableInteraction;
 
     float aspect() const;
@@ -149,7 +165,9 @@ private:
 
     std::unique_ptr<TableRenderer> renderer_;
     unsigned int lastGlError_ = 0;
+    std::unique_ptr<AimDrag> aim_;
     std::unique_ptr<TableInteraction> interaction_;
+    AimHandle hovered_ = AimHandle::None;  // the aiming handle under the cursor (drawn highlighted)
     CameraAnimator* animator_;
     FrameRateMeter* meter_;
     QTimer settleTimer_;  // single shot: repaints once the camera has stopped (see paintGL)
