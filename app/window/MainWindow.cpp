@@ -271,6 +271,7 @@ QMenu* MainWindow::menu(WindowMenu which)
 void MainWindow::createStatusBar()
 {
     summaryLabel_ = new QLabel(this);
+    summaryLabel_->setObjectName(QStringLiteral("summaryStatus"));
     fpsLabel_ = new QLabel(this);
     fpsLabel_->setToolTip(tr("Frames per second the table view draws"));
     statusBar()->addPermanentWidget(summaryLabel_);
@@ -332,6 +333,9 @@ void MainWindow::refreshResultLists()
                           .arg(formatQuantity(result->endTime, QStringLiteral("s"), 3));
     if (result->status == SimulationStatus::ReachedUntil) summary = tr("%n event(s), stopped at the time limit", nullptr, static_cast<int>(result->events.size()));
     if (!result->finished()) summary = RunState::unfinishedNote(*result);
+    // A lesson's question waits (Document::setHorizon): the count and the time are the shown part's.
+    if (document_->isWithholding())
+        summary = tr("%n event(s) so far. %1", nullptr, static_cast<int>(result->events.size())).arg(RunState::withheldNote(result->endTime));
     summaryLabel_->setToolTip(result->finished() ? QString() : QString::fromStdString(result->error));
     summaryLabel_->setText(summary);
 }
