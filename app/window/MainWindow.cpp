@@ -333,9 +333,10 @@ void MainWindow::refreshResultLists()
                           .arg(formatQuantity(result->endTime, QStringLiteral("s"), 3));
     if (result->status == SimulationStatus::ReachedUntil) summary = tr("%n event(s), stopped at the time limit", nullptr, static_cast<int>(result->events.size()));
     if (!result->finished()) summary = RunState::unfinishedNote(*result);
-    // A lesson's question waits (Document::setHorizon): the count and the time are the shown part's.
+    // A lesson's question waits (Document::setHorizon): the count is the shown part's (the outcome
+    // line beside it says up to when).
     if (document_->isWithholding())
-        summary = tr("%n event(s) so far. %1", nullptr, static_cast<int>(result->events.size())).arg(RunState::withheldNote(result->endTime));
+        summary = tr("%n event(s) before the question", nullptr, static_cast<int>(result->events.size()));
     summaryLabel_->setToolTip(result->finished() ? QString() : QString::fromStdString(result->error));
     summaryLabel_->setText(summary);
 }

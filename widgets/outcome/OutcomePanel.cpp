@@ -91,18 +91,25 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
         header_->setText(tr("No simulation yet"));
         return;
     }
+    if (!withheld_.isEmpty()) {
+        // A lesson's question waits: no outcome, not even the outcome so far ("pocketed: none" would
+        // read as an answer).
+        outcome_ = {};
+        summary_ = tr("%1; the outcome shows after the reveal").arg(withheld_);
+        header_->setText(summary_);
+        return;
+    }
     const SimulationResult& r = *result_;
     outcome_ = shotOutcome(r);
     summary_ = outcomeLine(r, outcome_);
     // The verdict of the game's rules (only for a finished run: a partial one cannot be judged yet).
-    if (game_ && r.finished() && withheld_.isEmpty()) verdict_ = rules::judgeShot(r, *game_);
+    if (game_ && r.finished()) verdict_ = rules::judgeShot(r, *game_);
     if (verdict_) {
         verdictLine_ = translated(verdict_->text);
         summary_ = tr("%1. %2").arg(verdictLine_, summary_);
     }
     // A partial run's outcome is the outcome so far, and says where it stopped.
     if (const QString note = RunState::unfinishedNote(r); !note.isEmpty()) summary_ = tr("%1. So far: %2").arg(note, summary_);
-    if (!withheld_.isEmpty()) summary_ = tr("%1. So far: %2").arg(withheld_, summary_);
     header_->setText(summary_);
     auto id = [&](int ball) { return QString::fromStdString(r.balls.at(static_cast<std::size_t>(ball)).id); };
     auto addFact = [&](const QString& what, const QString& value, int event = -1, const QString& tip = {}) {

@@ -26,8 +26,8 @@ public:
     void setResult(std::shared_ptr<const SimulationResult> result);
     // The game whose rules judge the shot (none: no verdict); takes effect at the next setResult.
     void setGame(const std::optional<GameSpec>& game) { game_ = game; }
-    // A lesson's question waits for its reveal (Document::setHorizon): `note` (RunState::withheldNote)
-    // heads the outcome so far, and no verdict is given. Empty: the whole run. Takes effect at the
+    // A lesson's question waits for its reveal (Document::setHorizon): the panel gives `note`
+    // (RunState::withheldNote) and no outcome, no verdict. Empty: the whole run. Takes effect at the
     // next setResult.
     void setWithheld(const QString& note) { withheld_ = note; }
     const std::optional<rules::Verdict>& verdict() const { return verdict_; }
