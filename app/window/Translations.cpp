@@ -26,6 +26,13 @@ std::unique_ptr<QTranslator>& qtTranslator()
     return translator;
 }
 
+// The language installTranslations() last returned.
+QString& shownLanguage()
+{
+    static QString language = QStringLiteral("en");
+    return language;
+}
+
 void uninstall(std::unique_ptr<QTranslator>& translator)
 {
     if (!translator) return;
@@ -46,8 +53,9 @@ QString installTranslations(const QLocale& locale)
     uninstall(qtTranslator());
     auto own = std::make_unique<QTranslator>();
     // Tries every language of the locale in its order of preference: cuelab_hu_HU.qm, cuelab_hu.qm, ...
+    shownLanguage() = QStringLiteral("en");
     if (!own->load(locale, QStringLiteral("cuelab"), QStringLiteral("_"), kDirectory) || own->isEmpty())
-        return QStringLiteral("en");
+        return shownLanguage();
     const QLocale shown(own->language().isEmpty() ? locale.name() : own->language());  // "hu_HU", from the .ts
     QCoreApplication::installTranslator(own.get());
     ownTranslator() = std::move(own);
@@ -58,7 +66,13 @@ QString installTranslations(const QLocale& locale)
         QCoreApplication::installTranslator(qt.get());
         qtTranslator() = std::move(qt);
     }
-    return QLocale::languageToCode(shown.language());
+    shownLanguage() = QLocale::languageToCode(shown.language());
+    return shownLanguage();
+}
+
+QString installedLanguage()
+{
+    return shownLanguage();
 }
 
 QStringList translatedLanguages()

@@ -21,6 +21,9 @@ QLocale interfaceLocale(const QString& requested);
 // language shown: "hu", or "en" when no translation matched (English, the default).
 QString installTranslations(const QLocale& locale);
 
+// The language the last installTranslations() call installed: "hu", or "en" (also before any call).
+QString installedLanguage();
+
 // The languages with a built-in translation, besides English: {"hu"}.
 QStringList translatedLanguages();
 

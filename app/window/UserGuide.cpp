@@ -1,7 +1,10 @@
 #include "UserGuide.h"
 
+#include "Translations.h"
+
 #include <QDesktopServices>
 #include <QDialogButtonBox>
+#include <QFile>
 #include <QGuiApplication>
 #include <QPushButton>
 #include <QImage>
@@ -18,7 +21,20 @@
 
 namespace cuelab {
 
-UserGuide::UserGuide(QWidget* parent) : QDialog(parent), browser_(new QTextBrowser(this))
+QUrl UserGuide::homeFor(const QString& language)
+{
+    const QString translated = QStringLiteral("/docs/user-guide.%1.md").arg(language);
+    if (language != QLatin1String("en") && !language.isEmpty() && QFile::exists(QStringLiteral(":") + translated))
+        return QUrl(QStringLiteral("qrc:") + translated);
+    return QUrl(QString::fromLatin1(kHome));
+}
+
+QUrl UserGuide::home()
+{
+    return homeFor(installedLanguage());
+}
+
+UserGuide::UserGuide(QWidget* parent) : QDialog(parent), browser_(new QTextBrowser(this)), home_(home())
 {
     setObjectName(QStringLiteral("userGuide"));
     setWindowTitle(tr("CueLab User Guide"));
@@ -35,7 +51,7 @@ UserGuide::UserGuide(QWidget* parent) : QDialog(parent), browser_(new QTextBrows
             QDesktopServices::openUrl(target);
     });
     connect(browser_, &QTextBrowser::sourceChanged, this, &UserGuide::fitPictures);
-    browser_->setSource(QUrl(QString::fromLatin1(kHome)), QTextDocument::MarkdownResource);
+    browser_->setSource(home_, QTextDocument::MarkdownResource);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     QPushButton* back = buttons->addButton(tr("&Back"), QDialogButtonBox::ActionRole);
@@ -101,6 +117,10 @@ int UserGuide::widestPicture() const
 UserGuide* UserGuide::showFor(QWidget* parent)
 {
     auto* guide = parent->findChild<UserGuide*>(QString(), Qt::FindDirectChildrenOnly);
+    if (guide && guide->home_ != home()) {  // the interface's language changed: the guide follows it
+        delete guide;
+        guide = nullptr;
+    }
     if (!guide) guide = new UserGuide(parent);
     guide->QDialog::show();
     guide->raise();

@@ -4,6 +4,7 @@
 #include "Parallel.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -166,6 +167,20 @@ FitResult fitStrike(const Setup& base, const Recording& recording, const std::ve
     std::mutex progressMutex;
     long long evaluations = 0;
     bool cancelled = false;
+    // The budget: every search at most its maximum, and the polish rounds. Evaluations are counted
+    // as they happen, so the fraction moves while a search runs (progress is reported every 16).
+    const double budget = double(state.searchesTotal) * std::max(1, options.local.maxEvaluations) +
+                          double(std::max(0, options.polishRounds)) * std::max(1, options.polish.maxEvaluations);
+    std::atomic<long long> spent{0};
+    double credited = 0.0;  // unspent budget of finished searches (under progressMutex)
+    const auto report = [&](bool force) {
+        if (!progress) return;
+        const long long n = ++spent;
+        if (!force && n % 16 != 0) return;
+        const std::lock_guard lock(progressMutex);
+        state.fraction = std::clamp((double(spent.load()) + credited) / budget, state.fraction, 1.0);
+        progress(state);
+    };
 
     for (std::size_t w = 0; w < windows.size(); ++w) {
         const double window = windows[w];
@@ -174,7 +189,10 @@ FitResult fitStrike(const Setup& base, const Recording& recording, const std::ve
         parallelFor(
             static_cast<int>(seeds.size()), options.threads,
             [&](int i) {
-                const auto f = [&](const std::vector<double>& x) { return residualAt(x, window); };
+                const auto f = [&](const std::vector<double>& x) {
+                    report(false);
+                    return residualAt(x, window);
+                };
                 const LocalResult r = localSearch(f, seeds[static_cast<std::size_t>(i)].x, bounds.lower,
                                                   bounds.upper, bounds.step, options.local, stop);
                 found[static_cast<std::size_t>(i)] = {r.x, r.value, r.evaluations};
@@ -183,6 +201,8 @@ FitResult fitStrike(const Setup& base, const Recording& recording, const std::ve
                     ++state.searchesDone;
                     state.evaluations += r.evaluations;
                     state.bestRmse = std::min(state.bestRmse, r.value);
+                    credited += std::max(0, options.local.maxEvaluations - r.evaluations);
+                    state.fraction = std::clamp((double(spent.load()) + credited) / budget, state.fraction, 1.0);
                     progress(state);
                 }
             },
@@ -219,7 +239,10 @@ FitResult fitStrike(const Setup& base, const Recording& recording, const std::ve
     // Restarts with smaller first steps (the method of FitOptions::polish) walk it down.
     Candidate best = seeds.front();
     const double all = std::numeric_limits<double>::infinity();
-    const auto full = [&](const std::vector<double>& x) { return residualAt(x, all); };
+    const auto full = [&](const std::vector<double>& x) {
+        report(false);
+        return residualAt(x, all);
+    };
     std::vector<double> polishStep = bounds.step;
     for (int round = 0; !cancelled && round < options.polishRounds; ++round) {
         for (double& h : polishStep) h *= 0.1;
@@ -228,7 +251,16 @@ FitResult fitStrike(const Setup& base, const Recording& recording, const std::ve
         cancelled = r.stopped;
         const bool better = r.value < best.value - options.polish.residualTolerance;
         if (r.value < best.value) best = {r.x, r.value, 0};
+        {
+            const std::lock_guard lock(progressMutex);
+            credited += std::max(0, options.polish.maxEvaluations - r.evaluations);
+        }
         if (!better) break;
+    }
+    if (progress && !cancelled) {
+        const std::lock_guard lock(progressMutex);
+        state.fraction = 1.0;
+        progress(state);
     }
 
     FitResult result;

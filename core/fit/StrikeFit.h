@@ -68,6 +68,9 @@ struct FitProgress {
     int searchesTotal = 0;   // grows as stages are planned
     long long evaluations = 0;
     double bestRmse = 0.0;   // m, the best residual of the current window so far
+    // 0-1, the share of the fit's evaluation budget spent, a search that ended early credited with
+    // its unspent budget: rises while any search runs (several times a second), 1 at the end.
+    double fraction = 0.0;
 };
 
 struct FitResult {

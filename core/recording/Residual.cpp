@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace cuelab {
 
@@ -66,6 +67,25 @@ std::string missingBall(const Recording& recording, const Setup& setup)
         if (!found) return b.id;
     }
     return {};
+}
+
+std::string residualCsv(const Residual& r, const Recording& recording)
+{
+    const auto number = [](double v) {
+        if (std::isinf(v)) return std::string(v > 0 ? "inf" : "-inf");
+        if (std::isnan(v)) return std::string("nan");
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.17g", v);
+        return std::string(buffer);
+    };
+    std::string out = "ball,time_s,recorded_x_m,recorded_y_m,simulated_x_m,simulated_y_m,distance_m\n";
+    for (const SampleResidual& s : r.samples) {
+        const std::size_t b = static_cast<std::size_t>(s.ball);
+        out += (b < recording.balls.size() ? recording.balls[b].id : std::to_string(s.ball)) + ',' + number(s.time) + ',' +
+               number(s.recorded.x()) + ',' + number(s.recorded.y()) + ',' + number(s.simulated.x()) + ',' +
+               number(s.simulated.y()) + ',' + number(s.distance) + '\n';
+    }
+    return out;
 }
 
 }  // namespace cuelab

@@ -62,6 +62,11 @@ std::vector<bool> selectedBalls(const Recording& recording, const std::string& s
 Residual residual(const SimulationResult& result, const Recording& recording, const std::string& struckId,
                   const ResidualOptions& options = {});
 
+// The residual sample by sample as CSV (a header line, then one line per sample of `r.samples`, ball by
+// ball): ball id, time (s), recorded x and y, simulated x and y (m), distance (m); numbers with 17
+// significant digits, a ball missing from the simulation as "inf".
+std::string residualCsv(const Residual& r, const Recording& recording);
+
 // The first recorded ball id that `setup` lacks, "" when every one is there.
 std::string missingBall(const Recording& recording, const Setup& setup);
 

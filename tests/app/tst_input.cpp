@@ -7,6 +7,7 @@
 #include "InputGuard.h"
 #include "MainWindow.h"
 #include "ShortcutsDialog.h"
+#include "Translations.h"
 #include "UserGuide.h"
 
 #include "editor/BallsPanel.h"
@@ -27,6 +28,7 @@
 #include <QTextBrowser>
 #include <QTreeWidget>
 #include <QUndoStack>
+#include <QScopeGuard>
 #include <QScrollBar>
 #include <QTreeView>
 #include <QtTest>
@@ -205,9 +207,31 @@ private slots:
     }
 
     // F1 shows the user guide bundled with the build, inside the application, its pictures within
-    // the page's width.
+    // the page's width, in the interface's language: the Hungarian guide (docs/user-guide.hu.md)
+    // in a Hungarian window, the English one otherwise; a link to another page opens it in the
+    // same window.
+    void f1ShowsTheUserGuide_data()
+    {
+        QTest::addColumn<QString>("locale");
+        QTest::addColumn<QString>("page");
+        QTest::addColumn<QString>("title");
+        QTest::addColumn<QString>("keys");
+        QTest::addColumn<QString>("other");
+        QTest::newRow("English") << "C" << "qrc:/docs/user-guide.md" << "CueLab user guide" << "Keyboard and mouse"
+                                 << "A CueLab felhasználói útmutatója";
+        QTest::newRow("Hungarian") << "hu_HU" << "qrc:/docs/user-guide.hu.md" << "A CueLab felhasználói útmutatója"
+                                   << "Billentyűzet és egér" << "CueLab user guide";
+    }
+
     void f1ShowsTheUserGuide()
     {
+        QFETCH(QString, locale);
+        QFETCH(QString, page);
+        QFETCH(QString, title);
+        QFETCH(QString, keys);
+        QFETCH(QString, other);
+        installTranslations(QLocale(locale));
+        const auto english = qScopeGuard([] { installTranslations(QLocale::c()); });
         MainWindow w;
         w.resize(1280, 800);
         w.show();
@@ -215,15 +239,24 @@ private slots:
         QTest::keyClick(&w, Qt::Key_F1);
         UserGuide* guide = nullptr;
         QTRY_VERIFY((guide = w.findChild<UserGuide*>()) && guide->isVisible());
+        QCOMPARE(guide->browser()->source().toString(), page);
         const QString text = guide->browser()->toPlainText();
-        QVERIFY2(text.contains(QStringLiteral("CueLab user guide")), qPrintable(text.left(200)));
-        QVERIFY(text.contains(QStringLiteral("Keyboard and mouse")));
+        QVERIFY2(text.startsWith(title), qPrintable(text.left(200)));
+        QVERIFY(text.contains(keys));
+        QVERIFY2(!text.contains(other), qPrintable(other));
         QVERIFY(guide->widestPicture() > 0);
         QVERIFY2(guide->widestPicture() <= guide->browser()->viewport()->width(),
                  qPrintable(QStringLiteral("%1 > %2").arg(guide->widestPicture()).arg(guide->browser()->viewport()->width())));
         // F1 again raises the same window rather than opening another.
         QTest::keyClick(&w, Qt::Key_F1);
         QCOMPARE(w.findChildren<UserGuide*>().size(), 1);
+        // Its links to the other pages work as in English: explain.md opens in the guide, Contents
+        // comes back to the guide of the language.
+        emit guide->browser()->anchorClicked(QUrl(QStringLiteral("explain.md")));
+        QCOMPARE(guide->browser()->source().toString(), QStringLiteral("qrc:/docs/explain.md"));
+        QVERIFY(!guide->browser()->toPlainText().isEmpty());
+        guide->browser()->home();
+        QCOMPARE(guide->browser()->source().toString(), page);
     }
 
     // Help > Keyboard and Mouse: one group per menu (File once, although Export sits inside it),

@@ -12,6 +12,7 @@
 #include "editor/Document.h"
 #include "outcome/OutcomePanel.h"
 #include "recording/RecordingPanel.h"
+#include "view/BallAppearance.h"
 #include "view/TableView.h"
 
 #include <QDockWidget>
@@ -21,6 +22,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
+#include <QProgressBar>
 #include <QtTest>
 
 using namespace cuelab;
@@ -91,11 +93,28 @@ private slots:
         for (const RecordedBall& b : recording.balls) samples += b.samples.size();
         QCOMPARE(layers.at(QStringLiteral("recording")).markers.size(), samples);
         QCOMPARE(layers.at(QStringLiteral("recording")).ghosts.size(), recording.balls.size());
+        // Each ball's dots are its path's colour (one colour per ball, lifted off the cloth's).
+        {
+            const ViewLayer& layer = layers.at(QStringLiteral("recording"));
+            std::size_t m = 0;
+            for (const RecordedBall& b : recording.balls) {
+                const QVector3D line = pathColour(ballLook(truth.table.kind, b.id), truth.table.kind);
+                for (std::size_t k = 0; k < b.samples.size(); ++k, ++m) {
+                    const QColor c = layer.markers[m].colour;
+                    QVERIFY2(std::abs(c.redF() - line.x()) < 2e-3 && std::abs(c.greenF() - line.y()) < 2e-3 &&
+                                 std::abs(c.blueF() - line.z()) < 2e-3,
+                             b.id.c_str());
+                }
+            }
+        }
         // The residual: zero, per ball and over time.
         QVERIFY(panel->residual());
         QVERIFY2(panel->residual()->rmse < 1e-9, qPrintable(QString::number(panel->residual()->rmse)));
         QCOMPARE(int(panel->residual()->samples.size()), int(samples));
         QCOMPARE(panel->ballsTable()->rowCount(), int(recording.balls.size()));
+        // The residual as CSV: a header and a line per sample.
+        QCOMPARE(int(panel->residualCsv().count('\n')), int(samples) + 1);
+        QVERIFY(panel->exportResidualsAction()->isEnabled());
         auto* outcome = window.findChild<OutcomePanel*>();
         QVERIFY2(factValue(outcome, QStringLiteral("Against the recording")).startsWith(QStringLiteral("struck ball 0.00 cm")),
                  qPrintable(factValue(outcome, QStringLiteral("Against the recording"))));
@@ -111,7 +130,16 @@ private slots:
         QSignalSpy finished(panel, &RecordingPanel::fitFinished);
         panel->fitStrike();
         QVERIFY(panel->isFitting());
-        QVERIFY(finished.wait(120000));
+        // The progress moves while the fit runs (it stood at 0 % until the end before).
+        auto* progress = panel->findChild<QProgressBar*>(QStringLiteral("recordingProgress"));
+        QVERIFY(progress);
+        int seen = 0;
+        for (int i = 0; i < 2400 && finished.isEmpty(); ++i) {
+            QTest::qWait(50);
+            if (progress->maximum() == 1000) seen = std::max(seen, progress->value());
+        }
+        QVERIFY2(seen > 0 && seen < 1000, qPrintable(QString::number(seen)));
+        QVERIFY(!finished.isEmpty() || finished.wait(120000));
         QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
         QCOMPARE(window.document()->undoStack()->count(), steps + 1);
         const CueStrike fitted = *window.document()->setup().shot;

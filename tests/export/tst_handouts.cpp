@@ -191,6 +191,15 @@ void TestHandouts::reportDerivesTheKeyCollision()
     QString error;
     QVERIFY2(report.write(path, &error), qPrintable(error));
     QVERIFY(readAll(path).startsWith("%PDF"));
+    // Its steps print subscripts as subscripts: no "u_(0,x)" left for the reader.
+    const explain::Explanation e = explain::explain(*result, firstBallBall, s.shot);
+    int subscripts = 0;
+    for (const explain::Step& step : e.steps) {
+        const QString html = LessonReport::stepHtml(step);
+        QVERIFY2(!html.contains(QStringLiteral("_(")) && !html.contains(QStringLiteral("_{")), qPrintable(html));
+        subscripts += int(html.count(QStringLiteral("<sub>")));
+    }
+    QVERIFY(subscripts > 5);
     // A lone ball: its first cushion; no strike at all: no collision (the page says so).
     Setup lone = s;
     lone.balls.resize(1);

@@ -100,17 +100,24 @@ private slots:
         light.keep = 3;
         light.local.maxEvaluations = 30;
         light.threads = 2;
-        int calls = 0;
+        int searchEnds = 0, beforeFirstEnd = 0;
+        bool monotone = true;
         fit::FitProgress last;
         fit::fitStrike(base, rec, keys, light, [&](const fit::FitProgress& p) {
-            ++calls;
+            if (p.searchesDone > last.searchesDone) ++searchEnds;
+            if (p.searchesDone == 0) ++beforeFirstEnd;
+            monotone = monotone && p.fraction >= last.fraction && p.fraction <= 1.0;
             last = p;
         });
         // Stage 1: the 3 x 3 tip starts (the given strike, no tip offsets, among them); stage 2
         // (the whole recording): the best 3.
         QCOMPARE(last.searchesTotal, 9 + 3);
         QCOMPARE(last.searchesDone, last.searchesTotal);
-        QCOMPARE(calls, last.searchesTotal);
+        QCOMPARE(searchEnds, last.searchesTotal);
+        // The share of the budget moves while the searches run, never back, and ends at 1.
+        QVERIFY(beforeFirstEnd > 0);
+        QVERIFY(monotone);
+        QCOMPARE(last.fraction, 1.0);
 
         std::stop_source stop;
         stop.request_stop();

@@ -71,6 +71,32 @@ private slots:
         QVERIFY(std::abs(residual(run, rec, "a", early).rmse - 0.0021213203) < 1e-9);
     }
 
+    // The residual as CSV: a header, a line per sample ball by ball, numbers that read back exactly.
+    void csvCarriesEverySample()
+    {
+        const Setup s = restingPair();
+        const SimulationResult run = simulate(s);
+        Recording rec;
+        rec.table = s.table;
+        rec.balls = {{"a", std::nullopt, {{0.0, Vec2(1.0, 0.503)}, {0.5, Vec2(1.004, 0.5)}}},
+                     {"b", std::nullopt, {{0.1, Vec2(2.0, 0.512)}}}};
+        ResidualOptions all;
+        all.balls = BallSelection::All;
+        all.keepSamples = true;
+        const Residual r = residual(run, rec, "a", all);
+        const QStringList lines = QString::fromStdString(residualCsv(r, rec)).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 4);
+        QCOMPARE(lines[0], QStringLiteral("ball,time_s,recorded_x_m,recorded_y_m,simulated_x_m,simulated_y_m,distance_m"));
+        const QStringList third = lines[3].split(QLatin1Char(','));
+        QCOMPARE(third.size(), 7);
+        QCOMPARE(third[0], QStringLiteral("b"));
+        QCOMPARE(third[1].toDouble(), 0.1);
+        QCOMPARE(third[3].toDouble(), 0.512);
+        QCOMPARE(third[5].toDouble(), 0.5);  // b rests at y = 0.5
+        QCOMPARE(third[6].toDouble(), r.samples[2].distance);
+        QCOMPARE(lines[1].split(QLatin1Char(','))[0], QStringLiteral("a"));
+    }
+
     void exactRecordingHasNoResidual()
     {
         const Setup shot = test::caromShot();

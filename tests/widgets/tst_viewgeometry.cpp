@@ -48,6 +48,7 @@ private slots:
     void flightIsDrawnAtItsHeight();
     void looks_data();
     void looks();
+    void pathsStandOutOnEveryCloth();
     void tableMesh_data();
     void tableMesh();
 };
@@ -214,8 +215,31 @@ void TestViewGeometry::looks()
     QCOMPARE(look.dotted, dotted);
     QVERIFY((look.colour - colour).length() < 1e-6f);
     // Paths stay visible on the cloth even for the black ball.
-    const QVector3D path = pathColour(look);
+    const QVector3D path = pathColour(look, kind);
     QVERIFY(0.3f * path.x() + 0.59f * path.y() + 0.11f * path.z() >= 0.2f);
+}
+
+// Every ball's path (and a recording's dots, drawn in it) stands out on every cloth: the blue 2 and
+// 10 on carom cloth, the green 6 and 14 on pool cloth, the snooker green on its own. Balls whose
+// colour already stands out keep it.
+void TestViewGeometry::pathsStandOutOnEveryCloth()
+{
+    std::vector<std::string> ids{"cue", "white", "yellow", "red", "green", "brown", "blue", "pink", "black"};
+    for (int n = 1; n <= 15; ++n) ids.push_back(std::to_string(n));
+    int lifted = 0, kept = 0;
+    for (const TableKind kind : {TableKind::Pool7ft, TableKind::Pool8ft, TableKind::Pool9ft, TableKind::Snooker, TableKind::Carom}) {
+        const QColor cloth = displayColour(clothColour(kind));
+        for (const std::string& id : ids) {
+            const BallLook look = ballLook(kind, id);
+            const QColor c = displayColour(pathColour(look, kind));
+            const double d = std::hypot(c.redF() - cloth.redF(), c.greenF() - cloth.greenF(), c.blueF() - cloth.blueF());
+            QVERIFY2(d >= 0.35, qPrintable(QStringLiteral("%1 on cloth %2: %3").arg(QString::fromStdString(id)).arg(int(kind)).arg(d)));
+            if ((pathColour(look, kind) - look.colour).length() < 1e-6f) ++kept;
+            else ++lifted;
+        }
+    }
+    QVERIFY(lifted > 0);
+    QVERIFY(kept > lifted);
 }
 
 void TestViewGeometry::tableMesh_data()

@@ -19,6 +19,7 @@
 #include <QPainter>
 #include <QPdfWriter>
 #include <QSaveFile>
+#include <QTextDocument>
 
 #include <algorithm>
 #include <cmath>
@@ -268,26 +269,54 @@ void keyCollisionPage(QPainter& p, const SimulationResult& r, const std::optiona
     y = figure.bottom() + 14;
     const double bottom = kHeight - 70;
     for (const explain::Step& step : e.steps) {
-        QString body;
-        const QString law = QString::fromStdString(explain::markupToText(translated(step.law).toStdString()));
-        if (!law.isEmpty()) body += law + QLatin1Char('\n');
-        if (!step.formula.empty()) body += QString::fromStdString(explain::markupToText(translated(step.formula).toStdString())) + QLatin1Char('\n');
-        QStringList results;
-        for (const explain::Quantity& q : step.results)
-            results << QStringLiteral("%1 = %2%3").arg(QString::fromStdString(explain::markupToText(translated(q.symbol).toStdString())),
-                                                      QString::fromStdString(explain::readable(q.value)),
-                                                      q.unit.empty() ? QString() : QLatin1Char(' ') + QString::fromStdString(q.unit));
-        if (!results.isEmpty()) body += results.join(QStringLiteral(",  "));
-        p.setFont(font(12));
-        const double need = QFontMetricsF(p.font()).boundingRect(QRectF(0, 0, kWidth - 2 * kMargin, 1e6), Qt::TextWordWrap, body).height() + 24;
+        // Rich text: subscripts as subscripts (u₀,ₓ rather than u_(0,x)).
+        // Design metrics: laid out as printed, not as hinted for the screen's pixels.
+        QTextDocument body;
+        body.setUseDesignMetrics(true);
+        body.setDocumentMargin(0);
+        body.setDefaultFont(font(12));
+        body.setTextWidth(kWidth - 2 * kMargin);
+        body.setHtml(LessonReport::stepHtml(step));
+        QTextDocument title;
+        title.setUseDesignMetrics(true);
+        title.setDocumentMargin(0);
+        title.setDefaultFont(font(13, true));
+        title.setTextWidth(kWidth - 2 * kMargin);
+        title.setHtml(QStringLiteral("<b>%1</b>").arg(QString::fromStdString(explain::markupToHtml(translated(step.title).toStdString()))));
+        const double need = title.size().height() + body.size().height() + 24;
         if (y + need > bottom) {
             paragraph(p, y, tr("… the rest of the derivation: File → Export → Explanation."), 12);
             return;
         }
-        y = paragraph(p, y, QString::fromStdString(explain::markupToText(translated(step.title).toStdString())), 13, true) - 4;
-        y = paragraph(p, y, body.trimmed(), 12);
+        for (QTextDocument* d : {&title, &body}) {
+            p.save();
+            p.translate(kMargin, y);
+            d->drawContents(&p);
+            p.restore();
+            y += d->size().height() + (d == &title ? 2.0 : 8.0);
+        }
     }
 }
+
+}  // namespace
+
+QString LessonReport::stepHtml(const explain::Step& step)
+{
+    const auto html = [](const explain::Text& t) { return QString::fromStdString(explain::markupToHtml(translated(t).toStdString())); };
+    QString out;
+    const QString law = html(step.law);
+    if (!law.isEmpty()) out += QStringLiteral("<p style=\"margin:0\">%1</p>").arg(law);
+    if (!step.formula.empty()) out += QStringLiteral("<p style=\"margin:2px 0 0 0\"><i>%1</i></p>").arg(html(step.formula));
+    QStringList results;
+    for (const explain::Quantity& q : step.results)
+        results << QStringLiteral("%1 = %2%3").arg(QString::fromStdString(explain::markupToHtml(translated(q.symbol).toStdString())),
+                                                  QString::fromStdString(explain::readable(q.value, q.scale)).toHtmlEscaped(),
+                                                  q.unit.empty() ? QString() : QLatin1Char(' ') + QString::fromStdString(q.unit).toHtmlEscaped());
+    if (!results.isEmpty()) out += QStringLiteral("<p style=\"margin:2px 0 0 0\">%1</p>").arg(results.join(QStringLiteral(", &nbsp;")));
+    return out;
+}
+
+namespace {
 
 void eventPage(QPainter& p, const SimulationResult& r, int first, int count, bool heading)
 {

@@ -27,6 +27,10 @@ class QPainter;
 
 namespace cuelab {
 
+namespace explain {
+struct Step;
+}
+
 // A lesson question as the report prints it: the question as the run asks it and, once revealed,
 // each asked ball's guess, where it went and its score (PredictSession). No answers: not answered.
 struct ReportQuestion {
@@ -44,6 +48,10 @@ public:
     // The collision the report derives: the struck ball's first contact with a ball, else the first
     // collision of any kind; -1 when the shot has none.
     static int keyCollision(const SimulationResult& result);
+
+    // One step of a derivation as the report prints it: rich text with real subscripts and
+    // superscripts (law, formula in italics, results), in the window's language.
+    static QString stepHtml(const explain::Step& step);
 
     static constexpr int kEventRowsPerPage = 40;
     // One row of the event table: #N (from 1, as everywhere a person reads), time, type, balls,

@@ -159,9 +159,10 @@ QColor ShotDiagram::ballColour(int ball) const
 QColor ShotDiagram::pathColour(int ball) const
 {
     const BallLook look = ballLook(result_->table.kind, result_->balls.at(static_cast<std::size_t>(ball)).id);
-    QColor c = fromLinear(style_.cloth ? cuelab::pathColour(look) : look.colour);
+    if (style_.cloth) return displayColour(cuelab::pathColour(look, result_->table.kind));
     // On paper a white or yellow line disappears: darken light colours.
-    if (!style_.cloth && c.lightnessF() > 0.6) c = c.darker(c.saturationF() < 0.2 ? 300 : 160);
+    QColor c = displayColour(look.colour);
+    if (c.lightnessF() > 0.6) c = c.darker(c.saturationF() < 0.2 ? 300 : 160);
     return c;
 }
 

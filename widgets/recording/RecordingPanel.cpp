@@ -5,13 +5,19 @@
 #include "StrikeFit.h"
 #include "editor/Document.h"
 #include "editor/ResultFeed.h"
+#include "view/BallAppearance.h"
 
+#include <QAction>
 #include <QFutureWatcher>
+#include <QMenu>
+#include <QToolButton>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QIcon>
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPixmap>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
@@ -23,14 +29,10 @@
 #include <atomic>
 #include <cmath>
 #include <variant>
-#include <algorithm>
 
 namespace cuelab {
 
 namespace {
-
-const QColor kBallColours[] = {QColor(40, 110, 220), QColor(230, 130, 20), QColor(40, 160, 70), QColor(200, 40, 160),
-                               QColor(120, 80, 40), QColor(100, 100, 100)};
 
 QString centimetres(double metres)
 {
@@ -45,19 +47,26 @@ class ResidualChart : public QWidget {
 public:
     explicit ResidualChart(QWidget* parent) : QWidget(parent)
     {
-        setMinimumSize(220, 150);
+        setMinimumSize(220, 220);
         setToolTip(RecordingPanel::tr("Distance (cm) between each recorded sample and the simulated ball at the sample's "
-                                      "time (s), one line per ball: where the model and the recording part"));
+                                      "time (s), one line per ball: where the model and the recording part. Thin grey "
+                                      "lines: the simulation's collisions"));
     }
-    void set(const std::optional<Residual>& residual, const Recording* recording)
+    // `events`: the simulation's collision times (s), marked as thin lines.
+    void set(const std::optional<Residual>& residual, const Recording* recording, TableKind kind, std::vector<double> events)
     {
         residual_ = residual;
         ids_.clear();
+        colours_.clear();
         if (recording)
-            for (const RecordedBall& b : recording->balls) ids_ << QString::fromStdString(b.id);
+            for (const RecordedBall& b : recording->balls) {
+                ids_ << QString::fromStdString(b.id);
+                colours_ << RecordingPanel::chartColour(kind, b.id);
+            }
+        events_ = std::move(events);
         update();
     }
-    QSize sizeHint() const override { return {320, 200}; }
+    QSize sizeHint() const override { return {360, 280}; }
 
 protected:
     void paintEvent(QPaintEvent*) override
@@ -92,6 +101,13 @@ protected:
             const double d = std::isfinite(s.distance) ? s.distance : dMax;
             return QPointF(plot.left() + plot.width() * s.time / tMax, plot.bottom() - plot.height() * d / dMax);
         };
+        // The simulation's collisions: where a residual that jumps usually starts.
+        p.setPen(QPen(QColor(150, 150, 150, 150), 1.0, Qt::DashLine));
+        for (const double t : events_)
+            if (t >= 0.0 && t <= tMax) {
+                const double x = plot.left() + plot.width() * t / tMax;
+                p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+            }
         // Samples come ball by ball: one path per ball.
         double keyX = plot.left();
         for (int ball = 0; ball < ids_.size(); ++ball) {
@@ -104,7 +120,7 @@ protected:
                 any = true;
             }
             if (!any) continue;
-            const QColor colour = RecordingPanel::ballColour(ball);
+            const QColor colour = colours_.value(ball, palette().color(QPalette::Text));
             p.setPen(QPen(colour, 1.5));
             p.setBrush(Qt::NoBrush);
             p.drawPath(path);
@@ -119,11 +135,25 @@ protected:
 private:
     std::optional<Residual> residual_;
     QStringList ids_;
+    QList<QColor> colours_;
+    std::vector<double> events_;
 };
 
-QColor RecordingPanel::ballColour(int index)
+QColor RecordingPanel::viewColour(TableKind kind, const std::string& id)
 {
-    return kBallColours[static_cast<std::size_t>(index) % std::size(kBallColours)];
+    const QVector3D c = pathColour(ballLook(kind, id), kind);
+    return QColor::fromRgbF(c.x(), c.y(), c.z());
+}
+
+QColor RecordingPanel::chartColour(TableKind kind, const std::string& id)
+{
+    return paperColour(displayColour(pathColour(ballLook(kind, id), kind)));
+}
+
+QByteArray RecordingPanel::residualCsv() const
+{
+    if (!residual_ || !recording_) return {};
+    return QByteArray::fromStdString(cuelab::residualCsv(*residual_, *recording_));
 }
 
 RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
@@ -161,20 +191,45 @@ RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
     cancel_->setEnabled(false);
     progress_ = new QProgressBar(this);
     progress_->setObjectName(QStringLiteral("recordingProgress"));
-    progress_->setToolTip(tr("Local searches of the fit done"));
+    progress_->setToolTip(tr("How much of the fit's work is done"));
     progress_->setRange(0, 1);
     progress_->setValue(0);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(fit_);
-    buttons->addWidget(calibrate_);
-    buttons->addWidget(cancel_);
-    buttons->addWidget(progress_, 1);
+    progress_->setVisible(false);  // only while a fit runs
+    exportResiduals_ = new QAction(tr("Residuals (CSV)…"), this);
+    exportResiduals_->setObjectName(QStringLiteral("exportResidualsAction"));
+    exportResiduals_->setStatusTip(tr("Write every recorded sample with the simulated position at its time and their "
+                                      "distance (m) as CSV"));
+    exportSetup_ = new QAction(tr("Fitted Setup…"), this);
+    exportSetup_->setObjectName(QStringLiteral("exportFittedSetupAction"));
+    exportSetup_->setStatusTip(tr("Save the setup as it is now (after a fit: the fitted strike and cloth) as a setup file"));
+    auto* exportButton = new QToolButton(this);
+    exportButton->setObjectName(QStringLiteral("recordingExport"));
+    exportButton->setText(tr("Export"));
+    exportButton->setToolTip(tr("Export the residuals (CSV) or the fitted setup"));
+    exportButton->setPopupMode(QToolButton::InstantPopup);
+    auto* exportMenu = new QMenu(exportButton);
+    exportMenu->addAction(exportResiduals_);
+    exportMenu->addAction(exportSetup_);
+    exportButton->setMenu(exportMenu);
+    // Two rows, so that the dock fits beside the table view in a small window.
+    auto* buttons = new QVBoxLayout;
+    auto* first = new QHBoxLayout;
+    first->addWidget(fit_);
+    first->addWidget(calibrate_);
+    first->addStretch(0);
+    auto* second = new QHBoxLayout;
+    second->addWidget(cancel_);
+    second->addWidget(exportButton);
+    second->addWidget(progress_, 1);
+    second->addStretch(0);  // the buttons keep their size while the progress is hidden
+    buttons->addLayout(first);
+    buttons->addLayout(second);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(header_);
     layout->addWidget(rmse_);
     layout->addLayout(buttons);
-    layout->addWidget(chart_, 2);
+    layout->addWidget(chart_, 3);
     layout->addWidget(balls_, 1);
 
     connect(fit_, &QPushButton::clicked, this, &RecordingPanel::fitStrike);
@@ -253,13 +308,23 @@ void RecordingPanel::refresh()
         for (std::size_t b = 0; b < recording_->balls.size(); ++b) {
             const int row = balls_->rowCount();
             balls_->insertRow(row);
-            balls_->setItem(row, 0, new QTableWidgetItem(QString::fromStdString(recording_->balls[b].id)));
+            auto* id = new QTableWidgetItem(QString::fromStdString(recording_->balls[b].id));
+            QPixmap swatch(12, 12);
+            swatch.fill(chartColour(document_->setup().table.kind, recording_->balls[b].id));
+            id->setIcon(QIcon(swatch));
+            balls_->setItem(row, 0, id);
             balls_->setItem(row, 1, new QTableWidgetItem(QString::number(recording_->balls[b].samples.size())));
             balls_->setItem(row, 2, new QTableWidgetItem(residual_ ? centimetres(residual_->perBall[b].rmse) : QString()));
         }
         balls_->resizeColumnsToContents();
     }
-    chart_->set(residual_, recording_ ? &*recording_ : nullptr);
+    std::vector<double> collisions;
+    if (result)
+        for (const Event& e : result->events)
+            if (e.kind == EventKind::BallBall || e.kind == EventKind::BallCushion) collisions.push_back(e.time);
+    chart_->set(residual_, recording_ ? &*recording_ : nullptr, document_->setup().table.kind, std::move(collisions));
+    exportResiduals_->setEnabled(residual_.has_value());
+    exportSetup_->setEnabled(recording_.has_value());
     fit_->setEnabled(residual_.has_value() && document_->setup().shot.has_value() && !isFitting());
     calibrate_->setEnabled(fit_->isEnabled());
     emit residualChanged();
@@ -284,8 +349,8 @@ void RecordingPanel::fitStrike()
             return std::make_shared<fit::FitResult>(fit::fitStrike(
                 base, recording, keys, options,
                 [done, total](const fit::FitProgress& p) {
-                    done->store(p.searchesDone);
-                    total->store(p.searchesTotal);
+                    total->store(1000);
+                    done->store(static_cast<int>(std::lround(p.fraction * 1000.0)));
                 },
                 token));
         }));
@@ -307,6 +372,7 @@ void RecordingPanel::startProgress(const std::shared_ptr<std::atomic_int>& done,
     calibrate_->setEnabled(false);
     cancel_->setEnabled(true);
     progress_->setRange(0, 0);  // busy until the first step reports
+    progress_->setVisible(true);
 }
 
 void RecordingPanel::calibrateCloth()
@@ -356,6 +422,7 @@ void RecordingPanel::fitDone()
     cancel_->setEnabled(false);
     progress_->setRange(0, 1);
     progress_->setValue(0);
+    progress_->setVisible(false);
     const std::shared_ptr<fit::FitResult> result = watcher_->result();
     const bool cancelled = stop_ && stop_->stop_requested();
     stop_.reset();

@@ -14,6 +14,7 @@
 #include "Residual.h"
 #include "Simulation.h"
 
+#include <QByteArray>
 #include <QColor>
 #include <QWidget>
 
@@ -24,6 +25,7 @@
 #include <optional>
 #include <stop_token>
 
+class QAction;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -53,8 +55,15 @@ public:
     const std::optional<Residual>& residual() const { return residual_; }
     // "struck ball 3.2 cm, every ball 5.1 cm" (empty without a residual): the Outcome dock's line.
     QString summary() const;
-    // The colour of recorded ball `index`: its line in the residual plot and its dots in the view.
-    static QColor ballColour(int index);
+    // The colour of a recorded ball: its simulated path's colour (lifted for contrast with the cloth),
+    // so that its dots and its path in the view are one colour. viewColour: in the view's (linear)
+    // terms, for a view layer; chartColour: the same hue for the residual plot's white ground.
+    static QColor viewColour(TableKind kind, const std::string& id);
+    static QColor chartColour(TableKind kind, const std::string& id);
+    // The residual sample by sample (core/recording residualCsv), "" without one.
+    QByteArray residualCsv() const;
+    QAction* exportResidualsAction() const { return exportResiduals_; }
+    QAction* exportSetupAction() const { return exportSetup_; }
 
     void fitStrike();    // starts the fit (no-op while one runs)
     void calibrateCloth();  // starts the calibration over the session's recordings
@@ -87,6 +96,8 @@ private:
     QPushButton* fit_;
     QPushButton* calibrate_;
     QPushButton* cancel_;
+    QAction* exportResiduals_;
+    QAction* exportSetup_;
     QProgressBar* progress_;
     QFutureWatcher<std::shared_ptr<fit::FitResult>>* watcher_;  // a strike fit or a calibration
     std::unique_ptr<std::stop_source> stop_;

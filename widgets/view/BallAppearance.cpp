@@ -1,6 +1,11 @@
 #include "BallAppearance.h"
 
+#include "TableMesh.h"
+
 #include <QString>
+
+#include <algorithm>
+#include <cmath>
 
 #include <array>
 
@@ -67,14 +72,34 @@ BallLook ballLook(TableKind kind, const std::string& id)
     return look;
 }
 
-QVector3D pathColour(const BallLook& look)
+QColor displayColour(const QVector3D& linear)
 {
+    auto g = [](float v) { return static_cast<float>(std::pow(std::clamp(static_cast<double>(v), 0.0, 1.0), 1.0 / 2.2)); };
+    return QColor::fromRgbF(g(linear.x()), g(linear.y()), g(linear.z()));
+}
+
+QColor paperColour(QColor colour)
+{
+    if (colour.lightnessF() > 0.6) colour = colour.darker(colour.saturationF() < 0.2 ? 260 : 150);
+    return colour;
+}
+
+QVector3D pathColour(const BallLook& look, TableKind kind)
+{
+    const QVector3D grey(0.85f, 0.85f, 0.85f);
     const QVector3D c = look.colour;
     const float brightness = 0.3f * c.x() + 0.59f * c.y() + 0.11f * c.z();
-    if (brightness >= 0.25f) return c;
     // Blend towards light grey so black, maroon or blue paths stay visible on green cloth.
-    const float lift = (0.25f - brightness) / 0.25f * 0.6f;
-    return (1.0f - lift) * c + lift * QVector3D(0.85f, 0.85f, 0.85f);
+    float lift = brightness >= 0.25f ? 0.0f : (0.25f - brightness) / 0.25f * 0.6f;
+    // And away from the cloth's own colour: at least 0.35 apart in display (sRGB) units.
+    const QColor cloth = displayColour(clothColour(kind));
+    const auto distance = [&](const QVector3D& v) {
+        const QColor d = displayColour(v);
+        const double r = d.redF() - cloth.redF(), g = d.greenF() - cloth.greenF(), b = d.blueF() - cloth.blueF();
+        return std::sqrt(r * r + g * g + b * b);
+    };
+    while (lift < 0.9f && distance((1.0f - lift) * c + lift * grey) < 0.35) lift += 0.05f;
+    return (1.0f - lift) * c + lift * grey;
 }
 
 }  // namespace cuelab

@@ -4,6 +4,7 @@
 
 #include "Table.h"
 
+#include <QColor>
 #include <QVector3D>
 
 #include <string>
@@ -19,8 +20,15 @@ struct BallLook {
 
 BallLook ballLook(TableKind kind, const std::string& id);
 
-// A colour for lines drawn for this ball (trails, paths): the ball's colour, lifted when it is too dark
-// to see against the cloth.
-QVector3D pathColour(const BallLook& look);
+// A colour for lines drawn for this ball (trails, paths, a recording's samples): the ball's colour,
+// lifted towards light grey when it is too dark to see, or too close to the colour of the table's
+// cloth (a blue ball on carom cloth, the green 6 on pool cloth). Linear RGB.
+QVector3D pathColour(const BallLook& look, TableKind kind);
+
+// Linear RGB (as the view's colours) to a colour for QPainter (sRGB).
+QColor displayColour(const QVector3D& linear);
+// A line colour for white paper or a chart's white ground: light colours (the cue ball, the 1)
+// darkened, the hue kept.
+QColor paperColour(QColor colour);
 
 }  // namespace cuelab

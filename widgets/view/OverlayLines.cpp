@@ -102,7 +102,7 @@ void buildPathLines(const SimulationResult& result, std::vector<LineVertex>& out
         if (onlyBall >= 0 && index != onlyBall) continue;
         const std::vector<MotionSegment>& timeline = result.timelines[i];
         const BallLook look = ballLook(result.table.kind, result.balls[i].id);
-        const QVector3D c = pathColour(look);
+        const QVector3D c = pathColour(look, result.table.kind);
         double travelled = 0.0;
         for (std::size_t k = 0; k < timeline.size(); ++k) {
             const MotionSegment& seg = timeline[k];

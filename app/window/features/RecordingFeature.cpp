@@ -10,6 +10,8 @@
 #include "RecordingSetup.h"
 #include "SetupFile.h"
 #include "RecentFiles.h"
+#include "ExportFolder.h"
+#include "export/DiagramFiles.h"
 #include "editor/Document.h"
 #include "outcome/OutcomePanel.h"
 #include "recording/RecordingPanel.h"
@@ -26,6 +28,8 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QStatusBar>
+
+#include <algorithm>
 
 namespace cuelab {
 
@@ -44,7 +48,7 @@ ViewLayer recordingLayer(const Recording& recording, const Setup& setup)
     ViewLayer layer;
     for (std::size_t k = 0; k < recording.balls.size(); ++k) {
         const RecordedBall& ball = recording.balls[k];
-        const QColor colour = RecordingPanel::ballColour(static_cast<int>(k));
+        const QColor colour = RecordingPanel::viewColour(setup.table.kind, ball.id);
         GhostTrack& g = layer.ghosts.emplace_back();
         g.label = tr("recorded %1").arg(QString::fromStdString(ball.id));
         const int index = [&] {
@@ -62,7 +66,7 @@ ViewLayer recordingLayer(const Recording& recording, const Setup& setup)
             layer.markers.push_back({Vec3(s.position.x(), s.position.y(), 0.001), colour, float(kSampleDot), {}});
         }
     }
-    layer.legend = tr("dots: the recorded samples of %1, a colour per ball as in the Recording dock")
+    layer.legend = tr("dots: the recorded samples of %1, each in its ball's path colour")
                        .arg(QString::fromStdString(recording.name));
     return layer;
 }
@@ -159,6 +163,9 @@ void installRecording(MainWindow& window)
         panel->setRecording(std::move(recording));
         dock->show();
         dock->raise();
+        // Room for the residual plot: half the window's height (the docks beside it keep the rest).
+        if (!dock->isFloating() && w->dockWidgetArea(dock) != Qt::NoDockWidgetArea)
+            w->resizeDocks({dock}, {std::max(dock->minimumSizeHint().height(), w->height() / 2)}, Qt::Vertical);
         w->statusBar()->showMessage(tr("Opened the recording %1").arg(QFileInfo(path).fileName()), 6000);
         return true;
     };
@@ -187,6 +194,31 @@ void installRecording(MainWindow& window)
         dock->show();
         dock->raise();
         panel->fitStrike();
+    });
+    // Export from the Recording dock: the residual sample by sample, the (fitted) setup.
+    QObject::connect(panel->exportResidualsAction(), &QAction::triggered, w, [w, panel, document] {
+        const QByteArray csv = panel->residualCsv();
+        if (csv.isEmpty() || !panel->recording()) return;
+        const QString base = QString::fromStdString(panel->recording()->name.empty() ? "recording" : panel->recording()->name);
+        QString path = QFileDialog::getSaveFileName(w, tr("Export Residuals"), window::exportStartPath(*document, base + QStringLiteral("-residuals.csv")),
+                                                    tr("CSV (*.csv)"));
+        if (path.isEmpty()) return;
+        if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".csv");
+        window::rememberExportFolder(path);
+        QString error;
+        if (!writeFileAtomically(path, csv, &error)) QMessageBox::warning(w, tr("Export Residuals"), error);
+        else w->statusBar()->showMessage(tr("Wrote the residuals to %1").arg(QFileInfo(path).fileName()), 6000);
+    });
+    QObject::connect(panel->exportSetupAction(), &QAction::triggered, w, [w, panel, document] {
+        const QString base = QString::fromStdString(panel->recording() && !panel->recording()->name.empty() ? panel->recording()->name : "recording");
+        QString path = QFileDialog::getSaveFileName(w, tr("Export Fitted Setup"), window::exportStartPath(*document, base + QStringLiteral("-fitted.json")),
+                                                    tr("CueLab setups (*.json)"));
+        if (path.isEmpty()) return;
+        if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
+        window::rememberExportFolder(path);
+        QString error;
+        if (!io::saveSetup(document->setup(), path, &error)) QMessageBox::warning(w, tr("Export Fitted Setup"), error);
+        else w->statusBar()->showMessage(tr("Wrote the setup to %1").arg(QFileInfo(path).fileName()), 6000);
     });
     window.installEventFilter(opener);
 }
