@@ -261,6 +261,7 @@ QMenu* MainWindow::menu(WindowMenu which)
 void MainWindow::createStatusBar()
 {
     summaryLabel_ = new QLabel(this);
+    summaryLabel_->setObjectName(QStringLiteral("summaryStatus"));
     fpsLabel_ = new QLabel(this);
     fpsLabel_->setToolTip(tr("Frames per second the table view draws"));
     statusBar()->addPermanentWidget(summaryLabel_);
@@ -322,6 +323,10 @@ void MainWindow::refreshResultLists()
                           .arg(formatQuantity(result->endTime, QStringLiteral("s"), 3));
     if (result->status == SimulationStatus::ReachedUntil) summary = tr("%n event(s), stopped at the time limit", nullptr, static_cast<int>(result->events.size()));
     if (!result->finished()) summary = RunState::unfinishedNote(*result);
+    // A lesson's question waits (Document::setHorizon): the count is the shown part's (the outcome
+    // line beside it says up to when).
+    if (document_->isWithholding())
+        summary = tr("%n event(s) before the question", nullptr, static_cast<int>(result->events.size()));
     summaryLabel_->setToolTip(result->finished() ? QString() : QString::fromStdString(result->error));
     summaryLabel_->setText(summary);
 }

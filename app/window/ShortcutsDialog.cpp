@@ -63,6 +63,7 @@ QList<ShortcutsDialog::Row> ShortcutsDialog::keyboardRows(const QMenuBar* menus)
 QList<ShortcutsDialog::Row> ShortcutsDialog::mouseRows()
 {
     const QString view = tr("Table view");
+    const QString predict = tr("Predict (while a question waits)");
     const QString panels = tr("Panels");
     return {
         {view, tr("Select a ball"), tr("Click the ball")},
@@ -71,10 +72,15 @@ QList<ShortcutsDialog::Row> ShortcutsDialog::mouseRows()
         {view, tr("Cue speed"), tr("Drag along the cue: back for faster, forward for slower")},
         {view, tr("Strike off centre (side, height)"), tr("Drag the tip mark on the ball in the player view (Ctrl+2)")},
         {view, tr("Fine-tune the aim (view focused)"), tr("Ctrl+Left/Right: heading ±0.1°; Ctrl+Up/Down: speed ±0.1 m/s; Shift ×10, Alt ×0.1")},
+        {view, tr("Give a ball an initial velocity (at t = 0)"),
+         tr("Ctrl + drag from the ball (not the struck ball), or drag the head of its velocity arrow")},
         {view, tr("Orbit the camera"), tr("Drag on the cloth or the background")},
         {view, tr("Pan the camera"), tr("Right or middle drag, or Shift + drag")},
         {view, tr("Zoom towards the cursor"), tr("Mouse wheel")},
         {view, tr("Centre the camera on a point"), tr("Double-click")},
+        {predict, tr("Say where a ball will go"), tr("Drag from the ringed ball the way it will go; drag again to change it")},
+        {predict, tr("Say a ball stays"), tr("Click the ringed ball")},
+        {predict, tr("Move the camera"), tr("Right or middle drag, and the mouse wheel")},
         {panels, tr("Edit a value"), tr("Double-click a cell, type, Enter")},
         {panels, tr("Place the cue tip"), tr("Click or drag on the ball face in Shot")},
         {panels, tr("Jump to an event"), tr("Click its row in Events")},

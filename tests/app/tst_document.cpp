@@ -48,6 +48,7 @@ private slots:
     void saveAsOnAnExampleProposesACopy();
     void newBallsLandOnLegalSpots();
     void refusalNamesTheEditedBall();
+    void horizonCutsTheResultUntilTheSetupChanges();
 };
 
 void TestDocument::editUndoRedo_data()
@@ -382,6 +383,43 @@ void TestDocument::refusalNamesTheEditedBall()
     QVERIFY(!d.setPhysics(p, QStringLiteral("mu"), 0));
     QVERIFY2(refused.last().front().toString().startsWith(QLatin1String("physics.mu_roll: must be greater than 0")),
              qPrintable(refused.last().front().toString()));
+}
+
+// Issue 44: a horizon (a lesson's question waiting for its reveal) cuts what result() hands the
+// panels, at once and with resultChanged; the whole run stays available; an edit drops the horizon.
+void TestDocument::horizonCutsTheResultUntilTheSetupChanges()
+{
+    Document d;
+    d.waitForResult();
+    const std::shared_ptr<const SimulationResult> whole = d.result();
+    QVERIFY(whole->events.size() >= 3);
+    const double horizon = whole->events[2].time;  // the strike, then two more events
+    QVERIFY(horizon > 0.0 && horizon < whole->endTime);
+    QSignalSpy results(&d, &Document::resultChanged);
+    d.setHorizon(horizon);
+    QCOMPARE(results.count(), 1);
+    QVERIFY(d.isWithholding());
+    QCOMPARE(d.wholeResult(), whole);
+    std::size_t before = 0;
+    for (const Event& e : whole->events)
+        if (e.time < horizon) ++before;
+    QCOMPARE(d.result()->events.size(), before);
+    QCOMPARE(d.result()->endTime, horizon);
+    d.setHorizon(horizon);  // the same horizon: nothing changes
+    QCOMPARE(results.count(), 1);
+    d.setHorizon(std::nullopt);
+    QCOMPARE(results.count(), 2);
+    QCOMPARE(d.result(), whole);
+    QVERIFY(!d.isWithholding());
+    // An edit drops the horizon: the new run is shown whole.
+    d.setHorizon(horizon);
+    std::optional<CueStrike> shot = d.setup().shot;
+    shot->speed *= 0.9;
+    QVERIFY(d.setShot(shot, QStringLiteral("slower"), 0));
+    QVERIFY(!d.horizon());
+    d.waitForResult();
+    QVERIFY(!d.isWithholding());
+    QCOMPARE(d.result(), d.wholeResult());
 }
 
 QTEST_MAIN(TestDocument)

@@ -190,7 +190,7 @@ void TestTranslations::hungarianOutcomeAndHandouts()
     QVERIFY2(all.contains(QStringLiteral("jobb felső lyuk")), qPrintable(all));
     static const QRegularExpression english(
         QStringLiteral("\\b(pocket|pocketed|cushions?|rail|none|at|before|Heading|speed|Struck|Table|friction|restitution|model|"
-                       "open|closed|half|jaw|left|right|top|bottom)\\b"),
+                       "open|closed|half|jaw|left|right|top|bottom|frictionless|frictional)\\b"),
         QRegularExpression::CaseInsensitiveOption);
     const QRegularExpressionMatch found = english.match(all);
     QVERIFY2(!found.hasMatch(), qPrintable(QStringLiteral("English \"%1\" in: %2").arg(found.captured(0), all)));

@@ -29,6 +29,8 @@
 #include <QTableWidget>
 #include <QtTest>
 
+#include <algorithm>
+
 using namespace cuelab;
 
 namespace {
@@ -535,7 +537,17 @@ private slots:
         for (QAction* a : window.menuBar()->actions())
             if (a->menu()) count(a->menu());
         QCOMPARE(rows.size(), withShortcut);
-        QVERIFY(!ShortcutsDialog::mouseRows().isEmpty());
+        // The mouse's gestures include Ctrl+drag (a ball's initial velocity) and the Predict drags
+        // (issue 44).
+        const QList<ShortcutsDialog::Row> mouse = ShortcutsDialog::mouseRows();
+        const auto gesture = [&mouse](const QString& group, const QString& how) {
+            return std::any_of(mouse.begin(), mouse.end(), [&](const ShortcutsDialog::Row& r) {
+                return r.group.startsWith(group) && r.how.contains(how);
+            });
+        };
+        QVERIFY(gesture(QStringLiteral("Table view"), QStringLiteral("Ctrl + drag")));
+        QVERIFY(gesture(QStringLiteral("Predict"), QStringLiteral("Drag from the ringed ball")));
+        QVERIFY(gesture(QStringLiteral("Predict"), QStringLiteral("Click the ringed ball")));
     }
 };
 

@@ -14,11 +14,15 @@
 #include "export/ShotFacts.h"
 #include "i18n/DisplayNames.h"
 #include "lesson/LessonPanel.h"
+#include "Prediction.h"
 #include "outcome/OutcomeLine.h"
 #include "resolve/CushionModel.h"
 #include "ExampleSetup.h"
 
+#include <QBuffer>
 #include <QFile>
+#include <QPainter>
+#include <QSvgGenerator>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QTemporaryDir>
@@ -36,6 +40,21 @@ QString value(const QList<Fact>& facts, const QString& name)
     for (const Fact& f : facts)
         if (f.name == name) return f.value;
     return QStringLiteral("<missing %1>").arg(name);
+}
+
+// One page of the report as SVG text (QSvgGenerator keeps every drawn text as a <text> element).
+QString pageSvg(const LessonReport& report, int page)
+{
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    QSvgGenerator svg;
+    svg.setOutputDevice(&buffer);
+    svg.setSize(QSize(int(LessonReport::kPageWidth), int(LessonReport::kPageHeight)));
+    svg.setViewBox(QRectF(0, 0, LessonReport::kPageWidth, LessonReport::kPageHeight));
+    QPainter painter(&svg);
+    report.paintPage(painter, page);
+    painter.end();
+    return QString::fromUtf8(buffer.data());
 }
 
 QByteArray readAll(const QString& path)
@@ -59,6 +78,7 @@ private slots:
     void elementNamesForPeople();
     void outcomeLineNamesThePocket();
     void lessonFlagsNotesThatNoLongerMatch();
+    void reportCarriesTheQuestionsAndPrintsEachTableOnce();
 
 private:
     QTemporaryDir dir_;
@@ -295,6 +315,62 @@ void TestHandouts::lessonFlagsNotesThatNoLongerMatch()
     shot.headingDeg += 1.0;
     QVERIFY(document.setShot(shot, QStringLiteral("Heading"), 0));
     QVERIFY(panel.staleFlag()->isHidden());
+}
+
+// Issue 44: the report carries the lesson's questions, the student's guesses and the scores, and
+// prints the shot's and the physics' tables once (the diagram's page printed them too).
+void TestHandouts::reportCarriesTheQuestionsAndPrintsEachTableOnce()
+{
+    const Setup s = example("half-ball-cut.json");
+    const auto result = std::make_shared<const SimulationResult>(simulate(s));
+    PredictQuestion asked;
+    asked.prompt = "Where do the cue ball and the 1 go?";
+    const std::vector<lesson::AskedQuestion> questions = lesson::askedQuestions({asked, PredictQuestion{}}, *result);
+    QCOMPARE(questions.size(), std::size_t(2));
+    QCOMPARE(questions[0].balls.size(), std::size_t(2));
+    // The first answered (the cue ball 10° off, the 1 said to stay), the second not yet.
+    const std::optional<double> cue = lesson::actualHeading(*result, questions[0].event, questions[0].balls[0]);
+    QVERIFY(cue);
+    const std::vector<lesson::BallReveal> answers =
+        lesson::reveal(questions[0], {lesson::BallPrediction{true, *cue + 10.0}, lesson::BallPrediction{true, std::nullopt}}, *result);
+    QCOMPARE(answers[0].verdict, lesson::Verdict::Close);
+    QCOMPARE(answers[1].verdict, lesson::Verdict::Wrong);  // the 1 goes
+    const double score = lesson::questionScore(answers);
+
+    LessonReport report(result, s);
+    const int without = report.pageCount();
+    report.setQuestions({{questions[0], answers}, {questions[1], {}}});
+    QCOMPARE(report.pageCount(), without + 1);
+    QStringList pages;
+    for (int page = 1; page <= report.pageCount(); ++page) pages << pageSvg(report, page);
+    const auto pagesWith = [&](const QString& text) {
+        QList<int> found;
+        for (int i = 0; i < pages.size(); ++i)
+            if (pages[i].contains(text)) found << i + 1;
+        return found;
+    };
+    // The questions' page (the third): each question, the guesses, where the balls went, the scores.
+    const QString q = pages[2];
+    QVERIFY(q.contains(QStringLiteral(">Predictions<")));
+    QVERIFY(q.contains(QStringLiteral("Question 1: Where do the cue ball and the 1 go?")));
+    QVERIFY(q.contains(QStringLiteral("Question 2: Where will each ball go?")));
+    QVERIFY(q.contains(QStringLiteral("The shot stops before %1").arg(eventNumber(questions[0].event))));
+    QVERIFY2(q.contains(QStringLiteral(">%1\u00b0<").arg(*cue + 10.0, 0, 'f', 1)), "the cue ball's guess");
+    QVERIFY2(q.contains(QStringLiteral(">%1\u00b0<").arg(*cue, 0, 'f', 1)), "where it went");
+    QVERIFY(q.contains(QStringLiteral(">stays<")));
+    QVERIFY(q.contains(QStringLiteral("(close)")));
+    QVERIFY(q.contains(QStringLiteral(">wrong<")));
+    QVERIFY(q.contains(QStringLiteral(">%1 %<").arg(answers[0].score * 100.0, 0, 'f', 0)));
+    QVERIFY(q.contains(QStringLiteral("score %1 %").arg(score * 100.0, 0, 'f', 0)));
+    QVERIFY(q.contains(QStringLiteral("Mean score %1 % over 1 of 2 questions answered.").arg(score * 100.0, 0, 'f', 0)));
+    QVERIFY(q.contains(QStringLiteral(">not answered<")));
+    // Each table once: the shot's and the physics' facts on the notes' page only.
+    for (const QString& heading : {QStringLiteral(">The shot<"), QStringLiteral(">The physics<"), QStringLiteral(">Cue speed<"),
+                                   QStringLiteral(">Gravity<"), QStringLiteral(">Ball-ball model<")})
+        QCOMPARE(pagesWith(heading), QList<int>{2});
+    QCOMPARE(pagesWith(QStringLiteral(">Events<")), QList<int>{5});
+    // Without questions, no page for them.
+    QVERIFY(!pageSvg(LessonReport(result, s), 3).contains(QStringLiteral(">Predictions<")));
 }
 
 QTEST_MAIN(TestHandouts)

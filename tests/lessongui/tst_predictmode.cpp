@@ -17,6 +17,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -232,15 +233,20 @@ void TestPredictMode::anEditEndsTheSession()
     QVERIFY(!window_->tableView()->layers().count(kPredictLayer));
 }
 
-// Not a check: the window as the user guide shows it (predict-reveal.png), left up for the
+// Not a check: the window as the user guide shows it (predict-before-reveal-*.png, and with
+// CUELAB_SCREENSHOT_REVEAL=1 predict-after-reveal-*.png), left up for the
 // screenshot tool when CUELAB_SCREENSHOT_DEMO=1.
 void TestPredictMode::demo()
 {
     if (qEnvironmentVariableIntValue("CUELAB_SCREENSHOT_DEMO") != 1) QSKIP("only for the user guide's screenshot");
+    // The whole screen (Xvfb has no window manager to maximise the window).
+    if (QScreen* screen = QGuiApplication::primaryScreen()) window_->setGeometry(screen->availableGeometry());
     window_->showMaximized();
+    // The Plots too: before the reveal their curves end at the question (issue 44).
+    if (auto* plots = window_->findChild<QDockWidget*>(QStringLiteral("PlotsDock"))) plots->show();
     const bool reveal = qEnvironmentVariableIntValue("CUELAB_SCREENSHOT_REVEAL") == 1;
     startAndWaitForQuestion();
-    const auto result = window_->document()->result();
+    const auto result = window_->document()->wholeResult();  // (the window shows the shot up to the question)
     const lesson::AskedQuestion& q = panel_->session()->questions()[0];
     // A student who expects the cue ball to follow on and the 1 ball to go a little thin.
     const std::optional<double> cue = lesson::actualHeading(*result, q.event, q.balls[0]);

@@ -2,6 +2,7 @@
 
 #include "i18n/ExampleTexts.h"
 
+#include "Horizon.h"
 #include "LessonIds.h"
 
 #include "KindDefaults.h"
@@ -527,6 +528,8 @@ void Document::applySetup(const Setup& setup)
     // Notes written (or taken back) now are written for this setup.
     if (setup.notes != setup_.notes) notesSetup_ = setup;
     setup_ = setup;
+    // A horizon belongs to the run it was set on (the new run's result clears the cut one).
+    horizon_.reset();
     const bool dragEnds = !editing_ && dragFrom_ != 0;
     if (!editing_) dragFrom_ = 0;  // undo, redo, open: no drag's older results after it
     ++generation_;
@@ -579,8 +582,18 @@ void Document::simulationFinished(const SimulationOutcome& outcome)
 void Document::publish(std::shared_ptr<const SimulationResult> result, quint64 generation)
 {
     result_ = std::move(result);
+    shown_ = horizon_ && result_ ? std::make_shared<const SimulationResult>(lesson::shownBefore(*result_, *horizon_)) : nullptr;
     resultGeneration_ = generation;
     lastShown_.start();
+    emit resultChanged();
+}
+
+void Document::setHorizon(std::optional<double> seconds)
+{
+    if (seconds == horizon_) return;
+    horizon_ = seconds;
+    if (!result_) return;
+    shown_ = horizon_ ? std::make_shared<const SimulationResult>(lesson::shownBefore(*result_, *horizon_)) : nullptr;
     emit resultChanged();
 }
 

@@ -57,7 +57,21 @@ public:
     // where they start at first, then the events as they are computed); when it ends, the whole run,
     // or what a cancelled or cut-short run reached (SimulationResult::finished() tells). Null before
     // the first one.
-    std::shared_ptr<const SimulationResult> result() const { return result_; }
+    //
+    // While a horizon is set (a lesson's question waits for its reveal: setHorizon), the result as
+    // the window may show it: the run up to the horizon only (core/lesson's shownBefore), so that no
+    // panel fed from here can show what happens after it.
+    std::shared_ptr<const SimulationResult> result() const { return shown_ ? shown_ : result_; }
+    // The whole run, horizon or not: for whatever must know the answer (the reveal's scoring).
+    std::shared_ptr<const SimulationResult> wholeResult() const { return result_; }
+    // Predictions without spoilers (issue 44): from now on result() ends at `seconds` (nullopt: the
+    // whole run again). Emits resultChanged when what result() returns changes, so that every panel
+    // and the timeline follow at once. Any change of the setup drops the horizon: it belongs to the
+    // run it was set on.
+    void setHorizon(std::optional<double> seconds);
+    std::optional<double> horizon() const { return horizon_; }
+    // The horizon hides part of the run: result() ends before the whole run does.
+    bool isWithholding() const { return horizon_ && shown_ && result_ && shown_->endTime < result_->endTime; }
     bool isSimulating() const { return running_; }
     // True when result() is the current setup's finished run (complete, cut short or cancelled): no
     // more of it will come.
@@ -159,6 +173,8 @@ private:
     int mergeSession_ = 0;
 
     std::shared_ptr<const SimulationResult> result_;
+    std::optional<double> horizon_;                  // s: result() ends here (setHorizon)
+    std::shared_ptr<const SimulationResult> shown_;  // result_ cut at horizon_; null without one
     SimulationRunner* runner_;
     QTimer* pending_;  // a run still going after a moment is shown as it goes
     QTimer* stream_;   // while shown, its result so far is fetched a few times a second

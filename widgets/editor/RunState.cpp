@@ -18,6 +18,11 @@ QString RunState::simulatingText(long long events, double time)
     return tr("Simulating… %1 events, t = %2").arg(count(events), formatQuantity(time, QStringLiteral("s"), 3));
 }
 
+QString RunState::withheldNote(double horizon)
+{
+    return tr("Until the reveal: the shot up to t = %1").arg(formatQuantity(horizon, QStringLiteral("s"), 3));
+}
+
 QString RunState::unfinishedNote(const SimulationResult& result)
 {
     const QString at = formatQuantity(result.endTime, QStringLiteral("s"), 3);

@@ -18,6 +18,9 @@ public:
     //   "Stopped at t = 0.840 s (cancelled after 1,240 events): a partial result"
     //   "Cut short at t = 0.840 s (event limit reached): a partial result"
     static QString unfinishedNote(const SimulationResult& result);
+    // A lesson's question waits for its reveal (Document::setHorizon): the window shows the shot up
+    // to `horizon` (s) only. "Until the reveal: the shot up to t = 0.412 s".
+    static QString withheldNote(double horizon);
     // The progress line of a run still going: "Simulating… 1,240 events, t = 0.840 s".
     static QString simulatingText(long long events, double time);
 };

@@ -18,6 +18,7 @@ public:
     void setTimeline(double endTime, const std::vector<double>& eventTimes);
     void setTime(double seconds);  // does not emit timeScrubbed
     double timeAt(int position) const { return position * kSecondsPerStep; }
+    const std::vector<int>& ticks() const { return ticks_; }  // the events' slider positions
 
 signals:
     void timeScrubbed(double seconds);  // the user moved the slider

@@ -2,6 +2,7 @@
 
 #include "view/BallAppearance.h"
 
+#include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QPainter>
 
@@ -11,6 +12,9 @@
 namespace cuelab {
 
 namespace {
+
+// The context lupdate gives tr() calls in functions of namespace cuelab (resources/translations).
+QString tr(const char* text) { return QCoreApplication::translate("cuelab", text); }
 
 QColor printColour(TableKind kind, const std::string& id)
 {
@@ -59,7 +63,7 @@ std::vector<ChartLine> chartLines(const SimulationResult& result, plots::Quantit
         if (top > 0.0) lines.push_back(std::move(line));  // balls that never move stay off the chart
     }
     if (plots::isEnergy(q) && result.balls.size() > 1)
-        lines.push_back({QStringLiteral("table total"), Qt::black, plots::tableCurve(result, q, options)});
+        lines.push_back({tr("table total"), Qt::black, plots::tableCurve(result, q, options), true});
     return lines;
 }
 
@@ -105,7 +109,7 @@ void paintChart(QPainter& p, const QRectF& area, const QString& title, const QSt
     for (double v = std::ceil(v0 / vs) * vs; v <= v1; v += vs)
         p.drawText(QRectF(area.left(), Y(v) - em / 2, plot.left() - area.left() - 0.3 * em, em), Qt::AlignRight | Qt::AlignVCenter,
                    QString::number(std::abs(v) < vs * 1e-9 ? 0.0 : v, 'g', 4));
-    p.drawText(QRectF(plot.left(), plot.bottom() + 1.1 * em, plot.width(), em), Qt::AlignHCenter, QStringLiteral("time (s)"));
+    p.drawText(QRectF(plot.left(), plot.bottom() + 1.1 * em, plot.width(), em), Qt::AlignHCenter, tr("time (s)"));
     p.setPen(QPen(Qt::black, 0.8));
     p.setBrush(Qt::NoBrush);
     p.drawRect(plot);
@@ -119,7 +123,7 @@ void paintChart(QPainter& p, const QRectF& area, const QString& title, const QSt
     // The lines, clipped to the plot.
     p.setClipRect(plot);
     for (const ChartLine& l : lines) {
-        QPen pen(l.colour, std::max(0.8, em / 8), l.name == QLatin1String("table total") ? Qt::DashLine : Qt::SolidLine);
+        QPen pen(l.colour, std::max(0.8, em / 8), l.tableTotal ? Qt::DashLine : Qt::SolidLine);
         p.setPen(pen);
         for (const plots::Polyline& poly : l.curve) {
             QPolygonF points;

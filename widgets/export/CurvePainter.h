@@ -20,6 +20,7 @@ struct ChartLine {
     QString name;
     QColor colour;
     std::vector<plots::Polyline> curve;
+    bool tableTotal = false;  // the table's total (energy): drawn dashed
 };
 
 // The lines of one quantity for every ball (those that move), and for energy the table's total.

@@ -10,6 +10,7 @@
 #include "explain/ConservationWidget.h"
 #include "explain/ExplainLanguage.h"
 #include "i18n/DisplayNames.h"
+#include "lesson/PredictionText.h"
 
 #include <QCoreApplication>
 
@@ -42,9 +43,11 @@ QString id(const SimulationResult& r, int ball) { return QString::fromStdString(
 QString text(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
 // Pages are laid out on a canvas 1000 units wide (A4 portrait: 1414 high), scaled to the device.
-constexpr double kWidth = 1000.0;
-constexpr double kHeight = 1414.0;
+constexpr double kWidth = LessonReport::kPageWidth;
+constexpr double kHeight = LessonReport::kPageHeight;
 constexpr double kMargin = 60.0;
+constexpr double kColumnGap = 14.0;  // between the columns of a table
+constexpr double kSmallestPx = 9.0;  // a table too wide for the page is set smaller, down to this
 
 class Pages {
 public:
@@ -100,6 +103,80 @@ double factTable(QPainter& p, double x, double y, double width, const QString& h
         y += std::max(nameBox.height(), valueBox.height()) + 4;
     }
     return y;
+}
+
+// The columns of a table: each as wide as its widest cell, or the longest word of its heading (the
+// heading wraps word by word), kColumnGap apart. Languages whose words are longer than English's
+// must not run one column into the next: a table wider than the page is set in a smaller font.
+struct Columns {
+    std::vector<double> x;
+    std::vector<double> width;
+    double px = 13.0;       // the cells' font size
+    double headerHeight = 0.0;
+};
+
+Columns fitColumns(const QStringList& headers, const std::vector<QStringList>& rows, double px, double available)
+{
+    const auto natural = [&](double size) {
+        std::vector<double> widths(static_cast<std::size_t>(headers.size()), 0.0);
+        const QFontMetricsF cell(font(size));
+        const QFontMetricsF heading(font(size, true));
+        for (qsizetype c = 0; c < headers.size(); ++c) {
+            double& w = widths[static_cast<std::size_t>(c)];
+            for (const QString& word : headers[c].split(QLatin1Char(' '), Qt::SkipEmptyParts)) w = std::max(w, heading.horizontalAdvance(word));
+            for (const QStringList& row : rows)
+                if (c < row.size()) w = std::max(w, cell.horizontalAdvance(row[c]));
+        }
+        return widths;
+    };
+    Columns cols;
+    cols.px = px;
+    std::vector<double> widths = natural(px);
+    const auto total = [&] {
+        double sum = kColumnGap * static_cast<double>(std::max<qsizetype>(0, headers.size() - 1));
+        for (const double w : widths) sum += w;
+        return sum;
+    };
+    if (total() > available) {
+        cols.px = std::max(kSmallestPx, px * available / total());
+        widths = natural(cols.px);
+    }
+    // The room left over goes to the columns evenly, so that the table spans the page.
+    const double spare = std::max(0.0, available - total()) / static_cast<double>(std::max<qsizetype>(1, headers.size()));
+    double x = kMargin;
+    const QFontMetricsF heading(font(cols.px, true));
+    for (std::size_t c = 0; c < widths.size(); ++c) {
+        cols.x.push_back(x);
+        cols.width.push_back(widths[c] + spare);
+        cols.headerHeight = std::max(cols.headerHeight, heading.boundingRect(QRectF(0, 0, widths[c] + spare, 1e4), Qt::TextWordWrap,
+                                                                             headers[static_cast<qsizetype>(c)]).height());
+        x += widths[c] + spare + kColumnGap;
+    }
+    return cols;
+}
+
+// The headings of a table (bold, wrapped within their columns) and a rule under them; returns the y
+// below the rule.
+double tableHeader(QPainter& p, double y, const Columns& cols, const QStringList& headers)
+{
+    p.setFont(font(cols.px, true));
+    for (std::size_t c = 0; c < cols.x.size(); ++c)
+        p.drawText(QRectF(cols.x[c], y, cols.width[c], cols.headerHeight), Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignBottom,
+                   headers[static_cast<qsizetype>(c)]);
+    y += cols.headerHeight + 5;
+    p.setPen(QPen(QColor(160, 160, 160), 0.6));
+    p.drawLine(QPointF(kMargin, y), QPointF(kWidth - kMargin, y));
+    p.setPen(Qt::black);
+    return y + 3;
+}
+
+// One row of a table in the cells' font, each cell within its column; returns the y below it.
+double tableRow(QPainter& p, double y, const Columns& cols, const QStringList& cells, double height)
+{
+    p.setFont(font(cols.px));
+    for (std::size_t c = 0; c < cols.x.size() && static_cast<qsizetype>(c) < cells.size(); ++c)
+        p.drawText(QRectF(cols.x[c], y, cols.width[c], height), Qt::AlignLeft | Qt::AlignVCenter, cells[static_cast<qsizetype>(c)]);
+    return y + height;
 }
 
 void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& title, const QString& notes,
@@ -245,20 +322,58 @@ void eventPage(QPainter& p, const SimulationResult& r, int first, int count, boo
 {
     double y = 60.0;
     if (heading) y = paragraph(p, y, tr("Events"), 18, true);
-    const double cols[] = {kMargin, kMargin + 50, kMargin + 160, kMargin + 300, kMargin + 480, kMargin + 680};
-    p.setFont(font(13, true));
-    const QString headers[] = {QStringLiteral("#"), tr("time (s)"), tr("type"), tr("balls"), tr("cushion / pocket"),
-                               tr("speed before \u2192 after (m/s)")};
-    for (int c = 0; c < 6; ++c) p.drawText(QPointF(cols[c], y + 14), headers[c]);
-    y += 22;
-    p.setPen(QPen(QColor(160, 160, 160), 0.6));
-    p.drawLine(QPointF(kMargin, y), QPointF(kWidth - kMargin, y));
-    p.setPen(Qt::black);
-    p.setFont(font(13));
-    for (int i = first; i < std::min<int>(first + count, static_cast<int>(r.events.size())); ++i) {
-        const QStringList row = LessonReport::eventRow(r, i);
-        for (int c = 0; c < 6; ++c) p.drawText(QPointF(cols[c], y + 14), row[c]);
-        y += 31.0;
+    const QStringList headers = {QStringLiteral("#"), tr("time (s)"), tr("type"), tr("balls"), tr("cushion / pocket"),
+                                 tr("speed before \u2192 after (m/s)")};
+    std::vector<QStringList> rows;
+    for (int i = first; i < std::min<int>(first + count, static_cast<int>(r.events.size())); ++i) rows.push_back(LessonReport::eventRow(r, i));
+    const Columns cols = fitColumns(headers, rows, 13.0, kWidth - 2 * kMargin);
+    y = tableHeader(p, y, cols, headers);
+    for (const QStringList& row : rows) y = tableRow(p, y, cols, row, 31.0);
+}
+
+// The lesson's questions: each with where the shot stops, then per asked ball the guess, where it
+// went, the angle between them and the score; the question's score and, over the answered ones, the
+// mean.
+void questionsPage(QPainter& p, const SimulationResult& r, const std::vector<ReportQuestion>& questions)
+{
+    double y = paragraph(p, 60.0, tr("Predictions"), 18, true);
+    double sum = 0.0;
+    int answered = 0;
+    for (const ReportQuestion& q : questions)
+        if (!q.answers.empty()) {
+            sum += lesson::questionScore(q.answers);
+            ++answered;
+        }
+    y = paragraph(p, y,
+                  answered > 0 ? tr("Mean score %1 over %2 of %3 questions answered.").arg(PredictionText::score(sum / answered)).arg(answered).arg(questions.size())
+                               : tr("No question answered yet: %1 to ask.").arg(questions.size()),
+                  15);
+    const QStringList headers = {tr("ball"), tr("guess"), tr("went"), tr("error"), tr("score")};
+    for (std::size_t n = 0; n < questions.size() && y < kHeight - 160; ++n) {
+        const ReportQuestion& q = questions[n];
+        const QString prompt = PredictionText::prompt(q.asked);
+        y += 8;
+        y = paragraph(p, y, tr("Question %1: %2").arg(n + 1).arg(prompt), 15, true) - 4;
+        QString stops = tr("The shot stops before %1 at %2 s").arg(eventNumber(q.asked.event)).arg(q.asked.time, 0, 'f', 3);
+        if (!q.answers.empty()) stops += QStringLiteral(" \u2014 ") + tr("score %1").arg(PredictionText::score(lesson::questionScore(q.answers)));
+        y = paragraph(p, y, stops, 13);
+        std::vector<QStringList> rows;
+        for (std::size_t b = 0; b < q.asked.balls.size(); ++b) {
+            const int ball = q.asked.balls[b];
+            const QString name = ball >= 0 && ball < static_cast<int>(r.balls.size()) ? id(r, ball) : QString::number(ball);
+            if (b >= q.answers.size()) {
+                rows.push_back({name, tr("not answered"), QString(), QString(), QString()});
+                continue;
+            }
+            const lesson::BallReveal& a = q.answers[b];
+            rows.push_back({name, a.predicted.answered ? PredictionText::heading(a.predicted.headingDeg) : PredictionText::verdict(lesson::Verdict::NoAnswer),
+                            PredictionText::heading(a.actualDeg),
+                            PredictionText::error(a),
+                            PredictionText::score(a.score)});
+        }
+        const Columns cols = fitColumns(headers, rows, 13.0, kWidth - 2 * kMargin);
+        y = tableHeader(p, y, cols, headers);
+        for (const QStringList& row : rows) y = tableRow(p, y, cols, row, 22.0);
     }
 }
 
@@ -329,6 +444,25 @@ int LessonReport::eventPages() const
     return std::max(1, (events + kEventRowsPerPage - 1) / kEventRowsPerPage);
 }
 
+void LessonReport::paintPage(QPainter& painter, int page) const
+{
+    if (!result_) return;
+    if (page == 1) {
+        // The diagram with its caption (the outcome in a line); the shot's and the physics' tables are
+        // the next page's, printed once.
+        const ShotDiagram diagram(result_, DiagramText{title_, QString()});
+        diagram.paint(painter, QRectF(kMargin, 60, kWidth - 2 * kMargin, kHeight - 140));
+        return;
+    }
+    if (page == 2) return notesAndOutcomePage(painter, *result_, title_, notes_, facts_, noteChanges_, game_);
+    int k = page - 2;  // the pages after the notes
+    if (!questions_.empty() && k-- == 1) return questionsPage(painter, *result_, questions_);
+    if (k == 1) return keyCollisionPage(painter, *result_, shot_);
+    const int eventPage = k - 2;  // 0-based among the event pages
+    if (eventPage < eventPages()) return cuelab::eventPage(painter, *result_, eventPage * kEventRowsPerPage, kEventRowsPerPage, eventPage == 0);
+    plotsPage(painter, *result_);
+}
+
 bool LessonReport::write(const QString& path, QString* error, const Progress& progress) const
 {
     if (!result_) {
@@ -358,36 +492,10 @@ bool LessonReport::write(const QString& path, QString* error, const Progress& pr
         painter.setRenderHint(QPainter::Antialiasing);
         Pages layout(pdf, painter);
         const QString header = QCoreApplication::translate("cuelab", "CueLab lesson report \u2014 %1").arg(title_.isEmpty() ? QCoreApplication::translate("cuelab", "untitled shot") : title_);
-        int page = 1;
-        auto next = [&]() {
-            if (progress && !progress(page, pages)) cancelled = true;
-            ++page;
-            return !cancelled;
-        };
-        layout.begin(page, pages, header);
-        DiagramText text{title_, QString()};
-        text.facts = facts_;
-        const ShotDiagram diagram(result_, text);
-        diagram.paint(painter, QRectF(kMargin, 60, kWidth - 2 * kMargin, kHeight - 140));
-        if (next()) {
+        for (int page = 1; page <= pages && !cancelled; ++page) {
             layout.begin(page, pages, header);
-            notesAndOutcomePage(painter, *result_, title_, notes_, facts_, noteChanges_, game_);
-            bool going = next();
-            if (going) {
-                layout.begin(page, pages, header);
-                keyCollisionPage(painter, *result_, shot_);
-                going = next();
-            }
-            for (int k = 0; going && k < eventPages(); ++k) {
-                layout.begin(page, pages, header);
-                eventPage(painter, *result_, k * kEventRowsPerPage, kEventRowsPerPage, k == 0);
-                going = next();
-            }
-            if (going) {
-                layout.begin(page, pages, header);
-                plotsPage(painter, *result_);
-                next();
-            }
+            paintPage(painter, page);
+            if (progress && !progress(page, pages)) cancelled = true;
         }
         painter.end();
     }

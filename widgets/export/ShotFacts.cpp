@@ -1,5 +1,7 @@
 #include "ShotFacts.h"
 
+#include "i18n/DisplayNames.h"
+
 #include "Table.h"
 #include "resolve/CushionModel.h"
 
@@ -47,7 +49,7 @@ ShotFacts shotFacts(const Setup& setup)
         {tr("Spin friction μsp"), number(p.muSpin)},
         {tr("Gravity"), withUnit(p.gravity, tr("m/s²"))},
     };
-    QString ballBall = text(toString(p.ballBallModel));
+    QString ballBall = displayCoreName(toString(p.ballBallModel));  // "frictionless", in the window's language
     if (p.ballBallModel == BallBallModel::Frictional)
         ballBall += p.ballBallFrictionKind == BallBallFriction::Alciatore ? tr(", μb from Alciatore's fit")
                                                                           : tr(", μb = %1").arg(number(p.ballBallFriction));

@@ -1,6 +1,7 @@
 #include "PredictPanel.h"
 
 #include "PredictSession.h"
+#include "PredictionText.h"
 #include "editor/Document.h"
 #include "editor/ResultFeed.h"
 #include "editor/Selection.h"
@@ -21,24 +22,6 @@ namespace {
 
 enum QuestionColumn { StopsBeforeColumn = 0, BallsColumn, PromptColumn, QuestionColumns };
 enum ResultColumn { QuestionColumn = 0, BallColumn, GuessColumn, ActualColumn, ErrorColumn, ScoreColumn, ResultColumns };
-
-QString headingText(const std::optional<double>& heading)
-{
-    return heading ? PredictPanel::tr("%1°").arg(*heading, 0, 'f', 1) : PredictPanel::tr("stays");
-}
-
-QString verdictText(lesson::Verdict v)
-{
-    switch (v) {
-    case lesson::Verdict::SpotOn: return PredictPanel::tr("spot on");
-    case lesson::Verdict::Close: return PredictPanel::tr("close");
-    case lesson::Verdict::Off: return PredictPanel::tr("off");
-    case lesson::Verdict::Right: return PredictPanel::tr("right");
-    case lesson::Verdict::Wrong: return PredictPanel::tr("wrong");
-    case lesson::Verdict::NoAnswer: return PredictPanel::tr("no answer");
-    }
-    return {};
-}
 
 QTableWidgetItem* readOnly(const QString& text)
 {
@@ -139,7 +122,10 @@ PredictPanel::PredictPanel(Document* document, Playback* playback, Selection* se
 void PredictPanel::loadQuestions()
 {
     const auto& questions = document_->setup().questions;
-    const auto result = document_->isResultCurrent() ? document_->result() : nullptr;
+    // The whole run names the events, except those a waiting question hides (Document::setHorizon):
+    // "#9 ball-pocket" would give the answer away.
+    const auto result = document_->isResultCurrent() ? document_->wholeResult() : nullptr;
+    const std::optional<double> horizon = document_->isWithholding() ? document_->horizon() : std::nullopt;
     loading_ = true;
     questions_->setRowCount(static_cast<int>(questions.size()));
     for (std::size_t i = 0; i < questions.size(); ++i) {
@@ -147,7 +133,10 @@ void PredictPanel::loadQuestions()
         QString stops = tr("the first collision");
         if (q.event) {
             stops = eventNumber(*q.event);
-            if (result && *q.event < static_cast<int>(result->events.size()))
+            if (result && *q.event < static_cast<int>(result->events.size()) && horizon &&
+                result->events[std::size_t(*q.event)].time >= *horizon)
+                stops = tr("%1 (shown after the reveal)").arg(stops);
+            else if (result && *q.event < static_cast<int>(result->events.size()))
                 stops = tr("%1 %2 at %3 s")
                             .arg(stops, displayName(result->events[std::size_t(*q.event)].kind))
                             .arg(result->events[std::size_t(*q.event)].time, 0, 'f', 3);
@@ -238,7 +227,7 @@ void PredictPanel::refreshMode()
         const lesson::AskedQuestion& q = session_->questions()[std::size_t(current)];
         const auto& p = session_->predictions();
         const auto answered = std::count_if(p.begin(), p.end(), [](const lesson::BallPrediction& b) { return b.answered; });
-        const QString prompt = q.prompt.empty() ? tr("Where will each ball go?") : QString::fromStdString(q.prompt);
+        const QString prompt = PredictionText::prompt(q);
         text = tr("Question %1 of %2: %3\nDrag from each ball where it will go (a click on a ball: it stays). "
                   "%4 of %5 answered.")
                    .arg(current + 1)
@@ -275,11 +264,10 @@ void PredictPanel::refreshResults()
             const QString id = result ? QString::fromStdString(result->balls[std::size_t(b.ball)].id) : QString::number(b.ball);
             results_->setItem(row, QuestionColumn, readOnly(QString::number(r.question + 1)));
             results_->setItem(row, BallColumn, readOnly(id));
-            results_->setItem(row, GuessColumn, readOnly(b.predicted.answered ? headingText(b.predicted.headingDeg) : tr("—")));
-            results_->setItem(row, ActualColumn, readOnly(headingText(b.actualDeg)));
-            results_->setItem(row, ErrorColumn, readOnly(b.errorDeg ? tr("%1° (%2)").arg(*b.errorDeg, 0, 'f', 1).arg(verdictText(b.verdict))
-                                                              : verdictText(b.verdict)));
-            results_->setItem(row, ScoreColumn, readOnly(tr("%1 %").arg(b.score * 100.0, 0, 'f', 0)));
+            results_->setItem(row, GuessColumn, readOnly(b.predicted.answered ? PredictionText::heading(b.predicted.headingDeg) : tr("—")));
+            results_->setItem(row, ActualColumn, readOnly(PredictionText::heading(b.actualDeg)));
+            results_->setItem(row, ErrorColumn, readOnly(PredictionText::error(b)));
+            results_->setItem(row, ScoreColumn, readOnly(PredictionText::score(b.score)));
             ++row;
         }
     }

@@ -61,7 +61,7 @@ bool PredictSession::start(QString* why)
         if (why) *why = tr("The shot is still being simulated; try again in a moment.");
         return false;
     }
-    result_ = document_->result();
+    result_ = document_->wholeResult();
     std::vector<PredictQuestion> questions = document_->setup().questions;
     if (questions.empty()) questions.emplace_back();  // no questions written: the first collision
     skipped_.clear();
@@ -75,11 +75,18 @@ bool PredictSession::start(QString* why)
     view_->installEventFilter(this);
     current_ = 0;
     playback_->pause();
+    withholdUntil(0);  // nothing after the first question shows until it is revealed
     setState(State::Playing);
     playback_->setTime(0.0);
     onTime(playback_->time());  // a question at the very start (setTime emits only on a change)
     if (state_ == State::Playing) playback_->play();  // unless the first question stops at the start
     return true;
+}
+
+void PredictSession::withholdUntil(int question)
+{
+    document_->setHorizon(question < static_cast<int>(asked_.size()) ? std::optional<double>(asked_[std::size_t(question)].time)
+                                                                      : std::nullopt);
 }
 
 void PredictSession::hideAnswers()
@@ -109,6 +116,7 @@ void PredictSession::stop()
     dragging_ = -1;
     current_ = -1;
     predictions_.clear();
+    document_->setHorizon(std::nullopt);  // everything shows again
     setState(State::Idle);
 }
 
@@ -162,6 +170,7 @@ void PredictSession::reveal()
     setState(State::Revealed);
     drawLayer();
     emit revealedChanged();
+    withholdUntil(current_ + 1);  // the panels show up to the next question, or the whole shot
     playback_->play();  // on to the next question, or the end
 }
 

@@ -8,6 +8,10 @@
 //
 // States: Idle → Playing → Asking → (Reveal) Revealed, playing on → Asking the next … → Finished.
 // Any edit of the shot, a new document or stop() ends the session.
+//
+// Until a question is revealed, nothing in the window shows what happens after its moment: the
+// session sets the document's horizon (Document::setHorizon) to the next unrevealed question's time,
+// and every panel, the status line and the time slider are fed the shot up to there only.
 
 #include "Prediction.h"
 #include "view/TableView.h"
@@ -44,6 +48,8 @@ public:
     ~PredictSession() override;
 
     State state() const { return state_; }
+    // The run the questions were asked on (the whole of it); null before the first start.
+    std::shared_ptr<const SimulationResult> run() const { return result_; }
     // The questions of this run (in time order) and the one asked or revealed now (-1 none).
     const std::vector<lesson::AskedQuestion>& questions() const { return asked_; }
     int current() const { return current_; }
@@ -78,6 +84,9 @@ protected:
 
 private:
     void setState(State state);
+    // Predictions without spoilers (issue 44): every panel is fed the shot only up to question
+    // `question`'s moment (Document::setHorizon); past the last question, the whole shot.
+    void withholdUntil(int question);
     // While a question waits, the overlays that show the future (paths after now, contact markers,
     // ghost balls) would give the answer away: hidden, and shown again as they were on Reveal or Stop.
     void hideAnswers();

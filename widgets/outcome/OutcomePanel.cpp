@@ -91,6 +91,14 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
         header_->setText(tr("No simulation yet"));
         return;
     }
+    if (!withheld_.isEmpty()) {
+        // A lesson's question waits: no outcome, not even the outcome so far ("pocketed: none" would
+        // read as an answer).
+        outcome_ = {};
+        summary_ = tr("%1; the outcome shows after the reveal").arg(withheld_);
+        header_->setText(summary_);
+        return;
+    }
     const SimulationResult& r = *result_;
     outcome_ = shotOutcome(r);
     summary_ = outcomeLine(r, outcome_);

@@ -26,6 +26,10 @@ public:
     void setResult(std::shared_ptr<const SimulationResult> result);
     // The game whose rules judge the shot (none: no verdict); takes effect at the next setResult.
     void setGame(const std::optional<GameSpec>& game) { game_ = game; }
+    // A lesson's question waits for its reveal (Document::setHorizon): the panel gives `note`
+    // (RunState::withheldNote) and no outcome, no verdict. Empty: the whole run. Takes effect at the
+    // next setResult.
+    void setWithheld(const QString& note) { withheld_ = note; }
     const std::optional<rules::Verdict>& verdict() const { return verdict_; }
     QString verdictLine() const { return verdictLine_; }  // the verdict in the window's language; empty: none
     const ShotOutcome& outcome() const { return outcome_; }
@@ -52,6 +56,7 @@ private:
     QString verdictLine_;
     QString summary_;
     QString recordingResidual_;
+    QString withheld_;
     QLabel* header_ = nullptr;
     QTableWidget* facts_ = nullptr;
     QTableWidget* balls_ = nullptr;

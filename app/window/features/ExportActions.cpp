@@ -43,9 +43,10 @@ bool eventsJson(const SimulationResult& result, const QString& path, QString* er
 }
 
 bool lessonReport(std::shared_ptr<const SimulationResult> result, const Setup& setup, const QStringList& noteChanges,
-                  const QString& path, QString* error, const Progress& progress)
+                  std::vector<ReportQuestion> questions, const QString& path, QString* error, const Progress& progress)
 {
-    const LessonReport report(std::move(result), setup, noteChanges);
+    LessonReport report(std::move(result), setup, noteChanges);
+    report.setQuestions(std::move(questions));
     return report.write(path, error, [&](int done, int total) {
         return !progress || progress(static_cast<double>(done) / total);
     });

@@ -6,12 +6,14 @@
 
 #include "Setup.h"
 #include "Simulation.h"
+#include "export/LessonReport.h"
 
 #include <QString>
 #include <QStringList>
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace cuelab::exports {
 
@@ -29,8 +31,9 @@ bool eventsCsv(const SimulationResult& result, const QString& path, QString* err
 bool eventsJson(const SimulationResult& result, const QString& path, QString* error, const GameSpec* game = nullptr);
 
 // The lesson report (widgets/export/LessonReport): several PDF pages, with the setup's shot and
-// physics, and `noteChanges` (what changed since the notes were written) beside the notes.
+// physics, `noteChanges` (what changed since the notes were written) beside the notes, and the
+// lesson's questions with the guesses and scores made so far.
 bool lessonReport(std::shared_ptr<const SimulationResult> result, const Setup& setup, const QStringList& noteChanges,
-                  const QString& path, QString* error, const Progress& progress = {});
+                  std::vector<ReportQuestion> questions, const QString& path, QString* error, const Progress& progress = {});
 
 }  // namespace cuelab::exports

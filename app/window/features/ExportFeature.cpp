@@ -11,6 +11,8 @@
 #include "editor/Playback.h"
 #include "export/DiagramFiles.h"
 #include "export/ShotFacts.h"
+#include "lesson/PredictPanel.h"
+#include "lesson/PredictSession.h"
 #include "view/Screenshot.h"
 #include "view/TableView.h"
 
@@ -110,6 +112,30 @@ std::shared_ptr<const SimulationResult> currentResult(MainWindow& window)
     std::shared_ptr<const SimulationResult> r = window.document()->result();
     if (!r) QMessageBox::information(&window, tr("Export"), tr("There is no simulation to export yet."));
     return r;
+}
+
+// The lesson's questions for the report: the Predict dock's session with its guesses and scores when
+// it ran on this shot, else the setup's questions as this run would ask them (unanswered).
+std::vector<ReportQuestion> reportQuestions(MainWindow& window)
+{
+    const Document* document = window.document();
+    const std::shared_ptr<const SimulationResult> whole = document->wholeResult();
+    if (!whole) return {};
+    std::vector<ReportQuestion> questions;
+    const auto* panel = window.findChild<PredictPanel*>();
+    const PredictSession* session = panel ? panel->session() : nullptr;
+    if (session && session->run() == whole && !session->questions().empty()) {
+        for (std::size_t i = 0; i < session->questions().size(); ++i) {
+            ReportQuestion q{session->questions()[i], {}};
+            for (const PredictSession::Revealed& r : session->revealed())
+                if (r.question == static_cast<int>(i)) q.answers = r.balls;
+            questions.push_back(std::move(q));
+        }
+        return questions;
+    }
+    for (lesson::AskedQuestion& asked : lesson::askedQuestions(document->setup().questions, *whole))
+        questions.push_back({std::move(asked), {}});
+    return questions;
 }
 
 constexpr int kCurrentView = -1;  // the camera box's item for the table view's own camera (else a CameraPreset)
@@ -229,14 +255,14 @@ void installExport(MainWindow& window)
         const Setup& setup = w->document()->setup();
         const QStringList changes = setup.notes.empty() ? QStringList() : factChanges(w->document()->notesWrittenFor(), setup);
         runInBackground(*w, tr("Writing the lesson report..."), path,
-                        [result, path, setup, changes](const exports::Progress& progress, QString* error) {
-                            return exports::lessonReport(result, setup, changes, path, error, progress);
+                        [result, path, setup, changes, questions = reportQuestions(*w)](const exports::Progress& progress, QString* error) {
+                            return exports::lessonReport(result, setup, changes, questions, path, error, progress);
                         });
     });
     report->setObjectName(QStringLiteral("exportReport"));
     report->setShortcut(QKeySequence(QStringLiteral("Ctrl+Shift+R")));
-    report->setStatusTip(tr("A printable report: the diagram, the lesson's notes, the shot and physics, the outcome, the key "
-                            "collision derived, the event table, the plots"));
+    report->setStatusTip(tr("A printable report: the diagram, the lesson's notes, the shot and physics, the outcome, the "
+                            "questions with the guesses and scores, the key collision derived, the event table, the plots"));
     menu->addSeparator();
 
     struct Data {

@@ -7,6 +7,7 @@
 #include "editor/EventTreeModel.h"
 #include "editor/EventsPanel.h"
 #include "editor/ResultFeed.h"
+#include "editor/RunState.h"
 #include "editor/Selection.h"
 #include "outcome/OutcomePanel.h"
 
@@ -34,6 +35,8 @@ void installOutcome(MainWindow& window)
     auto* events = window.findChild<EventsPanel*>();
     auto show = [panel, line, document, events] {
         panel->setGame(document->setup().game);
+        // Until a lesson's question is revealed, the outcome so far (Document::setHorizon).
+        panel->setWithheld(document->isWithholding() ? RunState::withheldNote(*document->horizon()) : QString());
         panel->setResult(document->result());
         line->setText(panel->summary());
         if (events) events->model()->setMarkedEvent(panel->verdict() ? panel->verdict()->event : -1, panel->verdictLine());
