@@ -294,6 +294,22 @@
         <source>The strikes that meet the goal most often for the chosen player</source>
         <translation>Azok a lökések, amelyek a választott játékosnál a leggyakrabban teljesítik a célt</translation>
     </message>
+    <message>
+        <source>Turn the cue</source>
+        <translation>A dákó elfordítása</translation>
+    </message>
+    <message>
+        <source>Pull back the cue</source>
+        <translation>A dákó hátrahúzása</translation>
+    </message>
+    <message>
+        <source>Aim through the ghost ball</source>
+        <translation>Célzás a szellemgolyón át</translation>
+    </message>
+    <message>
+        <source>Move the cue tip</source>
+        <translation>A dákóvég áthelyezése</translation>
+    </message>
 </context>
 <context>
     <name>cuelab</name>
@@ -504,10 +520,6 @@
     <message>
         <source>Arrows: 1 N·s = %1 m</source>
         <translation>Nyilak: 1 N·s = %1 m</translation>
-    </message>
-    <message>
-        <source>A printable report: the diagram, the lesson&apos;s notes, the shot and physics, the outcome, the key collision derived, the event table, the plots</source>
-        <translation>Nyomtatható jelentés: az ábra, a lecke jegyzetei, az ütés és a fizika, a eredmény, a kulcsütközés levezetése, az eseménytáblázat, a grafikonok</translation>
     </message>
     <message>
         <source>recorded %1</source>
@@ -974,10 +986,6 @@
         <translation>Lyukak</translation>
     </message>
     <message>
-        <source>dots: the recorded samples of %1, a colour per ball as in the Recording dock</source>
-        <translation>pontok: %1 rögzített mintái, golyónként egy szín, mint a Felvétel panelen</translation>
-    </message>
-    <message>
         <source>Heading (°)</source>
         <translation>Irány (°)</translation>
     </message>
@@ -1345,6 +1353,86 @@ Exportálja az eddig kiszámolt eseményeket?</translation>
         <source>Camera</source>
         <translation>Kamera</translation>
     </message>
+    <message>
+        <source>A printable report: the diagram, the lesson&apos;s notes, the shot and physics, the outcome, the questions with the guesses and scores, the key collision derived, the event table, the plots</source>
+        <translation>Nyomtatható jelentés: az ábra, a lecke jegyzetei, a lövés és a fizika, a kimenetel, a kérdések a tippekkel és a pontszámokkal, a kulcsütközés levezetése, az eseménytáblázat, a grafikonok</translation>
+    </message>
+    <message>
+        <source>dots: the recorded samples of %1, each in its ball&apos;s path colour</source>
+        <translation>pontok: %1 felvett mintái, mindegyik a golyója pályájának színében</translation>
+    </message>
+    <message>
+        <source>Export Residuals</source>
+        <translation>Eltérések exportálása</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Wrote the residuals to %1</source>
+        <translation>Az eltérések kiírva ide: %1</translation>
+    </message>
+    <message>
+        <source>Export Fitted Setup</source>
+        <translation>Az illesztett beállítás exportálása</translation>
+    </message>
+    <message>
+        <source>CueLab setups (*.json)</source>
+        <translation>CueLab-beállítások (*.json)</translation>
+    </message>
+    <message>
+        <source>Wrote the setup to %1</source>
+        <translation>A beállítás kiírva ide: %1</translation>
+    </message>
+    <message>
+        <source>table total</source>
+        <translation>az asztal összesen</translation>
+    </message>
+    <message>
+        <source>Predictions</source>
+        <translation>Jóslatok</translation>
+    </message>
+    <message>
+        <source>Mean score %1 over %2 of %3 questions answered.</source>
+        <translation>Átlagos pontszám: %1 (%3 kérdésből %2 megválaszolva).</translation>
+    </message>
+    <message>
+        <source>No question answered yet: %1 to ask.</source>
+        <translation>Még nincs megválaszolt kérdés: %1 kérdés vár.</translation>
+    </message>
+    <message>
+        <source>guess</source>
+        <translation>tipp</translation>
+    </message>
+    <message>
+        <source>went</source>
+        <translation>ment</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>eltérés</translation>
+    </message>
+    <message>
+        <source>score</source>
+        <translation>pontszám</translation>
+    </message>
+    <message>
+        <source>Question %1: %2</source>
+        <translation>%1. kérdés: %2</translation>
+    </message>
+    <message>
+        <source>The shot stops before %1 at %2 s</source>
+        <translation>A lövés megáll ez előtt: %1, %2 s-nál</translation>
+    </message>
+    <message>
+        <source>score %1</source>
+        <translation>pontszám: %1</translation>
+    </message>
+    <message>
+        <source>not answered</source>
+        <translation>nincs megválaszolva</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::AimControl</name>
@@ -1391,6 +1479,53 @@ Exportálja az eddig kiszámolt eseményeket?</translation>
     <message>
         <source>Aim at %1, cut %2 %3</source>
         <translation>Célzás a(z) %1 golyóra, vágás %2 %3</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::AimDrag</name>
+    <message>
+        <source>The cue: drag across it to turn it (the heading), along it to pull back for more speed or push forward for less. Ctrl+Left/Right turns it by 0.1°, Ctrl+Up/Down changes the speed by 0.1 m/s (with Shift ten times as much, with Alt a tenth).</source>
+        <translation>A dákó: keresztben húzva elfordul (az irány), hosszában hátrahúzva gyorsabb, előretolva lassabb lesz. Ctrl+Bal/Jobb 0,1°-kal fordítja, Ctrl+Fel/Le 0,1 m/s-mal változtatja a sebességet (Shifttel tízszer annyival, Alttal egy tizedével).</translation>
+    </message>
+    <message>
+        <source>The ghost ball: where the struck ball meets the first object ball. Drag it to aim: the cue line goes through its centre.</source>
+        <translation>A szellemgolyó: itt éri el a meglökött golyó az első tárgygolyót. Húzza a célzáshoz: a dákó vonala a középpontján megy át.</translation>
+    </message>
+    <message>
+        <source>Where the cue tip meets the ball: drag it for side (left, right) and height (follow above the centre, draw below it).</source>
+        <translation>Itt éri a dákóvég a golyót: húzza az oldalirányhoz (balra, jobbra) és a magassághoz (a közép fölött utánfutó, alatta visszahúzó ütés).</translation>
+    </message>
+    <message>
+        <source>heading %1°</source>
+        <translation>irány %1°</translation>
+    </message>
+    <message>
+        <source>cue speed %1 m/s</source>
+        <translation>dákósebesség %1 m/s</translation>
+    </message>
+    <message>
+        <source>tip: side %1 R, height %2 R</source>
+        <translation>dákóvég: oldal %1 R, magasság %2 R</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>balra</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>jobbra</translation>
+    </message>
+    <message>
+        <source>cut %1° %2, ball fraction %3</source>
+        <translation>vágás %1° %2, golyóhányad %3</translation>
+    </message>
+    <message>
+        <source>no object ball hit</source>
+        <translation>nem talál el tárgygolyót</translation>
+    </message>
+    <message>
+        <source>ball speed %1 m/s</source>
+        <translation>golyósebesség %1 m/s</translation>
     </message>
 </context>
 <context>
@@ -2881,10 +3016,6 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
         <translation>%1. A valódi játékon túli értékek: %2</translation>
     </message>
     <message>
-        <source>Set the velocity of ball %1</source>
-        <translation>A(z) %1 golyó sebességének beállítása</translation>
-    </message>
-    <message>
         <source>Not applied: %1</source>
         <translation>Nem alkalmazva: %1</translation>
     </message>
@@ -3207,6 +3338,12 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
     <message>
         <source>Opened the shot code as %1</source>
         <translation>A lökéskód megnyitva ezen a néven: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n event(s) before the question</source>
+        <translation>
+            <numerusform>%n esemény a kérdés előtt</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3611,6 +3748,10 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
     <message>
         <source>%1. So far: %2</source>
         <translation>%1. Eddig: %2</translation>
+    </message>
+    <message>
+        <source>%1; the outcome shows after the reveal</source>
+        <translation>%1; a kimenetel a felfedés után látható</translation>
     </message>
 </context>
 <context>
@@ -4264,6 +4405,10 @@ Kimaradt kérdés: %1</translation>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
+    <message>
+        <source>%1 (shown after the reveal)</source>
+        <translation>%1 (a felfedés után látható)</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::PredictSession</name>
@@ -4326,10 +4471,6 @@ Kimaradt kérdés: %1</translation>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <source>Distance (cm) between each recorded sample and the simulated ball at the sample&apos;s time (s), one line per ball: where the model and the recording part</source>
-        <translation>Az egyes rögzített minták távolsága (cm) a szimulált golyótól a minta idejében (s), golyónként egy vonal: ahol a modell és a felvétel elválik</translation>
-    </message>
-    <message>
         <source>The residual over time, once a recording is open</source>
         <translation>Az eltérés az idő függvényében, ha van megnyitott felvétel</translation>
     </message>
@@ -4376,10 +4517,6 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>Stop the fit; the shot stays as it was</source>
         <translation>Az illesztés leállítása; az ütés változatlan marad</translation>
-    </message>
-    <message>
-        <source>Local searches of the fit done</source>
-        <translation>Az illesztés elvégzett helyi keresései</translation>
     </message>
     <message>
         <source>struck ball %1, every ball %2</source>
@@ -4437,6 +4574,38 @@ Kimaradt kérdés: %1</translation>
         <source>Cloth calibrated: μr = %1, μs = %2; RMSE %3 (moved balls); Edit → Undo takes it back</source>
         <translation>Posztó kalibrálva: μr = %1, μs = %2; RMSE %3 (mozgó golyók); Szerkesztés → Visszavonás visszaveszi</translation>
     </message>
+    <message>
+        <source>Distance (cm) between each recorded sample and the simulated ball at the sample&apos;s time (s), one line per ball: where the model and the recording part. Thin grey lines: the simulation&apos;s collisions</source>
+        <translation>Az egyes felvett minták távolsága (cm) a szimulált golyótól a minta idejében (s), golyónként egy vonal: itt válik el a modell és a felvétel. Vékony szürke vonalak: a szimuláció ütközései</translation>
+    </message>
+    <message>
+        <source>How much of the fit&apos;s work is done</source>
+        <translation>Az illesztés munkájának elvégzett része</translation>
+    </message>
+    <message>
+        <source>Residuals (CSV)…</source>
+        <translation>Eltérések (CSV)…</translation>
+    </message>
+    <message>
+        <source>Write every recorded sample with the simulated position at its time and their distance (m) as CSV</source>
+        <translation>Minden felvett minta kiírása CSV-be a szimulált helyzettel az idejében és a távolságukkal (m)</translation>
+    </message>
+    <message>
+        <source>Fitted Setup…</source>
+        <translation>Illesztett beállítás…</translation>
+    </message>
+    <message>
+        <source>Save the setup as it is now (after a fit: the fitted strike and cloth) as a setup file</source>
+        <translation>A beállítás mentése a mostani állapotában (illesztés után: az illesztett ütéssel és posztóval) beállításfájlként</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportálás</translation>
+    </message>
+    <message>
+        <source>Export the residuals (CSV) or the fitted setup</source>
+        <translation>Az eltérések (CSV) vagy az illesztett beállítás exportálása</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::RunState</name>
@@ -4455,6 +4624,10 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>Cut short at t = %1 (event limit reached): a partial result</source>
         <translation>Idő előtt leállt t = %1-nál (elérte az eseménykorlátot): részeredmény</translation>
+    </message>
+    <message>
+        <source>Until the reveal: the shot up to t = %1</source>
+        <translation>A felfedésig: a lövés t = %1 pillanatig</translation>
     </message>
 </context>
 <context>
@@ -4574,6 +4747,74 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>Mouse</source>
         <translation>Egér</translation>
+    </message>
+    <message>
+        <source>Predict (while a question waits)</source>
+        <translation>Jóslás (amíg egy kérdés vár)</translation>
+    </message>
+    <message>
+        <source>Aim: turn the cue (at t = 0)</source>
+        <translation>Célzás: a dákó elfordítása (t = 0-nál)</translation>
+    </message>
+    <message>
+        <source>Drag across the cue, or drag the ghost ball</source>
+        <translation>A dákó keresztirányú húzása vagy a szellemgolyó húzása</translation>
+    </message>
+    <message>
+        <source>Cue speed</source>
+        <translation>Dákósebesség</translation>
+    </message>
+    <message>
+        <source>Drag along the cue: back for faster, forward for slower</source>
+        <translation>A dákó hosszirányú húzása: hátra gyorsabb, előre lassabb</translation>
+    </message>
+    <message>
+        <source>Strike off centre (side, height)</source>
+        <translation>Középen kívüli ütés (oldal, magasság)</translation>
+    </message>
+    <message>
+        <source>Drag the tip mark on the ball in the player view (Ctrl+2)</source>
+        <translation>A golyón lévő dákóvégjel húzása játékosnézetben (Ctrl+2)</translation>
+    </message>
+    <message>
+        <source>Fine-tune the aim (view focused)</source>
+        <translation>A célzás finomhangolása (fókuszban a nézet)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Left/Right: heading ±0.1°; Ctrl+Up/Down: speed ±0.1 m/s; Shift ×10, Alt ×0.1</source>
+        <translation>Ctrl+Bal/Jobb: irány ±0,1°; Ctrl+Fel/Le: sebesség ±0,1 m/s; Shift ×10, Alt ×0,1</translation>
+    </message>
+    <message>
+        <source>Give a ball an initial velocity (at t = 0)</source>
+        <translation>Kezdősebesség adása egy golyónak (t = 0-nál)</translation>
+    </message>
+    <message>
+        <source>Ctrl + drag from the ball (not the struck ball), or drag the head of its velocity arrow</source>
+        <translation>Ctrl + húzás a golyótól (nem a meglökött golyótól), vagy a sebességnyíl hegyének húzása</translation>
+    </message>
+    <message>
+        <source>Say where a ball will go</source>
+        <translation>Megadni, merre megy majd egy golyó</translation>
+    </message>
+    <message>
+        <source>Drag from the ringed ball the way it will go; drag again to change it</source>
+        <translation>Húzás a bekarikázott golyótól arra, amerre menni fog; újabb húzással módosítható</translation>
+    </message>
+    <message>
+        <source>Say a ball stays</source>
+        <translation>Megadni, hogy egy golyó a helyén marad</translation>
+    </message>
+    <message>
+        <source>Click the ringed ball</source>
+        <translation>Kattintás a bekarikázott golyóra</translation>
+    </message>
+    <message>
+        <source>Move the camera</source>
+        <translation>A kamera mozgatása</translation>
+    </message>
+    <message>
+        <source>Right or middle drag, and the mouse wheel</source>
+        <translation>Húzás jobb vagy középső gombbal, és az egérgörgő</translation>
     </message>
 </context>
 <context>
