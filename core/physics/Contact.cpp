@@ -121,17 +121,37 @@ void gaussSeidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::
 
 // The active rows' equations As x = bs. As is symmetric positive semi-definite (J M^-1 J^T): a
 // pivoted LDLT solves it when it is well conditioned, which is nearly always and several times
-// cheaper than an orthogonal decomposition; when a pivot is tiny against the largest (dependent
-// normals: a ball at a cushion-jaw junction, or a ball at rest held like a wall by several
-// contacts) the equations may have no exact solution and the complete orthogonal decomposition
-// gives the least-squares one, as it always did.
-Eigen::VectorXd solveActive(const Eigen::MatrixXd& As, const Eigen::VectorXd& bs)
+// cheaper than an orthogonal decomposition. When a pivot is tiny against the largest, the rows are
+// dependent: a packed cluster has more contacts than its balls have directions to move in (a
+// triangle of three touching balls, a ball at rest held like a wall by several contacts), or a ball
+// sits at the junction of a rail and its jaw. The equations are then consistent or not:
+//   - consistent (the packed cluster: every solution gives the balls the same accelerations, since
+//     x^T As x = |M^-1/2 J^T x|^2), the basic solution does, with no force on the dependent rows:
+//     the pivoted LDLT's leading block alone, its tiny pivots left out, checked by its residual
+//     (within `tolerance`, the pivoting's own, 1e-12 of the problem's largest acceleration);
+//   - inconsistent (the jaw's curvature parts its contact faster than the rail's, issue 19), the
+//     complete orthogonal decomposition's least-squares answer, whose residual tells the pivoting
+//     which row the others part (it then leaves the set).
+// (Issue 40: a 41-ball cluster's solves fell back to the orthogonal decomposition at most pivots;
+// it costs about three LDLTs.)
+Eigen::VectorXd solveActive(const Eigen::MatrixXd& As, const Eigen::VectorXd& bs, double tolerance)
 {
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(As);
-    if (ldlt.info() == Eigen::Success && ldlt.isPositive()) {
+    if (ldlt.info() == Eigen::Success) {
         const Eigen::VectorXd d = ldlt.vectorD();
         const double largest = d.cwiseAbs().maxCoeff();
-        if (largest > 0.0 && d.minCoeff() > 1e-8 * largest) return ldlt.solve(bs);
+        if (largest > 0.0 && d.minCoeff() > 1e-8 * largest && ldlt.isPositive()) return ldlt.solve(bs);
+        if (largest > 0.0 && d.minCoeff() > -1e-8 * largest) {
+            // As = P^T L D L^T P, the tiny pivots last (the pivoting takes the largest diagonal first):
+            // the basic solution puts no force on their rows. (L's columns below them, divided by
+            // rounding, only reach rows that are set to zero here.)
+            Eigen::VectorXd y = ldlt.transpositionsP() * bs;
+            ldlt.matrixL().solveInPlace(y);
+            for (Eigen::Index k = 0; k < y.size(); ++k) y(k) = d(k) > 1e-8 * largest ? y(k) / d(k) : 0.0;
+            ldlt.matrixU().solveInPlace(y);
+            Eigen::VectorXd x = ldlt.transpositionsP().transpose() * y;
+            if ((As * x - bs).cwiseAbs().maxCoeff() <= tolerance) return x;
+        }
     }
     return As.completeOrthogonalDecomposition().solve(bs);
 }
@@ -141,22 +161,27 @@ Eigen::VectorXd solveActive(const Eigen::MatrixXd& As, const Eigen::VectorXd& bs
 // active; a negative force leaves the set, a negative g joins it. Deterministic (ties go to the
 // lowest index). Returns false (and the Gauss-Seidel answer) when it runs out of pivots.
 //
-// `start`, when given, is the active set to begin from (a previous solve of nearly the same problem:
-// the rounds of solveContacts' roll-off fixed point change a few balls' responses at a time, and
-// most of the contacts pressed in one round are pressed in the next); otherwise the rows pressed now.
+// `start`, when given, is the active set to begin from, per row 1 or 0 (-1: the row starts active
+// when pressed now, b < 0): a previous solve of nearly the same problem. The rounds of
+// solveContacts' roll-off fixed point change a few balls' responses at a time, and a held group
+// solved again (its next segment, the next event of a cascade) keeps most of its pressed contacts:
+// begun there, the pivoting takes a step or two where it took one per contact from cold, each a
+// factorisation of the active rows (issue 40: a 38-ball packed cluster). The answer is the
+// problem's, whatever the start: the pivoting ends only at a complementary solution.
 bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::vector<char>& bilateral,
-              int maxPivots, Eigen::VectorXd& N, std::vector<char>& active, const std::vector<char>* start = nullptr)
+              int maxPivots, Eigen::VectorXd& N, std::vector<char>& active, const std::vector<signed char>* start = nullptr)
 {
     const Eigen::Index m = b.size();
     N.setZero(m);
-    const std::vector<char> begin = start != nullptr && start->size() == static_cast<std::size_t>(m) ? *start : std::vector<char>();
+    const bool warm = start != nullptr && start->size() == static_cast<std::size_t>(m);
     active.assign(static_cast<std::size_t>(m), 0);
     double scale = 0.0;
     for (Eigen::Index k = 0; k < m; ++k) scale = std::max(scale, std::abs(b(k)));
     const double tolG = 1e-12 * scale + 1e-300;
-    for (Eigen::Index k = 0; k < m; ++k)
-        active[static_cast<std::size_t>(k)] =
-            bilateral[static_cast<std::size_t>(k)] || (begin.empty() ? b(k) < 0.0 : begin[static_cast<std::size_t>(k)] != 0) ? 1 : 0;
+    for (Eigen::Index k = 0; k < m; ++k) {
+        const signed char hint = warm ? (*start)[static_cast<std::size_t>(k)] : -1;
+        active[static_cast<std::size_t>(k)] = bilateral[static_cast<std::size_t>(k)] || (hint < 0 ? b(k) < 0.0 : hint != 0) ? 1 : 0;
+    }
     const int pivots = maxPivots < 0 ? 8 * static_cast<int>(m) + 16 : maxPivots;
     for (int iteration = 0; iteration < pivots; ++iteration) {
         std::vector<Eigen::Index> set;
@@ -171,7 +196,7 @@ bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::vec
                 bs(r) = -b(set[static_cast<std::size_t>(r)]);
                 for (Eigen::Index c = 0; c < s; ++c) As(r, c) = A(set[static_cast<std::size_t>(r)], set[static_cast<std::size_t>(c)]);
             }
-            const Eigen::VectorXd x = solveActive(As, bs);
+            const Eigen::VectorXd x = solveActive(As, bs, tolG);
             Eigen::Index worst = -1;
             for (Eigen::Index r = 0; r < s; ++r) {
                 if (bilateral[static_cast<std::size_t>(set[static_cast<std::size_t>(r)])]) continue;
@@ -294,7 +319,8 @@ Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactL
 }
 
 ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
-                              const PhysicsParams& p, ContactForces mode, int maxPivots)
+                              const PhysicsParams& p, ContactForces mode, int maxPivots,
+                              const std::vector<signed char>* warm)
 {
     const std::size_t n = balls.size();
     std::vector<Response> resp(n);
@@ -311,9 +337,11 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
     // depends on the forces: a few rounds of a fixed point, each a full solve.
     auto solveWith = [&] {
         buildSystem(balls, links, resp, mode == ContactForces::Pressed ? 1.0 : kHeldCurvatureShare, A, b);
-        // Each round after the first starts from the previous round's pressed contacts.
-        const std::vector<char> previous = out.active;
-        out.converged = solveLcp(A, b, unilateral, maxPivots, N, out.active, previous.empty() ? nullptr : &previous);
+        // The first round starts from `warm` (the caller's previous solve), each later one from the
+        // previous round's pressed contacts.
+        std::vector<signed char> previous(out.active.begin(), out.active.end());
+        const std::vector<signed char>* start = out.active.empty() ? warm : &previous;
+        out.converged = solveLcp(A, b, unilateral, maxPivots, N, out.active, start);
         std::fill(force.begin(), force.end(), Vec2::Zero());
         std::fill(forceZ.begin(), forceZ.end(), 0.0);
         for (std::size_t k = 0; k < links.size(); ++k) {

@@ -110,6 +110,9 @@ struct HeldContact {
     // Held without the curvature allowance (its forces keep the frozen normal's distance): its
     // tangential motion slows too fast for the allowance (the simulator's bookkeeping; not compared).
     bool flat = false;
+    // Its last solve's answer (1 pressed, 0 not, -1 none): where the next solve of its group begins
+    // its pivoting (solveContacts' `warm`; the simulator's bookkeeping, not compared).
+    signed char pressed = -1;
     bool operator==(const HeldContact& o) const { return a == o.a && body == o.body && other == o.other; }
 };
 
@@ -179,10 +182,12 @@ enum class ContactForces : std::uint8_t { Pressed, Held };
 
 // The forces of a group of touching bodies whose relative normal velocities are zero.
 // `maxPivots` bounds the active-set pivoting (< 0: the default, 8 per link + 16); tests pass 0 to
-// reach the Gauss-Seidel fallback.
+// reach the Gauss-Seidel fallback. `warm` (per link: 1 pressed, 0 not, -1 unknown) is where the
+// pivoting begins, a previous solve of the same contacts; the answer is the problem's either way
+// (the pivoting ends only at a complementary solution), only found in fewer steps.
 ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
                               const PhysicsParams& p, ContactForces mode = ContactForces::Held,
-                              int maxPivots = -1);
+                              int maxPivots = -1, const std::vector<signed char>* warm = nullptr);
 
 // Re-seating: normal impulses at the links, applied together by contactResponse's rule, so that
 //   - a held link (held[k] != 0: its forces press it, or it is a collision's hold) ends with no

@@ -272,7 +272,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         HeldContact c = *candidate;
         c.since = t;
         for (const HeldContact& h : held_)
-            if (h == c) c.since = h.since;
+            if (h == c) c.since = h.since, c.pressed = h.pressed;
         consider(c, true);
     }
     const std::size_t candidateLink = candidate && !contacts.empty() && contacts.back() == *candidate ? contacts.size() - 1
@@ -282,10 +282,14 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     // Which contacts the forces press now (the one test of "pressed", with the curvature term). The
     // candidate is held when pressed, or when holding is forced (no approach, or a law that does not
     // part the bodies: it would be found again at this instant).
+    // Each solve begins its pivoting where the last one of these contacts ended (Contact.h's `warm`):
+    // the group's previous solve, then this one's previous step.
+    std::vector<signed char> lastPressed(links.size());
+    for (std::size_t k = 0; k < links.size(); ++k) lastPressed[k] = contacts[k].pressed;
     std::vector<char> heldMask(links.size(), 0);
     if (!links.empty()) {
-        const ContactSolution probe = solveContacts(balls, links, p_, ContactForces::Pressed);
-        for (std::size_t k = 0; k < links.size(); ++k) heldMask[k] = probe.active[k];
+        const ContactSolution probe = solveContacts(balls, links, p_, ContactForces::Pressed, -1, &lastPressed);
+        for (std::size_t k = 0; k < links.size(); ++k) heldMask[k] = lastPressed[k] = probe.active[k];
     }
     bool candidateHeld = false;
     if (candidateLink < links.size()) {
@@ -370,9 +374,11 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     std::vector<char> keep(links.size(), 0), stillSkipped(links.size(), 0);
     {
         std::vector<ContactLink> trial;
-        for (std::size_t k : open) trial.push_back(links[k]);
+        std::vector<signed char> trialStart;
+        for (std::size_t k : open) trial.push_back(links[k]), trialStart.push_back(lastPressed[k]);
         ContactSolution pressed;
-        if (!trial.empty()) pressed = solveContacts(balls, trial, p_, ContactForces::Pressed);
+        if (!trial.empty()) pressed = solveContacts(balls, trial, p_, ContactForces::Pressed, -1, &trialStart);
+        for (std::size_t r = 0; r < open.size(); ++r) lastPressed[open[r]] = pressed.active[r];
         auto still = [&](int m) {  // the ball neither moves nor is pushed into motion
             if (m < 0) return true;
             const std::size_t q = at(m);
@@ -446,17 +452,22 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
                 flattened = true;
             }
         }
-        if (flattened) sol = solveContacts(balls, keptLinks, p_, ContactForces::Held);
+        const std::vector<signed char> start(sol.active.begin(), sol.active.end());
+        if (flattened) sol = solveContacts(balls, keptLinks, p_, ContactForces::Held, -1, &start);
     };
     for (;;) {
         keptLinks.clear();
+        std::vector<signed char> start;
         for (std::size_t k = 0; k < links.size(); ++k)
             if (keep[k]) {
                 keptLinks.push_back(links[k]);
+                start.push_back(lastPressed[k]);
                 if (flat[k]) keptLinks.back().curvature = 0.0;
             }
-        sol = keptLinks.empty() ? ContactSolution{} : solveContacts(balls, keptLinks, p_, ContactForces::Held);
+        sol = keptLinks.empty() ? ContactSolution{} : solveContacts(balls, keptLinks, p_, ContactForces::Held, -1, &start);
         if (!keptLinks.empty()) flatten();
+        for (std::size_t k = 0, r = 0; k < links.size(); ++k)
+            if (keep[k]) lastPressed[k] = sol.active[r++];
         auto pathOfMember = [&](int m) {
             const std::size_t q = at(m);
             BallState st = balls[q].state;
@@ -508,6 +519,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         if (keep[k]) {
             kept.push_back(contacts[k]);
             kept.back().flat = flat[k];
+            kept.back().pressed = lastPressed[k];
             if (kept.back().since < 0.0) kept.back().since = t;  // (a touching contact held from now)
         }
     if (candidateLink < links.size()) candidateHeld = keep[candidateLink];  // (kept at rest: nothing to hold)

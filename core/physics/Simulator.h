@@ -164,8 +164,8 @@ private:
     // (`onCloth`: b's state to be held is on the cloth whatever its segment says, a hop the cloth
     // takes, airBallBall's hold rule.)
     bool airHoldable(int a, int b, bool onCloth = false) const;
-    // A flying ball a pressed on a ball b of the cloth that a group holds (or a itself held on one):
-    // their contact joins the group (settle) as a row in space.
+    // A flying ball a pressed on a ball b (on the cloth or flying) that a group holds (or a itself held
+    // on one): their contact joins the group (settle) as a row in space.
     bool groupHoldable(int a, int b) const;
     struct AirHoldForce {
         double force = 0.0;          // N, along the normal (> 0 pressed)

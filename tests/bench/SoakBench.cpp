@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <ctime>
 #include <vector>
 
 namespace cuelab::bench {
@@ -154,9 +155,14 @@ int checkCommand(int argc, char** argv)
             ++failed;
             continue;
         }
+        // (The processor time of the simulation alone; checkRun's second, determinism run is not counted.)
+        timespec t0{}, t1{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t0);
         const SimulationResult r = simulate(*setup, simulation);
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t1);
+        const double cpu = static_cast<double>(t1.tv_sec - t0.tv_sec) + 1e-9 * static_cast<double>(t1.tv_nsec - t0.tv_nsec);
         const std::vector<soak::Failure> failures = soak::checkRun(*setup, r, {}, nullptr, simulation);
-        std::printf("%s: %zu events, %s\n", file.c_str(), r.events.size(), failures.empty() ? "passes" : "FAILS");
+        std::printf("%s: %zu events, %.3f s of CPU, %s\n", file.c_str(), r.events.size(), cpu, failures.empty() ? "passes" : "FAILS");
         for (const soak::Failure& f : failures) std::printf("  %s: %s\n", std::string(soak::toString(f.kind)).c_str(), f.message.c_str());
         if (trace) printTrace(r);
         failed += failures.empty() ? 0 : 1;

@@ -44,7 +44,11 @@
 // most. peer-break-energy-rise-at-5-7 raised the energy of its grouped event's pair while the group
 // it solved lost more (its event now lists those balls, Event::group, and the check judges them all).
 // over-a-pocket-mouth-off-table-9m-later (airborne) left the table 9 m away instead of beyond the
-// pocket it flew over (offTableWhereItLeaves).
+// pocket it flew over (offTableWhereItLeaves). seed41-shot193948, seed101-shot186657,
+// seed101-shot112464, wide-seed7-shot38200 and wide-seed7-shot86560 (airborne: found with the strike
+// keeping its vertical part) cascaded at one instant in a struck frozen cluster to the event cap, a
+// flying ball met again and again by a held group's member (or two flying balls, one of them held)
+// with a law that changed nothing; the contact is now the group's to solve (AirCollisions.cpp).
 
 #include "RunChecks.h"
 
