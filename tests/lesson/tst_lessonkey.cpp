@@ -92,7 +92,7 @@ void TestLessonKey::refused_data()
     QTest::addColumn<QString>("message");  // the whole message
     QTest::newRow("not an object") << QByteArray("[]") << "cut.json: lesson: expected an object, found an array";
     QTest::newRow("unknown key") << QByteArray(R"({"question": []})")
-                                 << "cut.json: lesson.question: unknown key (expected one of: questions)";
+                                 << "cut.json: lesson.question: unknown key (expected one of: questions, notes_written_for)";
     QTest::newRow("questions not an array") << QByteArray(R"({"questions": {}})")
                                             << "cut.json: lesson.questions: expected an array, found an object";
     QTest::newRow("question not an object") << QByteArray(R"({"questions": [3]})")
