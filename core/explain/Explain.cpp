@@ -3,6 +3,7 @@
 #include "Frames.h"
 
 #include "Flight.h"
+#include "HeldGroupExplain.h"
 #include "Motion.h"
 #include "Parts.h"
 
@@ -161,6 +162,7 @@ Explanation explain(const SimulationResult& result, int index, const std::option
     case EventKind::BallOffTable: detail::explainOffTable(result, index, e); break;
     default: detail::explainTransition(result, index, e); break;
     }
+    if (detail::carriesHeldGroup(ev)) detail::addHeldGroupSteps(result, index, shot, e);
     return e;
 }
 
