@@ -94,6 +94,34 @@ void addProblem(StepBuilder& b, const ComplementarityTrace& c, const std::string
     }
 }
 
+// The traces of the last result explained on this thread: explaining its events one after another
+// (a property test, a whole report) runs the shot again once, not once per event. A trace is used
+// only when its states after are the event's bit for bit, so a stale entry is never shown.
+std::optional<HeldGroupTrace> groupOf(const SimulationResult& r, int index, const std::optional<CueStrike>& shot)
+{
+    struct Cache {
+        const SimulationResult* result = nullptr;
+        std::size_t events = 0;
+        double end = 0.0;
+        std::vector<HeldGroupTrace> traces;
+    };
+    thread_local Cache cache;
+    if (cache.result != &r || cache.events != r.events.size() || cache.end != r.endTime) {
+        cache = Cache{&r, r.events.size(), r.endTime, traceHeldGroups(r, shot)};
+    }
+    const Event& ev = r.events.at(static_cast<std::size_t>(index));
+    for (const HeldGroupTrace& g : cache.traces) {
+        if (g.event != index) continue;
+        bool same = g.time == ev.time;
+        for (std::size_t m = 0; m < g.members.size() && same; ++m)
+            for (std::size_t k = 0; k < 2; ++k)
+                if (ev.balls[k] == g.members[m] && ev.group.empty())
+                    same = same && g.after[m].velocity == ev.after[k].velocity && g.after[m].spin == ev.after[k].spin;
+        if (same) return g;
+    }
+    return traceHeldGroup(r, index, shot);
+}
+
 }  // namespace
 
 bool carriesHeldGroup(const Event& ev) { return ev.held || ev.grouped || !ev.group.empty(); }
@@ -101,7 +129,7 @@ bool carriesHeldGroup(const Event& ev) { return ev.held || ev.grouped || !ev.gro
 void addHeldGroupSteps(const SimulationResult& r, int index, const std::optional<CueStrike>& shot, Explanation& e)
 {
     const Event& ev = r.events.at(static_cast<std::size_t>(index));
-    const std::optional<HeldGroupTrace> found = traceHeldGroup(r, index, shot);
+    const std::optional<HeldGroupTrace> found = groupOf(r, index, shot);
     if (!found) return;
     const HeldGroupTrace& g = *found;
     std::vector<Step> steps;
@@ -264,18 +292,15 @@ void addHeldGroupSteps(const SimulationResult& r, int index, const std::optional
             const double E = kineticEnergy(s, g.entering[m].radius, g.entering[m].mass);
             groupEnergy += E;
             const int slot = ev.balls[0] == ball ? 0 : ev.balls[1] == ball ? 1 : -1;
-            std::string key, sym;
-            if (slot >= 0) {
-                key = slot == 0 ? "_a" : "_b";
-                sym = slot == 0 ? "_a" : "_b";
-                energy += E;
-            } else {
-                const bool changed = std::any_of(ev.group.begin(), ev.group.end(),
-                                                 [&](const Event::GroupChange& c) { return c.ball == ball; });
-                if (!changed) continue;
-                key = "_ball" + std::to_string(ball);
-                sym = "_{" + ballName(r, ball) + "}";
-            }
+            // (A ball the event lists among the group's changes, a member's transition due at the
+            // instant included, is named by its id: the event's own after-state is the change before.)
+            const bool changed = std::any_of(ev.group.begin(), ev.group.end(),
+                                             [&](const Event::GroupChange& c) { return c.ball == ball; });
+            if (slot >= 0) energy += E;
+            if (slot < 0 && !changed) continue;
+            const bool alone = ev.kind != EventKind::BallBall;  // (one ball: v″, as the other steps name it)
+            const std::string key = changed ? "_ball" + std::to_string(ball) : alone ? "" : slot == 0 ? "_a" : "_b";
+            const std::string sym = changed ? "_{" + ballName(r, ball) + "}" : alone ? "" : slot == 0 ? "_a" : "_b";
             const bool flying = s.motion == MotionState::Airborne || g.entering[m].state.motion == MotionState::Airborne;
             b.in("J" + key, "J" + sym, impulses[m], "N s");
             if (air || (slot < 0 && flying))
@@ -284,6 +309,8 @@ void addHeldGroupSteps(const SimulationResult& r, int index, const std::optional
                 b.out("v" + key + "_after", "v″" + sym, s.velocity, "m/s");
             b.out("w" + key + "_after", "ω″" + sym, s.spin, "rad/s");
         }
+        // The event's impulse on its first ball: its law's, and the re-seating's at its own contact.
+        if (isCollision(ev.kind)) b.out("J", "J", ev.impulse, "N s");
         b.out("E_after", "E″", energy, "J").out("E_group_after", "E″_{group}", groupEnergy, "J");
     }
 
