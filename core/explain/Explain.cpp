@@ -118,7 +118,14 @@ SegmentBefore segmentBefore(const SimulationResult& r, int ball, int index)
     return s;
 }
 
-Explanation explain(const SimulationResult& result, int index, const std::optional<CueStrike>& shot)
+bool runsAgain(const SimulationResult& result, int index)
+{
+    return index >= 0 && static_cast<std::size_t>(index) < result.events.size() &&
+           detail::carriesHeldGroup(result.events[static_cast<std::size_t>(index)]);
+}
+
+Explanation explain(const SimulationResult& result, int index, const std::optional<CueStrike>& shot,
+                    const ExplainLimits& limits)
 {
     if (index < 0 || static_cast<std::size_t>(index) >= result.events.size())
         throw std::out_of_range("no event " + std::to_string(index));
@@ -162,7 +169,7 @@ Explanation explain(const SimulationResult& result, int index, const std::option
     case EventKind::BallOffTable: detail::explainOffTable(result, index, e); break;
     default: detail::explainTransition(result, index, e); break;
     }
-    if (detail::carriesHeldGroup(ev)) detail::addHeldGroupSteps(result, index, shot, e);
+    if (detail::carriesHeldGroup(ev)) detail::addHeldGroupSteps(result, index, shot, limits, e);
     return e;
 }
 

@@ -94,20 +94,43 @@ void addProblem(StepBuilder& b, const ComplementarityTrace& c, const std::string
     }
 }
 
+// A held group's solve as the run again recorded it, or why there is none.
+struct Found {
+    HeldTraceStatus status = HeldTraceStatus::Differs;
+    std::optional<HeldGroupTrace> group;
+};
+
 // The traces of the last result explained on this thread: explaining its events one after another
-// (a property test, a whole report) runs the shot again once, not once per event. A trace is used
-// only when its states after are the event's bit for bit, so a stale entry is never shown.
-std::optional<HeldGroupTrace> groupOf(const SimulationResult& r, int index, const std::optional<CueStrike>& shot)
+// (a property test, a whole report) runs the shot again once or twice, not once per event. The first
+// event asked of a result runs it again up to that event only (a window's click); a later one, to the
+// end. A trace is used only when its states after are the event's bit for bit, so a stale entry is
+// never shown; a run again stopped by its caller leaves nothing behind.
+Found groupOf(const SimulationResult& r, int index, const std::optional<CueStrike>& shot, const ExplainLimits& limits)
 {
     struct Cache {
         const SimulationResult* result = nullptr;
         std::size_t events = 0;
         double end = 0.0;
+        int covered = -1;  // the traces hold every held group's solve up to this event
         std::vector<HeldGroupTrace> traces;
+        bool differs = false;      // the run again did not give the result's events
+        double outOfTime = -1.0;   // s: with this budget (or less) no event after `covered` is reached
     };
     thread_local Cache cache;
-    if (cache.result != &r || cache.events != r.events.size() || cache.end != r.endTime) {
-        cache = Cache{&r, r.events.size(), r.endTime, traceHeldGroups(r, shot)};
+    if (cache.result != &r || cache.events != r.events.size() || cache.end != r.endTime) cache = Cache{&r, r.events.size(), r.endTime};
+    const HeldTraceLimits traceLimits{limits.stop, limits.runAgainSeconds};
+    if (index > cache.covered && !cache.differs) {
+        if (limits.runAgainSeconds <= cache.outOfTime) return Found{HeldTraceStatus::OutOfTime, std::nullopt};
+        const bool first = cache.covered < 0 && cache.outOfTime < 0.0;
+        HeldTraces run = traceHeldGroups(r, first ? index : static_cast<int>(r.events.size()) - 1, shot, traceLimits);
+        if (run.status == HeldTraceStatus::Cancelled) return Found{run.status, std::nullopt};
+        if (run.covered > cache.covered) {
+            cache.covered = run.covered;
+            cache.traces = std::move(run.traces);
+        }
+        if (run.status == HeldTraceStatus::OutOfTime) cache.outOfTime = std::max(cache.outOfTime, limits.runAgainSeconds);
+        cache.differs = run.status == HeldTraceStatus::Differs;
+        if (index > cache.covered && run.status == HeldTraceStatus::OutOfTime) return Found{run.status, std::nullopt};
     }
     const Event& ev = r.events.at(static_cast<std::size_t>(index));
     for (const HeldGroupTrace& g : cache.traces) {
@@ -117,21 +140,53 @@ std::optional<HeldGroupTrace> groupOf(const SimulationResult& r, int index, cons
             for (std::size_t k = 0; k < 2; ++k)
                 if (ev.balls[k] == g.members[m] && ev.group.empty())
                     same = same && g.after[m].velocity == ev.after[k].velocity && g.after[m].spin == ev.after[k].spin;
-        if (same) return g;
+        if (same) return Found{HeldTraceStatus::Recorded, g};
     }
-    return traceHeldGroup(r, index, shot);
+    HeldTraces alone = traceHeldGroup(r, index, shot, traceLimits);
+    if (alone.status == HeldTraceStatus::Recorded && !alone.traces.empty())
+        return Found{alone.status, std::move(alone.traces.front())};
+    return Found{alone.status, std::nullopt};
+}
+
+// In place of the solve's numbers when the run again was stopped: what is left out, and why.
+void addLeftOutStep(HeldTraceStatus status, double budget, Explanation& e)
+{
+    std::vector<Step> steps;
+    const Text why = status == HeldTraceStatus::OutOfTime
+                         ? Text::tr("The details of the group's solve (its contacts as the rows of one problem, the "
+                                    "impulses and forces that solve it) are left out: they come from running the shot "
+                                    "again up to this event, and that took longer than %1 s.")
+                               .arg(number(budget))
+                         : Text::tr("The details of the group's solve (its contacts as the rows of one problem, the "
+                                    "impulses and forces that solve it) are left out: running the shot again up to "
+                                    "this event was stopped.");
+    StepBuilder(steps, Text::tr("The held group's solve"),
+                Text::join({why, Text::tr("The other steps, from the event's own states, stand.")}, " "), Text());
+    auto at = std::find_if(e.steps.begin(), e.steps.end(), [](const Step& s) { return s.title.english() == "The held group"; });
+    if (at != e.steps.end()) {
+        ++at;
+    } else {
+        at = std::find_if(e.steps.begin(), e.steps.end(),
+                          [](const Step& s) { return s.title.english() == "Kinetic energy before and after"; });
+    }
+    e.steps.insert(at, std::make_move_iterator(steps.begin()), std::make_move_iterator(steps.end()));
 }
 
 }  // namespace
 
 bool carriesHeldGroup(const Event& ev) { return ev.held || ev.grouped || !ev.group.empty(); }
 
-void addHeldGroupSteps(const SimulationResult& r, int index, const std::optional<CueStrike>& shot, Explanation& e)
+void addHeldGroupSteps(const SimulationResult& r, int index, const std::optional<CueStrike>& shot,
+                       const ExplainLimits& limits, Explanation& e)
 {
     const Event& ev = r.events.at(static_cast<std::size_t>(index));
-    const std::optional<HeldGroupTrace> found = groupOf(r, index, shot);
-    if (!found) return;
-    const HeldGroupTrace& g = *found;
+    const Found found = groupOf(r, index, shot, limits);
+    if (found.status == HeldTraceStatus::Cancelled || found.status == HeldTraceStatus::OutOfTime) {
+        addLeftOutStep(found.status, limits.runAgainSeconds, e);
+        return;
+    }
+    if (!found.group) return;
+    const HeldGroupTrace& g = *found.group;
     std::vector<Step> steps;
     auto name = [&](int local) { return Text(ballName(r, g.members.at(static_cast<std::size_t>(local)))); };
 

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <stop_token>
 #include <vector>
 
 namespace cuelab {
@@ -83,13 +84,45 @@ struct HeldTraceSink {
     bool done = false;
 };
 
+// s of wall time: how long a derivation may run a shot again to record a held group's solve by
+// default. The run again costs what simulating up to the event cost (a late event of a 144-ball
+// cluster: 8-10 s); an explanation asked for in a window must come back while its reader waits, and
+// 3 s covers every event of the examples and of the soak's shots of up to 16 balls with room to spare
+// (most take milliseconds).
+constexpr double kHeldTraceBudget = 3.0;
+
+// What bounds a run again: the caller's stop token (asked to stop, the run ends within milliseconds,
+// SimulationOptions::cancel) and a budget of wall time for the whole run again (both ways of setting
+// up the strike). A budget of infinity never runs out.
+struct HeldTraceLimits {
+    std::stop_token stop;
+    double seconds = kHeldTraceBudget;  // s of wall time
+};
+
+enum class HeldTraceStatus : std::uint8_t {
+    Recorded,   // the run again gave the result's events bit for bit: `traces` holds its solves
+    Differs,    // it did not (a result not made by simulate() with these options): nothing recorded
+    Cancelled,  // the caller's stop token stopped it: nothing recorded
+    OutOfTime,  // the budget ran out before the run again reached the event: nothing recorded
+};
+
+struct HeldTraces {
+    HeldTraceStatus status = HeldTraceStatus::Differs;
+    std::vector<HeldGroupTrace> traces;  // by event, ascending
+    // The last event the traces cover (every held group's solve up to it is there): the event asked
+    // for when Recorded; when OutOfTime, traceHeldGroups keeps the events the run again reached and
+    // gave bit for bit (with the same budget, a later event cannot be reached either); else -1.
+    int covered = -1;
+};
+
 // Runs the simulation of `result` again (its table, physics and balls, the cue strike `shot`) up to
-// event `index`, and returns the held group's solve that settled it; none when that event settled
-// no group, or when the run again does not give the event bit for bit (a result not made by
-// simulate() with these options).
-std::optional<HeldGroupTrace> traceHeldGroup(const SimulationResult& result, int index,
-                                             const std::optional<CueStrike>& shot);
-// Every event's held group solve of a run again of `result` (as above), by event.
-std::vector<HeldGroupTrace> traceHeldGroups(const SimulationResult& result, const std::optional<CueStrike>& shot);
+// event `index`, and records the held group's solve that settled it: none when that event settled
+// no group. Only a run again that gives the event bit for bit is used (status Differs otherwise).
+HeldTraces traceHeldGroup(const SimulationResult& result, int index, const std::optional<CueStrike>& shot,
+                          const HeldTraceLimits& limits = {});
+// Every held group's solve of a run again of `result` up to event `last` (as above), by event; when
+// the budget runs out first, those of the events it reached (`covered`).
+HeldTraces traceHeldGroups(const SimulationResult& result, int last, const std::optional<CueStrike>& shot,
+                           const HeldTraceLimits& limits = {});
 
 }  // namespace cuelab

@@ -4,6 +4,10 @@
 #include "ContactTrace.h"
 #include "Simulator.h"
 
+#include <algorithm>
+#include <chrono>
+#include <stop_token>
+
 namespace cuelab {
 
 namespace detail {
@@ -57,10 +61,24 @@ bool sameEvent(const Event& a, const Event& b)
 
 // The run again up to `last` (every event's traces when `only` < 0), with each way the strike may
 // have been set up (SimulationOptions::strikeKeepsElevation): the one that gives the result's events.
-bool runAgain(const SimulationResult& result, const std::optional<CueStrike>& shot, std::size_t last, int only,
-              HeldTraceSink& sink)
+// The limits stop it through the simulator's own cancel token; the budget is checked in its progress
+// callback, every few milliseconds of wall time.
+HeldTraces runAgain(const SimulationResult& result, const std::optional<CueStrike>& shot, std::size_t last, int only,
+                    const HeldTraceLimits& limits)
 {
+    using Clock = std::chrono::steady_clock;
+    // (A budget beyond a day is none: the deadline would not fit the clock's range.)
+    const bool timed = limits.seconds < 86400.0;
+    const Clock::time_point deadline =
+        timed ? Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                   std::chrono::duration<double>(std::max(limits.seconds, 0.0)))
+              : Clock::time_point::max();
+    std::stop_source stop;
+    const std::stop_callback forward(limits.stop, [&stop] { stop.request_stop(); });
+    HeldTraces out;
     for (bool elevation : {true, false}) {
+        if (limits.stop.stop_requested()) return HeldTraces{HeldTraceStatus::Cancelled, {}, -1};
+        if (Clock::now() >= deadline) return HeldTraces{HeldTraceStatus::OutOfTime, {}, -1};
         SimulationResult again;
         again.table = result.table;
         again.physics = result.physics;
@@ -68,34 +86,57 @@ bool runAgain(const SimulationResult& result, const std::optional<CueStrike>& sh
         SimulationOptions options;
         options.strikeKeepsElevation = elevation;
         options.maxEvents = static_cast<long long>(result.events.size()) + 1;
-        sink = HeldTraceSink{};
+        options.cancel = stop.get_token();
+        if (timed) {
+            options.progressInterval = 0.005;
+            options.progress = [&](const SimulationResult&, const SimulationProgress&) {
+                if (Clock::now() >= deadline) stop.request_stop();
+            };
+        }
+        HeldTraceSink sink;
         sink.event = only;
         detail::Simulator sim(again, result.events[last].time, options);
         sim.traceHeld(&sink);
         sim.run(shot);
+        const bool stopped = again.status == SimulationStatus::Cancelled && !sink.done;
+        if (stopped && limits.stop.stop_requested()) return HeldTraces{HeldTraceStatus::Cancelled, {}, -1};
+        if (stopped) {
+            // The events it logged and gave bit for bit, but for the last (its group may have been
+            // solved again at the same instant after the stop): their traces stand.
+            out = HeldTraces{HeldTraceStatus::OutOfTime, {}, -1};
+            if (only >= 0) return out;
+            std::size_t same = 0;
+            while (same + 1 < again.events.size() && same <= last && sameEvent(again.events[same], result.events[same])) ++same;
+            out.covered = static_cast<int>(same) - 1;
+            for (HeldGroupTrace& t : sink.traces)
+                if (t.event <= out.covered) out.traces.push_back(std::move(t));
+            if (out.covered >= 0) return out;  // (the strike reproduced: the other way need not be tried)
+            continue;
+        }
         if (again.events.size() <= last) continue;
         bool same = true;
         for (std::size_t k = only < 0 ? 0 : last; k <= last && same; ++k) same = sameEvent(again.events[k], result.events[k]);
-        if (same) return true;
+        if (same) return HeldTraces{HeldTraceStatus::Recorded, std::move(sink.traces), static_cast<int>(last)};
     }
-    return false;
+    return out;  // (Differs, or out of time with nothing reproduced)
 }
 
 }  // namespace
 
-std::optional<HeldGroupTrace> traceHeldGroup(const SimulationResult& result, int index, const std::optional<CueStrike>& shot)
+HeldTraces traceHeldGroup(const SimulationResult& result, int index, const std::optional<CueStrike>& shot,
+                          const HeldTraceLimits& limits)
 {
-    if (index < 0 || static_cast<std::size_t>(index) >= result.events.size()) return std::nullopt;
-    HeldTraceSink sink;
-    if (!runAgain(result, shot, static_cast<std::size_t>(index), index, sink) || sink.traces.empty()) return std::nullopt;
-    return std::move(sink.traces.front());
+    if (index < 0 || static_cast<std::size_t>(index) >= result.events.size()) return {};
+    HeldTraces out = runAgain(result, shot, static_cast<std::size_t>(index), index, limits);
+    if (out.traces.size() > 1) out.traces.erase(out.traces.begin() + 1, out.traces.end());
+    return out;
 }
 
-std::vector<HeldGroupTrace> traceHeldGroups(const SimulationResult& result, const std::optional<CueStrike>& shot)
+HeldTraces traceHeldGroups(const SimulationResult& result, int last, const std::optional<CueStrike>& shot,
+                           const HeldTraceLimits& limits)
 {
-    HeldTraceSink sink;
-    if (result.events.empty() || !runAgain(result, shot, result.events.size() - 1, -1, sink)) return {};
-    return std::move(sink.traces);
+    if (last < 0 || static_cast<std::size_t>(last) >= result.events.size()) return {};
+    return runAgain(result, shot, static_cast<std::size_t>(last), -1, limits);
 }
 
 }  // namespace cuelab
