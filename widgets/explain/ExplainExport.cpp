@@ -143,7 +143,10 @@ bool exportExplanations(const QString& path, const SimulationResult& result, con
             if (error) *error = QObject::tr("no event %1 in this shot").arg(QString::fromStdString(explain::eventNumber(i)));
             return false;
         }
-        all.push_back(explain::explain(result, i, shot));
+        // Synchronous, within the core's budget for running the shot again (a held group's solve): a
+        // run again out of time is not repeated for the later events of the same result, so a whole
+        // export waits at most about two budgets; past them the solves are left out, and say so.
+        all.push_back(explain::explain(result, i, shot, explain::ExplainLimits{}));
     }
     const QString suffix = QFileInfo(path).suffix().toLower();
     const bool markdown = suffix == QLatin1String("md") || suffix == QLatin1String("markdown");
