@@ -143,9 +143,9 @@ bool exportExplanations(const QString& path, const SimulationResult& result, con
             if (error) *error = QObject::tr("no event %1 in this shot").arg(QString::fromStdString(explain::eventNumber(i)));
             return false;
         }
-        // Synchronous, within the core's budget for running the shot again (a held group's solve): a
-        // run again out of time is not repeated for the later events of the same result, so a whole
-        // export waits at most about two budgets; past them the solves are left out, and say so.
+        // Synchronous, within the core's budget for running the shot again (a held group's solve) per
+        // event: the events of one result share a run again, and one out of time is not repeated for
+        // the later events; past the budget the solves are left out, and the text says so.
         all.push_back(explain::explain(result, i, shot, explain::ExplainLimits{}));
     }
     const QString suffix = QFileInfo(path).suffix().toLower();
