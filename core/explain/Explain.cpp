@@ -3,6 +3,7 @@
 #include "Frames.h"
 
 #include "Flight.h"
+#include "HeldGroupExplain.h"
 #include "Motion.h"
 #include "Parts.h"
 
@@ -117,7 +118,14 @@ SegmentBefore segmentBefore(const SimulationResult& r, int ball, int index)
     return s;
 }
 
-Explanation explain(const SimulationResult& result, int index, const std::optional<CueStrike>& shot)
+bool runsAgain(const SimulationResult& result, int index)
+{
+    return index >= 0 && static_cast<std::size_t>(index) < result.events.size() &&
+           detail::carriesHeldGroup(result.events[static_cast<std::size_t>(index)]);
+}
+
+Explanation explain(const SimulationResult& result, int index, const std::optional<CueStrike>& shot,
+                    const ExplainLimits& limits)
 {
     if (index < 0 || static_cast<std::size_t>(index) >= result.events.size())
         throw std::out_of_range("no event " + std::to_string(index));
@@ -161,6 +169,7 @@ Explanation explain(const SimulationResult& result, int index, const std::option
     case EventKind::BallOffTable: detail::explainOffTable(result, index, e); break;
     default: detail::explainTransition(result, index, e); break;
     }
+    if (detail::carriesHeldGroup(ev)) detail::addHeldGroupSteps(result, index, shot, limits, e);
     return e;
 }
 

@@ -123,7 +123,8 @@ std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language
     std::string out = "### " + std::to_string(number) + ". " + markupToText(s.title.in(language)) + "\n\n";
     const std::string law = s.law.in(language);
     if (!law.empty()) out += markupToText(law) + "\n\n";
-    out += "    " + markupToText(s.formula.in(language)) + "\n\n";
+    const std::string formula = s.formula.in(language);
+    if (!formula.empty()) out += "    " + markupToText(formula) + "\n\n";
     if (!s.inputs.empty()) {
         out += word(Word::Inputs).in(language);
         for (const Quantity& q : s.inputs)
@@ -264,7 +265,8 @@ std::string toHtml(const Explanation& e, const Text::Lookup& language)
         out += "<h3>" + std::to_string(++n) + ". " + markupToHtml(s.title.in(language)) + "</h3>";
         const std::string law = s.law.in(language);
         if (!law.empty()) out += "<p>" + markupToHtml(law) + "</p>";
-        out += "<p style=\"margin-left:12px\"><i>" + markupToHtml(s.formula.in(language)) + "</i></p>";
+        const std::string formula = s.formula.in(language);
+        if (!formula.empty()) out += "<p style=\"margin-left:12px\"><i>" + markupToHtml(formula) + "</i></p>";
         out += "<table cellspacing=\"0\" cellpadding=\"2\" style=\"margin-left:12px\">";
         out += quantitiesHtml(s.inputs, false, language) + quantitiesHtml(s.results, true, language) + "</table>";
     }

@@ -38,6 +38,34 @@
 
 namespace cuelab::detail {
 
+// A flying ball on a jaw's rim, the circle of the tip at the nose height h (issue 23; airRimHold's
+// geometry): the contact in space with the rim's nearest point, its normal in the plane through the
+// jaw's axis and the centre, tilted up; the curvature of the motion on the torus the centre keeps
+// (across the rim 1/dist, along it (nh/dist)/rho). False when the centre is over the tip's top (no
+// rim there) or past its arc.
+bool airRimGeometry(const JawTip& jaw, double R, double h, const BallState& s, ContactLink& link, double& gap, double& vn)
+{
+    const Vec2 rel = s.position - jaw.centre;
+    const double rho = rel.norm();
+    if (!(rho > jaw.radius) || !onJawArc(jaw, s.position, kContactTolerance)) return false;
+    const Vec2 u = rel / rho;
+    const double nh = rho - jaw.radius, w = (R + s.z) - h;
+    const double dist = std::hypot(nh, w);
+    if (w < 0.0 || !(dist > 0.0)) return false;
+    const Vec3 out = (nh / dist) * Vec3(u.x(), u.y(), 0.0) + Vec3(0.0, 0.0, w / dist);
+    const Vec3 v = velocity3(s);
+    link.normal = -out.head<2>();
+    link.nz = -out.z();
+    gap = dist - R;
+    vn = v.dot(out);
+    const Vec3 alongRim(-u.y(), u.x(), 0.0);
+    const double vAlong = v.dot(alongRim);
+    const Vec3 vAcross = v - vn * out - vAlong * alongRim;
+    link.curvature = vAcross.squaredNorm() / dist + vAlong * vAlong * (nh / dist) / rho;
+    return true;
+}
+
+
 SpacePath Simulator::spaceNow(int i, double now) const
 {
     const double r = radius(i);

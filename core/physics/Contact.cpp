@@ -1,4 +1,5 @@
 #include "Contact.h"
+#include "ContactTrace.h"
 
 #include "Motion.h"
 
@@ -134,12 +135,13 @@ void gaussSeidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::
 //     which row the others part (it then leaves the set).
 // (Issue 40: a 41-ball cluster's solves fell back to the orthogonal decomposition at most pivots;
 // it costs about three LDLTs.)
-Eigen::VectorXd solveActive(const Eigen::MatrixXd& As, const Eigen::VectorXd& bs, double tolerance)
+Eigen::VectorXd solveActive(const Eigen::MatrixXd& As, const Eigen::VectorXd& bs, double tolerance, ContactMethod& method)
 {
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(As);
     if (ldlt.info() == Eigen::Success) {
         const Eigen::VectorXd d = ldlt.vectorD();
         const double largest = d.cwiseAbs().maxCoeff();
+        method = ContactMethod::Factorised;
         if (largest > 0.0 && d.minCoeff() > 1e-8 * largest && ldlt.isPositive()) return ldlt.solve(bs);
         if (largest > 0.0 && d.minCoeff() > -1e-8 * largest) {
             // As = P^T L D L^T P, the tiny pivots last (the pivoting takes the largest diagonal first):
@@ -150,9 +152,11 @@ Eigen::VectorXd solveActive(const Eigen::MatrixXd& As, const Eigen::VectorXd& bs
             for (Eigen::Index k = 0; k < y.size(); ++k) y(k) = d(k) > 1e-8 * largest ? y(k) / d(k) : 0.0;
             ldlt.matrixU().solveInPlace(y);
             Eigen::VectorXd x = ldlt.transpositionsP().transpose() * y;
+            method = ContactMethod::BasicSolution;
             if ((As * x - bs).cwiseAbs().maxCoeff() <= tolerance) return x;
         }
     }
+    method = ContactMethod::LeastSquares;
     return As.completeOrthogonalDecomposition().solve(bs);
 }
 
@@ -168,9 +172,24 @@ Eigen::VectorXd solveActive(const Eigen::MatrixXd& As, const Eigen::VectorXd& bs
 // begun there, the pivoting takes a step or two where it took one per contact from cold, each a
 // factorisation of the active rows (issue 40: a 38-ball packed cluster). The answer is the
 // problem's, whatever the start: the pivoting ends only at a complementary solution.
+// `trace` (ContactTrace.h), when given, records the problem, its answer and how it was found.
 bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::vector<char>& bilateral,
-              int maxPivots, Eigen::VectorXd& N, std::vector<char>& active, const std::vector<signed char>* start = nullptr)
+              int maxPivots, Eigen::VectorXd& N, std::vector<char>& active, const std::vector<signed char>* start,
+              ComplementarityTrace* trace)
 {
+    ContactMethod method = ContactMethod::NoRows;
+    auto record = [&](bool converged, int pivots) {
+        if (!trace) return;
+        trace->A = A;
+        trace->b = b;
+        trace->lambda = N;
+        trace->w = b + A * N;
+        trace->bilateral = bilateral;
+        trace->active = active;
+        trace->method = converged ? method : ContactMethod::GaussSeidel;
+        trace->pivots = pivots;
+        trace->converged = converged;
+    };
     const Eigen::Index m = b.size();
     N.setZero(m);
     const bool warm = start != nullptr && start->size() == static_cast<std::size_t>(m);
@@ -196,7 +215,7 @@ bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::vec
                 bs(r) = -b(set[static_cast<std::size_t>(r)]);
                 for (Eigen::Index c = 0; c < s; ++c) As(r, c) = A(set[static_cast<std::size_t>(r)], set[static_cast<std::size_t>(c)]);
             }
-            const Eigen::VectorXd x = solveActive(As, bs, tolG);
+            const Eigen::VectorXd x = solveActive(As, bs, tolG, method);
             Eigen::Index worst = -1;
             for (Eigen::Index r = 0; r < s; ++r) {
                 if (bilateral[static_cast<std::size_t>(set[static_cast<std::size_t>(r)])]) continue;
@@ -229,12 +248,17 @@ bool solveLcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, const std::vec
         Eigen::Index join = -1;
         for (Eigen::Index k = 0; k < m; ++k)
             if (!active[static_cast<std::size_t>(k)] && g(k) < -tolG && (join < 0 || g(k) < g(join))) join = k;
-        if (join < 0) return true;
+        if (join < 0) {
+            if (set.empty()) method = ContactMethod::NoRows;
+            record(true, iteration + 1);
+            return true;
+        }
         active[static_cast<std::size_t>(join)] = 1;
     }
     gaussSeidel(A, b, bilateral, N);
     for (Eigen::Index k = 0; k < m; ++k)
         active[static_cast<std::size_t>(k)] = bilateral[static_cast<std::size_t>(k)] || N(k) > 0.0 ? 1 : 0;
+    record(false, pivots);
     return false;
 }
 
@@ -275,7 +299,7 @@ void applyContactImpulse(BallState& s, double radius, double mass, const Vec2& J
 }
 
 Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
-                     const std::vector<double>& vn, const std::vector<char>& held)
+                     const std::vector<double>& vn, const std::vector<char>& held, ComplementarityTrace* trace)
 {
     const std::size_t n = balls.size();
     std::vector<Response> resp(n);
@@ -289,7 +313,7 @@ Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactL
     for (std::size_t k = 0; k < links.size(); ++k) b(static_cast<Eigen::Index>(k)) = vn[k];
     std::vector<char> active;
     Seating out;
-    out.converged = solveLcp(A, b, held, -1, P, active);
+    out.converged = solveLcp(A, b, held, -1, P, active, nullptr, trace);
     const Eigen::VectorXd after = b + A * P;
     std::vector<Vec2> J(n, Vec2::Zero());
     std::vector<double> Jz(n, 0.0);
@@ -320,7 +344,7 @@ Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactL
 
 ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
                               const PhysicsParams& p, ContactForces mode, int maxPivots,
-                              const std::vector<signed char>* warm)
+                              const std::vector<signed char>* warm, ComplementarityTrace* trace)
 {
     const std::size_t n = balls.size();
     std::vector<Response> resp(n);
@@ -341,7 +365,7 @@ ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::
         // previous round's pressed contacts.
         std::vector<signed char> previous(out.active.begin(), out.active.end());
         const std::vector<signed char>* start = out.active.empty() ? warm : &previous;
-        out.converged = solveLcp(A, b, unilateral, maxPivots, N, out.active, start);
+        out.converged = solveLcp(A, b, unilateral, maxPivots, N, out.active, start, trace);
         std::fill(force.begin(), force.end(), Vec2::Zero());
         std::fill(forceZ.begin(), forceZ.end(), 0.0);
         for (std::size_t k = 0; k < links.size(); ++k) {

@@ -100,6 +100,8 @@ inline constexpr int kQuietSolves = 32;
 
 enum class ContactBody : std::uint8_t { Ball, Cushion, Jaw };
 
+struct ComplementarityTrace;  // ContactTrace.h: the numbers of a solve, for the explanation
+
 // A contact of ball `a` with another ball, a straight cushion or a jaw tip (indices into the
 // simulator's lists).
 struct HeldContact {
@@ -187,7 +189,8 @@ enum class ContactForces : std::uint8_t { Pressed, Held };
 // (the pivoting ends only at a complementary solution), only found in fewer steps.
 ContactSolution solveContacts(const std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
                               const PhysicsParams& p, ContactForces mode = ContactForces::Held,
-                              int maxPivots = -1, const std::vector<signed char>* warm = nullptr);
+                              int maxPivots = -1, const std::vector<signed char>* warm = nullptr,
+                              ComplementarityTrace* trace = nullptr);
 
 // Re-seating: normal impulses at the links, applied together by contactResponse's rule, so that
 //   - a held link (held[k] != 0: its forces press it, or it is a collision's hold) ends with no
@@ -202,6 +205,7 @@ struct Seating {
     bool converged = true;
 };
 Seating seatContacts(std::vector<ContactBall>& balls, const std::vector<ContactLink>& links,
-                     const std::vector<double>& vn, const std::vector<char>& held);
+                     const std::vector<double>& vn, const std::vector<char>& held,
+                     ComplementarityTrace* trace = nullptr);
 
 }  // namespace cuelab

@@ -4,42 +4,13 @@
 #include "Simulator.h"
 
 #include "CircleLimits.h"
+#include "ContactTrace.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace cuelab::detail {
 
-namespace {
-
-// A flying ball on a jaw's rim, the circle of the tip at the nose height h (issue 23; airRimHold's
-// geometry): the contact in space with the rim's nearest point, its normal in the plane through the
-// jaw's axis and the centre, tilted up; the curvature of the motion on the torus the centre keeps
-// (across the rim 1/dist, along it (nh/dist)/rho). False when the centre is over the tip's top (no
-// rim there) or past its arc.
-bool airRimGeometry(const JawTip& jaw, double R, double h, const BallState& s, ContactLink& link, double& gap, double& vn)
-{
-    const Vec2 rel = s.position - jaw.centre;
-    const double rho = rel.norm();
-    if (!(rho > jaw.radius) || !onJawArc(jaw, s.position, kContactTolerance)) return false;
-    const Vec2 u = rel / rho;
-    const double nh = rho - jaw.radius, w = (R + s.z) - h;
-    const double dist = std::hypot(nh, w);
-    if (w < 0.0 || !(dist > 0.0)) return false;
-    const Vec3 out = (nh / dist) * Vec3(u.x(), u.y(), 0.0) + Vec3(0.0, 0.0, w / dist);
-    const Vec3 v = velocity3(s);
-    link.normal = -out.head<2>();
-    link.nz = -out.z();
-    gap = dist - R;
-    vn = v.dot(out);
-    const Vec3 alongRim(-u.y(), u.x(), 0.0);
-    const double vAlong = v.dot(alongRim);
-    const Vec3 vAcross = v - vn * out - vAlong * alongRim;
-    link.curvature = vAcross.squaredNorm() / dist + vAlong * vAlong * (nh / dist) / rho;
-    return true;
-}
-
-}  // namespace
 
 bool Simulator::heldPair(int i, int j) const
 {
@@ -61,6 +32,11 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
 {
     lastGroupSize_ = 0;
     lastCandidateImpulse_ = 0.0;
+    // The explanation's record of this solve (ContactTrace.h); none in a normal run.
+    std::optional<HeldGroupTrace> traced;
+    if (heldTrace_ && !heldTrace_->done) traced.emplace();
+    HeldGroupTrace* trace = traced ? &*traced : nullptr;
+    const int eventIndex = static_cast<int>(r_.events.size()) - 1;  // (the event being settled, if any)
     lastGroupChanges_.clear();
     bool touched = candidate != nullptr;
     for (int b : eventBalls) touched = touched || heldCount_[at(b)] > 0;
@@ -265,6 +241,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
         contacts.push_back(h);
         links.push_back(link);
         normalSpeeds.push_back(vn);
+        if (trace) trace->rows.push_back(HeldRow{h, link, gap, vn, inSpace(link), isCandidate, h.since >= 0.0 && !isCandidate});
     };
     for (std::size_t k : fromHeld) consider(held_[k], false);
     for (const HeldContact& h : touching) consider(h, false);
@@ -278,6 +255,11 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     const std::size_t candidateLink = candidate && !contacts.empty() && contacts.back() == *candidate ? contacts.size() - 1
                                                                                                       : contacts.size();
     lastGroupSize_ = links.size() + (members.size() - eventBalls.size());  // contacts, and others re-segmented
+    if (trace) {
+        trace->time = t;
+        trace->members = members;
+        trace->entering = balls;
+    }
 
     // Which contacts the forces press now (the one test of "pressed", with the curvature term). The
     // candidate is held when pressed, or when holding is forced (no approach, or a law that does not
@@ -288,7 +270,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     for (std::size_t k = 0; k < links.size(); ++k) lastPressed[k] = contacts[k].pressed;
     std::vector<char> heldMask(links.size(), 0);
     if (!links.empty()) {
-        const ContactSolution probe = solveContacts(balls, links, p_, ContactForces::Pressed, -1, &lastPressed);
+        const ContactSolution probe = solveContacts(balls, links, p_, ContactForces::Pressed, -1, &lastPressed,
+                                                    trace ? &trace->pressedForces : nullptr);
         for (std::size_t k = 0; k < links.size(); ++k) heldMask[k] = lastPressed[k] = probe.active[k];
     }
     bool candidateHeld = false;
@@ -309,7 +292,9 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
     std::vector<char> seatedThrough(links.size(), 0);  // a touching, unheld contact the re-seating pushed through
     if (seat) {
         const std::vector<ContactBall> before = balls;
-        Seating seating = seatContacts(balls, links, normalSpeeds, heldMask);
+        ComplementarityTrace* seatTrace = trace ? &trace->seating : nullptr;
+        if (trace) trace->seatingTries = 1;
+        Seating seating = seatContacts(balls, links, normalSpeeds, heldMask, seatTrace);
         // Bounded, and never adding energy (a projection cannot, but a nearly singular system's
         // rounding can): otherwise every contact only pushes, and if even that fails the states are
         // left as they are (the contacts that still approach are then met by detection).
@@ -333,8 +318,10 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             balls = before;
             std::fill(heldMask.begin(), heldMask.end(), 0);
             if (candidateLink < links.size() && forceHold) heldMask[candidateLink] = 1;
-            seating = seatContacts(balls, links, normalSpeeds, heldMask);
+            seating = seatContacts(balls, links, normalSpeeds, heldMask, seatTrace);
+            if (trace) trace->seatingTries = 2;
             if (!sound()) {
+                if (trace) trace->seatingTries = 3;
                 balls = before;
                 std::fill(heldMask.begin(), heldMask.end(), 0);
                 std::fill(seating.impulse.begin(), seating.impulse.end(), 0.0);
@@ -346,6 +333,7 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             if (isOutOfPlay(cb.state.motion)) continue;
             cb.state.motion = classify(cb.state, cb.radius);
             if (tiny(m, cb.state, cb.radius)) {  // (the re-seating's residue of a slip)
+                if (trace) trace->rolledOut.resize(balls.size()), trace->rolledOut[m] = 1;
                 rollOut(cb.state, cb.radius);
                 cb.state.motion = classify(cb.state, cb.radius);
             }
@@ -453,7 +441,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             }
         }
         const std::vector<signed char> start(sol.active.begin(), sol.active.end());
-        if (flattened) sol = solveContacts(balls, keptLinks, p_, ContactForces::Held, -1, &start);
+        if (flattened)
+            sol = solveContacts(balls, keptLinks, p_, ContactForces::Held, -1, &start, trace ? &trace->heldForces : nullptr);
     };
     for (;;) {
         keptLinks.clear();
@@ -464,7 +453,9 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
                 start.push_back(lastPressed[k]);
                 if (flat[k]) keptLinks.back().curvature = 0.0;
             }
-        sol = keptLinks.empty() ? ContactSolution{} : solveContacts(balls, keptLinks, p_, ContactForces::Held, -1, &start);
+        sol = keptLinks.empty() ? ContactSolution{}
+                                : solveContacts(balls, keptLinks, p_, ContactForces::Held, -1, &start,
+                                                trace ? &trace->heldForces : nullptr);
         if (!keptLinks.empty()) flatten();
         for (std::size_t k = 0, r = 0; k < links.size(); ++k)
             if (keep[k]) lastPressed[k] = sol.active[r++];
@@ -608,6 +599,8 @@ Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBall
             lastGroupChanges_.push_back(Event::GroupChange{b, was, is});
     }
     if ((eventBalls.empty() || noEvent) && !logged.empty()) r_.events[logged.front().first].group = lastGroupChanges_;
+    if (trace) recordHeldTrace(*trace, eventBalls.empty() || noEvent ? (logged.empty() ? -1 : static_cast<int>(logged.front().first)) : eventIndex,
+                               seat, balls, heldMask, keep, idle);
     if (!candidate || candidateHeld) return Settled::Held;
     return Settled::SeatedOnly;
 }

@@ -5,6 +5,8 @@
 
 #include "Simulator.h"
 
+#include "ContactTrace.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -492,6 +494,7 @@ void Simulator::run(const std::optional<CueStrike>& shot)
             stopUnfinished(SimulationStatus::EventLimit, lastEvent, msg.str());
             return;
         }
+        if (heldTrace_ && heldTrace_->done) break;  // (a trace of one event: recorded, ContactTrace.h)
         const std::size_t logged = r_.events.size();
         process(c);
         // (A group solved again may log a member's transition or stop: an event too.)

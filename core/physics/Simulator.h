@@ -11,6 +11,7 @@
 #include "BallContact.h"
 #include "BroadPhase.h"
 #include "Contact.h"
+#include "ContactTrace.h"
 #include "CueImpact.h"
 #include "CushionCollision.h"
 #include "Detection.h"
@@ -34,6 +35,10 @@ constexpr double kLookahead = 1.0;
 // m: side of the broad-phase grid's cells, about half the longest window of a moving ball.
 constexpr double kCellSize = 0.5;
 
+// A flying ball on a jaw's rim (AirHold.cpp): its contact with the rim as a row of a held group
+// (settle) and its gap and normal speed; false when there is no rim there.
+bool airRimGeometry(const JawTip& jaw, double R, double h, const BallState& s, ContactLink& link, double& gap, double& vn);
+
 class Simulator {
 public:
     // `limit`: s, the time the run ends at if balls still move; the options give the event cap,
@@ -47,6 +52,8 @@ public:
     }
 
     void run(const std::optional<CueStrike>& shot);
+    // Records the solves of held groups (ContactTrace.h) into `sink`; null (the default): none.
+    void traceHeld(HeldTraceSink* sink) { heldTrace_ = sink; }
 
 private:
     void init()
@@ -221,6 +228,9 @@ private:
     // (Contact.h's kQuietSolves).
     Settled settle(double t, const std::vector<int>& eventBalls, const std::vector<BallState>& eventStates,
                    const HeldContact* candidate, bool forceHold, int regroup = -1, bool noEvent = false);
+    // The end of a traced settle() (HeldTrace.cpp): what it left, handed to heldTrace_ for `event`.
+    void recordHeldTrace(HeldGroupTrace& trace, int event, bool seated, const std::vector<ContactBall>& balls,
+                         const std::vector<char>& heldRows, const std::vector<char>& kept, const std::vector<char>& idle);
     void finishEvent(double t, const Event& e);
     // A collision whose law parts its bodies slower than kHoldSpeed (Contact.h's hold rule): logs the
     // event with its hold and settles the group; false when the law's result stands alone (the
@@ -263,6 +273,7 @@ private:
     EventQueue queue_;
 
     std::vector<Vec2> push_;          // m/s^2, the contact force over the mass of a held ball's segment
+    HeldTraceSink* heldTrace_ = nullptr;  // ContactTrace.h; null in a normal run
     std::vector<HeldContact> held_;   // the contacts held now, in the order they were formed
     std::vector<int> heldCount_;      // per ball, how many of held_ involve it
     std::vector<double> regroupAt_;   // s, when a held group is solved again (kNever if none)

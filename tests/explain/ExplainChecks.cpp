@@ -12,6 +12,7 @@ namespace cuelab::testing {
 namespace {
 
 constexpr double kRel = 1e-12;
+const char* const kHeldGroupAfter = "Velocities and spins after the group's impulses";
 
 struct Checker {
     const explain::Explanation& e;
@@ -232,6 +233,53 @@ std::vector<std::string> checkExplanation(const SimulationResult& r, const expla
         c.need("w_after", ev.after[0].spin);
         c.energy(r, ev);
         break;
+    }
+    // A held group (a hold, a group solved with the event, other balls changed): its last step gives every
+    // ball's velocity and spin after, derived from the group's impulses, and E″ of the event's balls.
+    // (A member's transition due at the instant of another event's group solve is marked grouped; the
+    // solve, and what it changed of the ball, belong to that event.)
+    if (ev.held || !ev.group.empty() || (ev.grouped && !isTransition(ev.kind))) {
+        const explain::Step* after = e.step(kHeldGroupAfter);
+        // (A flying ball held on one ball by the air hold, N in closed form: not derived yet.)
+        if (!after && air) return c.problems;
+        if (!after) {
+            c.problems.push_back("event " + std::to_string(e.event) + ": no held group derivation");
+            return c.problems;
+        }
+        auto check = [&](const std::string& key, const BallState& want) {
+            const bool space = after->result(key + "_after_z") != nullptr;
+            const Vec3 v = space ? velocity3(want) : Vec3(want.velocity.x(), want.velocity.y(), 0.0);
+            const std::string vKey = "v" + key + "_after";
+            for (int k = 0; k < (space ? 3 : 2); ++k) {
+                const std::string axis = k == 0 ? "_x" : k == 1 ? "_y" : "_z";
+                const explain::Quantity* q = after->result(vKey + axis);
+                if (!q) c.problems.push_back("event " + std::to_string(e.event) + ": no result " + vKey + axis);
+                else c.same(vKey + axis, q->value, v[k], v.norm());
+                const explain::Quantity* w = after->result("w" + key + "_after" + axis);
+                if (!w) c.problems.push_back("event " + std::to_string(e.event) + ": no result w" + key + "_after" + axis);
+                else c.same("w" + key + "_after" + axis, w->value, want.spin[k], want.spin.norm());
+            }
+        };
+        // (A ball the group's solve changed after the event's own change, a member's transition due at
+        // the instant, is listed in Event::group with its state after both.)
+        auto changed = [&](int ball) -> const Event::GroupChange* {
+            for (const Event::GroupChange& g : ev.group)
+                if (g.ball == ball) return &g;
+            return nullptr;
+        };
+        const int n = ev.kind == EventKind::BallBall ? 2 : 1;
+        double energy = 0.0;
+        for (int k = 0; k < n; ++k) {
+            const int ball = ev.balls[static_cast<std::size_t>(k)];
+            const Event::GroupChange* g = changed(ball);
+            const BallState& want = g ? g->after : ev.after[static_cast<std::size_t>(k)];
+            if (!g) check(n == 1 ? "" : k == 0 ? "_a" : "_b", want);
+            const Ball& b = r.balls[static_cast<std::size_t>(ball)];
+            energy += kineticEnergy(want, b.radius, b.mass);
+        }
+        for (const Event::GroupChange& g : ev.group) check("_ball" + std::to_string(g.ball), g.after);
+        if (const explain::Quantity* q = after->result("E_after")) c.same("E″", q->value, energy, energy);
+        else c.problems.push_back("event " + std::to_string(e.event) + ": no result E_after in the held group");
     }
     return c.problems;
 }

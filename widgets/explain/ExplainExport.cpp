@@ -143,7 +143,10 @@ bool exportExplanations(const QString& path, const SimulationResult& result, con
             if (error) *error = QObject::tr("no event %1 in this shot").arg(QString::fromStdString(explain::eventNumber(i)));
             return false;
         }
-        all.push_back(explain::explain(result, i, shot));
+        // Synchronous, within the core's budget for running the shot again (a held group's solve) per
+        // event: the events of one result share a run again, and one out of time is not repeated for
+        // the later events; past the budget the solves are left out, and the text says so.
+        all.push_back(explain::explain(result, i, shot, explain::ExplainLimits{}));
     }
     const QString suffix = QFileInfo(path).suffix().toLower();
     const bool markdown = suffix == QLatin1String("md") || suffix == QLatin1String("markdown");

@@ -5,6 +5,7 @@
 #include "editor/ResultFeed.h"
 #include "Explain.h"
 #include "ExplainLanguage.h"
+#include "ExplainRunner.h"
 #include "ExplainText.h"
 #include "editor/Playback.h"
 #include "ToiChart.h"
@@ -16,6 +17,7 @@
 #include <QStackedWidget>
 #include <QTabWidget>
 #include <QTextBrowser>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace cuelab {
@@ -23,9 +25,7 @@ namespace cuelab {
 ExplainPanel::ExplainPanel(Document* document, Selection* selection, Playback* playback, QWidget* parent)
     : QWidget(parent), document_(document), selection_(selection), playback_(playback)
 {
-    placeholder_ = new QLabel(tr("Select an event (in Events, or step to one with Shift+Right) to see its "
-                                 "mathematics."),
-                              this);
+    placeholder_ = new QLabel(this);
     placeholder_->setWordWrap(true);
     text_ = new QTextBrowser(this);
     text_->setObjectName(QStringLiteral("explainText"));
@@ -60,6 +60,13 @@ ExplainPanel::ExplainPanel(Document* document, Selection* selection, Playback* p
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addWidget(placeholder_);
     layout->addWidget(split, 1);
+
+    runner_ = new ExplainRunner(this);
+    connect(runner_, &ExplainRunner::finished, this, &ExplainPanel::derived);
+    derivingNotice_ = new QTimer(this);
+    derivingNotice_->setSingleShot(true);
+    derivingNotice_->setInterval(kDerivingNoticeMs);
+    connect(derivingNotice_, &QTimer::timeout, this, &ExplainPanel::showDerivingNotice);
 
     if (selection_)
         connect(selection_, &Selection::eventChanged, this, [this](int index) {
@@ -164,15 +171,63 @@ void ExplainPanel::showEvent(int index)
     const auto result = document_ ? document_->result() : nullptr;
     // The same event again (a new result while dragging, or the language changed): the reader keeps
     // his place. Another event opens at its heading.
-    const bool again = explanation_.has_value() && index == event_;
-    const int scrolled = again ? text_->verticalScrollBar()->value() : 0;
-    explanation_.reset();
-    if (result && index >= 0 && index < int(result->events.size())) {
-        explanation_ = explain::explain(*result, index, document_->setup().shot);
-        event_ = index;
-    } else {
+    const bool again = (explanation_.has_value() || deriving_) && index == event_;
+    const int scrolled = !again ? 0 : deriving_ ? derivingScroll_ : text_->verticalScrollBar()->value();
+    // A derivation under way is of another event or of an older result: stopped, never shown.
+    runner_->cancel();
+    derivingNotice_->stop();
+    deriving_ = false;
+    if (!result || index < 0 || index >= int(result->events.size())) {
         event_ = -1;
+        display(std::nullopt, 0);
+        return;
     }
+    event_ = index;
+    if (explain::runsAgain(*result, index)) {
+        // A held group's solve: the shot is run again up to the event, off this thread. Until it comes,
+        // the text and figures shown stay (a quick derivation replaces them without a flash; the
+        // figures keep pointing at explanation_, which stays alive), but explanation() is empty; past
+        // kDerivingNoticeMs, "Deriving…" stands in for them.
+        deriving_ = true;
+        derivingScroll_ = scrolled;
+        runner_->start(result, index, document_->setup().shot);
+        derivingNotice_->start();
+        emit explanationChanged();
+        return;
+    }
+    // Every other event is derived in closed form, in microseconds: at once.
+    display(explain::explain(*result, index, document_->setup().shot), scrolled);
+}
+
+void ExplainPanel::derived(int index, std::shared_ptr<const explain::Explanation> explanation, const QString& error)
+{
+    // (The runner reports only the derivation it was last asked for: this one.)
+    derivingNotice_->stop();
+    deriving_ = false;
+    if (!explanation) {
+        qWarning("Explain: event %d could not be derived: %s", index, qPrintable(error));
+        event_ = -1;
+        display(std::nullopt, 0);
+        return;
+    }
+    display(*explanation, derivingScroll_);
+}
+
+void ExplainPanel::showDerivingNotice()
+{
+    if (!deriving_) return;
+    placeholder_->setText(tr("Deriving event #%1… (its held group is found by running the shot again up to it)")
+                              .arg(event_ + 1));
+    placeholder_->setVisible(true);
+    text_->setVisible(false);
+    chartShown_ = conservationShown_ = false;
+    showFigures();
+}
+
+void ExplainPanel::display(std::optional<explain::Explanation> explanation, int scrolled)
+{
+    explanation_ = std::move(explanation);
+    placeholder_->setText(tr("Select an event (in Events, or step to one with Shift+Right) to see its mathematics."));
     placeholder_->setVisible(!explanation_);
     if (explanation_) {
         text_->setHtml(QString::fromStdString(explain::toHtml(*explanation_, explainLanguage())));

@@ -8,6 +8,7 @@
 
 #include <QWidget>
 
+#include <memory>
 #include <optional>
 
 class QTextBrowser;
@@ -15,6 +16,7 @@ class QLabel;
 class QSplitter;
 class QStackedWidget;
 class QTabWidget;
+class QTimer;
 
 namespace cuelab {
 
@@ -23,14 +25,22 @@ class Selection;
 class Playback;
 class ToiChart;
 class ConservationWidget;
+class ExplainRunner;
 
 class ExplainPanel : public QWidget {
     Q_OBJECT
 public:
     ExplainPanel(Document* document, Selection* selection, Playback* playback, QWidget* parent = nullptr);
 
-    int shownEvent() const { return event_; }  // -1 when nothing is explained
-    const std::optional<explain::Explanation>& explanation() const { return explanation_; }
+    int shownEvent() const { return event_; }  // -1 when nothing is explained (or derived)
+    // The derivation of shownEvent() is being computed off the GUI thread (a held group's: the shot is
+    // run again up to the event); explanation() is empty until it arrives.
+    bool deriving() const { return deriving_; }
+    // ms: a derivation that takes longer shows "Deriving…" in place of the text; a quicker one
+    // replaces the text before anything else is shown, so the dock does not flash.
+    static constexpr int kDerivingNoticeMs = 100;
+    // The derivation of shownEvent(); empty while it is being derived (deriving()).
+    const std::optional<explain::Explanation>& explanation() const { return deriving_ ? kNone : explanation_; }
     QString html() const;                        // what the text view shows
     ConservationWidget* conservation() const { return conservation_; }  // the momenta and energy figure
 
@@ -61,6 +71,9 @@ private:
     void showFigures();
     void followTime(double t);
     void refresh();
+    void display(std::optional<explain::Explanation> explanation, int scrolled);
+    void derived(int index, std::shared_ptr<const explain::Explanation> explanation, const QString& error);
+    void showDerivingNotice();
 
     Document* document_;
     Selection* selection_;
@@ -74,7 +87,12 @@ private:
     QStackedWidget* figureHolder_ = nullptr;  // shows one of the two
     bool chartShown_ = false, conservationShown_ = false;  // whether the event has each figure
     int event_ = -1;
-    std::optional<explain::Explanation> explanation_;
+    std::optional<explain::Explanation> explanation_;  // the one shown (while deriving, the one before)
+    static inline const std::optional<explain::Explanation> kNone{};
+    ExplainRunner* runner_;
+    QTimer* derivingNotice_;  // single shot: kDerivingNoticeMs after a derivation starts
+    bool deriving_ = false;
+    int derivingScroll_ = 0;  // px: where the text of the event being derived is to open
 };
 
 }  // namespace cuelab

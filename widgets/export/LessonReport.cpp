@@ -256,7 +256,9 @@ void keyCollisionPage(QPainter& p, const SimulationResult& r, const std::optiona
         paragraph(p, y, tr("This shot has no collision."), 15);
         return;
     }
-    const explain::Explanation e = explain::explain(r, index, shot);
+    // (Within the core's budget for running the shot again: a held group's solve past it is left
+    // out of the page, which says so.)
+    const explain::Explanation e = explain::explain(r, index, shot, explain::ExplainLimits{});
     y = paragraph(p, y, QStringLiteral("%1 %2 (%3 s)").arg(eventNumber(index), translated(e.title)).arg(e.time, 0, 'f', 4), 15, true);
     if (!e.model.empty()) y = paragraph(p, y, tr("Model: %1").arg(translated(e.model)), 13);
     p.setFont(font(13));

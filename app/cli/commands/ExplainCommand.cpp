@@ -163,7 +163,11 @@ Command explainCommand()
                                 .arg(count - 1)
                                 .arg(count));
         }
-        const explain::Explanation e = explain::explain(result, static_cast<int>(index), setup->shot);
+        // No budget for running the shot again (a held group's solve): asked for one event on the
+        // command line, the caller waits for the whole derivation, as for the simulation itself.
+        explain::ExplainLimits limits;
+        limits.runAgainSeconds = std::numeric_limits<double>::infinity();
+        const explain::Explanation e = explain::explain(result, static_cast<int>(index), setup->shot, limits);
         in.out() += QByteArray::fromStdString(format == QLatin1String("markdown") ? explain::toMarkdown(e)
                                                                                   : explanationJson(result, e));
         return Success;
