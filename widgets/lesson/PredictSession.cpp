@@ -85,8 +85,19 @@ bool PredictSession::start(QString* why)
 
 void PredictSession::withholdUntil(int question)
 {
-    document_->setHorizon(question < static_cast<int>(asked_.size()) ? std::optional<double>(asked_[std::size_t(question)].time)
-                                                                      : std::nullopt);
+    const bool open = question < static_cast<int>(asked_.size());
+    document_->setHorizon(open ? std::optional<double>(asked_[std::size_t(question)].time) : std::nullopt);
+    // Aiming in the view is locked while a question is open. Any change of the shot ends the session
+    // and shows the changed shot whole: a tenth of a degree (one Ctrl+arrow pressed by mistake) would
+    // show almost exactly the answer. The question is about the shot the student watched; to change
+    // it, Stop first.
+    if (view_) view_->setEditLock(open ? lockedWhy() : QString());
+}
+
+QString PredictSession::lockedWhy()
+{
+    return tr("Aiming is locked until you reveal the answer: a changed shot would give it away. Reveal, or "
+              "stop Predict, to aim again.");
 }
 
 void PredictSession::hideAnswers()
@@ -117,6 +128,7 @@ void PredictSession::stop()
     current_ = -1;
     predictions_.clear();
     document_->setHorizon(std::nullopt);  // everything shows again
+    if (view_) view_->setEditLock(QString());
     setState(State::Idle);
 }
 

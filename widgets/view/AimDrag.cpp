@@ -294,12 +294,19 @@ void AimDrag::end()
     if (changed) emit view_.shotAimFinished();
 }
 
-bool AimDrag::keyPress(QKeyEvent* event)
+bool AimDrag::isAimingKey(const QKeyEvent* event)
 {
     const Qt::KeyboardModifiers mods = event->modifiers() & ~Qt::KeypadModifier;
     if (!(mods & Qt::ControlModifier) || (mods & ~(Qt::ControlModifier | Qt::ShiftModifier | Qt::AltModifier))) return false;
     const int key = event->key();
-    if (key != Qt::Key_Left && key != Qt::Key_Right && key != Qt::Key_Up && key != Qt::Key_Down) return false;
+    return key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Up || key == Qt::Key_Down;
+}
+
+bool AimDrag::keyPress(QKeyEvent* event)
+{
+    if (!isAimingKey(event)) return false;
+    const Qt::KeyboardModifiers mods = event->modifiers() & ~Qt::KeypadModifier;
+    const int key = event->key();
     const ViewScene& scene = view_.scene();
     if (!scene.shot || handle_ != AimHandle::None) return false;
     const double scale = (mods & Qt::ShiftModifier) ? 10.0 : (mods & Qt::AltModifier) ? 0.1 : 1.0;

@@ -67,7 +67,13 @@ void TableInteraction::press(QMouseEvent* event)
     }
     if (event->button() != Qt::LeftButton) return;
     const ViewScene& scene = view_.scene();
+    const bool locked = !view_.editLock().isEmpty();
     if (const int arrow = velocityArrowUnder(event->position()); arrow >= 0) {
+        if (locked) {
+            mode_ = Mode::Locked;
+            emit view_.ballClicked(arrow);
+            return;
+        }
         mode_ = Mode::Velocity;
         ball_ = arrow;
         const Ball& b = view_.setupBalls()[static_cast<std::size_t>(arrow)];
@@ -76,6 +82,10 @@ void TableInteraction::press(QMouseEvent* event)
         return;
     }
     const AimHandle aim = view_.aim_->handleAt(event->position());
+    if (aim == AimHandle::Tip && locked) {
+        mode_ = Mode::Locked;
+        return;
+    }
     if (aim == AimHandle::Tip && view_.aim_->begin(aim, event->position())) {
         mode_ = Mode::Aim;
         view_.setCursor(AimDrag::cursorFor(aim, true));
@@ -86,6 +96,10 @@ void TableInteraction::press(QMouseEvent* event)
         emit view_.ballClicked(ball);
         // Balls move only where they are set up: at t = 0. Later a press on a ball selects it and
         // a drag orbits.
+        if (view_.time() <= 0.0 && scene.result && locked) {
+            mode_ = Mode::Locked;
+            return;
+        }
         if (view_.time() <= 0.0 && scene.result) {
             const Ball& b = view_.setupBalls()[static_cast<std::size_t>(ball)];
             const int struck = scene.shot ? scene.result->ballIndex(scene.shot->ball) : -1;
@@ -104,6 +118,10 @@ void TableInteraction::press(QMouseEvent* event)
             return;
         }
     }
+    if (ball < 0 && aim != AimHandle::None && locked) {
+        mode_ = Mode::Locked;
+        return;
+    }
     if (ball < 0 && aim != AimHandle::None && view_.aim_->begin(aim, event->position())) {
         mode_ = Mode::Aim;
         view_.setCursor(AimDrag::cursorFor(aim, true));
@@ -116,6 +134,7 @@ void TableInteraction::move(QMouseEvent* event)
 {
     const QPointF pos = event->position();
     if (!moved_ && QLineF(pos, pressPos_).length() < kDragThresholdPx) return;
+    const bool firstMotion = !moved_;
     moved_ = true;
     switch (mode_) {
     case Mode::None: break;
@@ -133,6 +152,9 @@ void TableInteraction::move(QMouseEvent* event)
     case Mode::Ball: dragBall(pos); break;
     case Mode::Velocity: dragVelocity(pos); break;
     case Mode::Aim: view_.aim_->drag(pos); break;
+    case Mode::Locked:
+        if (firstMotion) emit view_.editRefused(view_.editLock());
+        break;
     }
     lastPos_ = pos;
 }
@@ -221,7 +243,11 @@ void TableInteraction::reportPlacement()
 AimHandle TableInteraction::hover(const QPointF& pos)
 {
     // What a press there would drag, in the press's order: a velocity arrow's head, the tip mark, a
-    // ball (at t = 0), then the ghost ball or the cue.
+    // ball (at t = 0), then the ghost ball or the cue. Nothing while the view's edits are locked.
+    if (!view_.editLock().isEmpty()) {
+        if (view_.cursor().shape() != Qt::ArrowCursor) view_.setCursor(Qt::ArrowCursor);
+        return AimHandle::None;
+    }
     AimHandle aim = velocityArrowUnder(pos) >= 0 ? AimHandle::None : view_.aim_->handleAt(pos);
     const bool ball = velocityArrowUnder(pos) >= 0 ||
                       (aim != AimHandle::Tip && view_.time() <= 0.0 && view_.pickBall(pos) >= 0);

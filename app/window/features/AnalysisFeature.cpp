@@ -8,6 +8,7 @@
 #include "analysis/ShotFinderSection.h"
 #include "view/TableView.h"
 #include "editor/Document.h"
+#include "lesson/SpoilerCurtain.h"
 
 #include "Table.h"
 
@@ -99,7 +100,9 @@ void installAnalysis(MainWindow& window)
     placement.scroll = true;
     placement.tabifyWith = QStringLiteral("InspectorDock");  // the full height of the right column when raised
     placement.visible = false;  // opened from the Analysis menu; the layout remembers it afterwards
-    QDockWidget* dock = window.addPanel(panel, QObject::tr("Analysis"), QStringLiteral("AnalysisDock"), placement);
+    // While a lesson's question is open, the scans and maps would tell whether the shot makes its goal.
+    auto* curtain = new SpoilerCurtain(window.document(), panel);
+    QDockWidget* dock = window.addPanel(curtain, QObject::tr("Analysis"), QStringLiteral("AnalysisDock"), placement);
 
     QMenu* menu = window.menu(WindowMenu::Analysis);
     const auto showDock = [dock] {
@@ -124,12 +127,13 @@ void installAnalysis(MainWindow& window)
     // Find shots (issue 42): the chosen shot's paths drawn over the table while the dock is shown.
     ShotFinderSection* finder = panel->findChild<ShotFinderSection*>();
     TableView* view = window.tableView();
-    const auto showPaths = [finder, dock, view] {
+    const auto showPaths = [finder, dock, view, curtain] {
         ViewLayer layer = finder->ghostLayer();
-        if (dock->isVisible() && !layer.polylines.empty()) view->setLayer(QStringLiteral("shot-finder"), std::move(layer));
+        if (dock->isVisible() && !curtain->isDrawn() && !layer.polylines.empty()) view->setLayer(QStringLiteral("shot-finder"), std::move(layer));
         else view->clearLayer(QStringLiteral("shot-finder"));
     };
     QObject::connect(finder, &ShotFinderSection::ghostLayerChanged, view, showPaths);
+    QObject::connect(curtain, &SpoilerCurtain::drawnChanged, view, showPaths);
     view->installEventFilter(new GoalPicker(view, finder, window.document()));
     QObject::connect(dock, &QDockWidget::visibilityChanged, view, showPaths);
     QAction* find = menu->addAction(QObject::tr("&Find shots"));
