@@ -324,13 +324,27 @@ OverlayLabelPlan planOverlayLabels(const ViewScene& scene, const LabelFrame& fra
     const std::vector<std::optional<QRectF>> boxes =
         layoutLabels(requests, QRectF(QPointF(0, 0), QSizeF(frame.logicalSize)), reserved);
     for (std::size_t k = 0; k < labels.size(); ++k)
-        if (boxes[k]) plan.labels.push_back({labels[k].text, *boxes[k], labels[k].image});
+        if (boxes[k]) plan.labels.push_back({labels[k].text, *boxes[k], labels[k].image, leaderLine(requests[k].anchor, *boxes[k])});
     return plan;
 }
 
 void paintOverlayLabels(QPainter& painter, const ViewScene& scene, const LabelFrame& frame)
 {
     const OverlayLabelPlan plan = planOverlayLabels(scene, frame, painter.device()->devicePixelRatioF());
+    // Leader lines under the labels: a dark casing and a light core read on every cloth.
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    for (const QColor& ink : {QColor(0, 0, 0, 150), QColor(255, 255, 255, 210)}) {
+        const bool casing = ink.lightness() < 128;
+        painter.setPen(QPen(ink, casing ? 3.0 : 1.2));
+        painter.setBrush(ink);
+        for (const OverlayLabelPlan::Item& l : plan.labels)
+            if (l.leader) {
+                painter.drawLine(*l.leader);
+                painter.drawEllipse(l.leader->p1(), casing ? 2.5 : 1.6, casing ? 2.5 : 1.6);
+            }
+    }
+    painter.restore();
     for (const OverlayLabelPlan::Item& l : plan.labels) painter.drawImage(l.box.topLeft(), l.image);
     for (const OverlayLabelPlan::Item& k : plan.keys) painter.drawImage(k.box.topLeft(), k.image);
 }
