@@ -1,5 +1,7 @@
 #include "PredictSession.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "editor/Document.h"
 #include "editor/Playback.h"
 #include "view/TableView.h"
@@ -215,7 +217,7 @@ void PredictSession::drawLayer()
         if (!reveals) continue;
         const lesson::BallReveal& r = (*reveals)[i];
         QString verdict;
-        if (r.errorDeg) verdict = tr("%1: went here, %2° off").arg(id).arg(*r.errorDeg, 0, 'f', 1);
+        if (r.errorDeg) verdict = tr("%1: went here, %2° off").arg(id).arg(uiNumber(*r.errorDeg, 1));
         else if (r.actualDeg) verdict = tr("%1: went here").arg(id);
         else verdict = tr("%1: stayed").arg(id);
         if (r.actualDeg) layer.arrows.push_back({centre, arrowTo(*r.actualDeg), kActualColour, 4.0f, verdict});

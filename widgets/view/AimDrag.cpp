@@ -1,5 +1,7 @@
 #include "AimDrag.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "CuePlacement.h"
 #include "TableView.h"
 
@@ -380,19 +382,19 @@ QString AimDrag::readout() const
     QString set;
     switch (*gesture_) {
     case AimGesture::Turn:
-    case AimGesture::Ghost: set = tr("heading %1°").arg(s.headingDeg, 0, 'f', 2); break;
-    case AimGesture::Pull: set = tr("cue speed %1 m/s").arg(s.speed, 0, 'f', 2); break;
-    case AimGesture::Tip: set = tr("tip: side %1 R, height %2 R").arg(s.side, 0, 'f', 2).arg(s.height, 0, 'f', 2); break;
+    case AimGesture::Ghost: set = tr("heading %1°").arg(uiNumber(s.headingDeg, 2)); break;
+    case AimGesture::Pull: set = tr("cue speed %1 m/s").arg(uiNumber(s.speed, 2)); break;
+    case AimGesture::Tip: set = tr("tip: side %1 R, height %2 R").arg(uiNumber(s.side, 2)).arg(uiNumber(s.height, 2)); break;
     }
     QStringList lines{set};
     if (const auto& result = view_.scene().result) {
         if (const std::optional<aim::AimGeometry> g = aim::firstContact(*result)) {
             const QString side = g->side == aim::CutSide::Left ? tr("left") : g->side == aim::CutSide::Right ? tr("right") : QString();
-            lines << tr("cut %1° %2, ball fraction %3").arg(g->cutAngleDeg, 0, 'f', 1).arg(side).arg(g->ballFraction, 0, 'f', 2).simplified();
+            lines << tr("cut %1° %2, ball fraction %3").arg(uiNumber(g->cutAngleDeg, 1)).arg(side).arg(uiNumber(g->ballFraction, 2)).simplified();
         } else {
             lines << tr("no object ball hit");
         }
-        if (const std::optional<aim::Launch> l = aim::launchOf(*result)) lines << tr("ball speed %1 m/s").arg(l->speed, 0, 'f', 2);
+        if (const std::optional<aim::Launch> l = aim::launchOf(*result)) lines << tr("ball speed %1 m/s").arg(uiNumber(l->speed, 2));
     }
     return lines.join(QLatin1Char('\n'));
 }

@@ -1,5 +1,7 @@
 #include "OverlayLabels.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "LabelLayout.h"
 #include "OverlayLines.h"
 
@@ -81,7 +83,7 @@ const QImage& tagImage(LabelCache& cache, double time, TagStyle style)
     if (it != cache.tags.end()) return it->second;
     const QFont font = labelFont();
     const QFontMetricsF metrics(font);
-    const QString label = QStringLiteral("%1 s").arg(time, 0, 'f', 3);
+    const QString label = QStringLiteral("%1 s").arg(uiNumber(time, 3));
     const QSizeF size = metrics.size(Qt::TextSingleLine, label) + QSizeF(8.0, 2.0);
     QImage image = blankImage(size, cache.devicePixelRatio);
     const QColor ink = style == TagStyle::Highlighted ? QColor(20, 20, 0)
@@ -168,7 +170,7 @@ void collectEventTimes(const ViewScene& scene, const LabelFrame& frame, LabelCac
         if (!at) continue;
         // One label per instant as the label shows it (to the millisecond): a chain of contacts at
         // one instant (a rack, a break) reads as one time, at its first (or highlighted) event.
-        const QString text = QStringLiteral("%1 s").arg(ev.time, 0, 'f', 3);
+        const QString text = QStringLiteral("%1 s").arg(uiNumber(ev.time, 3));
         const bool repeated = std::any_of(shown.begin(), shown.end(), [&](const Shown& s) { return s.text == text; });
         if (repeated && !highlighted) continue;
         shown.push_back({text, *at});

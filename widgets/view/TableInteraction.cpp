@@ -1,5 +1,7 @@
 #include "TableInteraction.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "BallPlacement.h"
 #include "CameraAnimator.h"
 #include "TableView.h"
@@ -235,7 +237,7 @@ void TableInteraction::reportPlacement()
             break;
         }
     }
-    const QString distance = moved >= 0.1 ? tr("%1 m").arg(moved, 0, 'f', 2) : tr("%1 mm").arg(moved * 1e3, 0, 'f', 0);
+    const QString distance = moved >= 0.1 ? tr("%1 m").arg(uiNumber(moved, 2)) : tr("%1 mm").arg(uiNumber(moved * 1e3, 0));
     emit view_.ballPlacementAdjusted(ball_, tr("Ball \"%1\" placed %2 from the cursor, on the nearest free spot: %3.")
                                                 .arg(QString::fromStdString(ball.id), distance, why));
 }
