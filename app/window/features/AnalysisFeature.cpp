@@ -5,6 +5,7 @@
 #include "MainWindow.h"
 
 #include "analysis/AnalysisPanel.h"
+#include "analysis/OutcomeMap.h"
 #include "analysis/ShotFinderSection.h"
 #include "view/TableView.h"
 #include "editor/Document.h"
@@ -17,6 +18,8 @@
 #include <QComboBox>
 #include <QMenu>
 #include <QMouseEvent>
+#include <QScrollArea>
+#include <QTimer>
 
 #include <optional>
 
@@ -119,10 +122,15 @@ void installAnalysis(MainWindow& window)
     QAction* map = menu->addAction(QObject::tr("&Map tip offsets"));
     map->setShortcut(QKeySequence(QStringLiteral("Ctrl+Alt+M")));
     map->setStatusTip(QObject::tr("Simulate the shot for every tip offset within the miscue limit and colour each by its outcome"));
-    QObject::connect(map, &QAction::triggered, panel, [panel, showDock] {
+    QObject::connect(map, &QAction::triggered, panel, [panel, showDock, dock] {
         showDock();
         panel->mapMode()->setCurrentIndex(AnalysisPanel::TipOffsetDisk);
         panel->runMap();
+        // The map in view, wherever the dock was scrolled (it opened above the visible part), once
+        // the dock just shown has been laid out.
+        QTimer::singleShot(0, panel, [panel, dock] {
+            if (auto* scroller = qobject_cast<QScrollArea*>(dock->widget())) scroller->ensureWidgetVisible(panel->map(), 0, 0);
+        });
     });
     // Find shots (issue 42): the chosen shot's paths drawn over the table while the dock is shown.
     ShotFinderSection* finder = panel->findChild<ShotFinderSection*>();
