@@ -19,6 +19,7 @@ ToiChart::ToiChart(QWidget* parent) : QChartView(new QChart, parent)
     setRenderHint(QPainter::Antialiasing);
     chart()->legend()->setAlignment(Qt::AlignBottom);
     chart()->setMargins(QMargins(2, 2, 2, 2));
+    chart()->setLocalizeNumbers(true);  // axis labels in the interface's language ("0,56")
     setMinimumSize(240, 230);
     setExplanation(nullptr);
 }
