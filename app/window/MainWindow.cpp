@@ -105,6 +105,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(view_, &TableView::ballPlacementAdjusted, this, [this](int, const QString& message) {
         statusBar()->showMessage(message, window::kStatusMessageMs);
     });
+    // An edit in the view refused while it is locked (a lesson's open question): why, in the status bar.
+    connect(view_, &TableView::editRefused, this, [this](const QString& why) { statusBar()->showMessage(why, window::kStatusMessageMs); });
     // Dragging a velocity arrow at t = 0 sets that ball's initial velocity: features/EditorFeature.cpp.
     connect(document_, &Document::setupChanged, this, [this] {
         // The shot's cue and aim line follow the setup at once; the balls follow with the result.

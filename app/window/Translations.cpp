@@ -54,9 +54,16 @@ QString installTranslations(const QLocale& locale)
     auto own = std::make_unique<QTranslator>();
     // Tries every language of the locale in its order of preference: cuelab_hu_HU.qm, cuelab_hu.qm, ...
     shownLanguage() = QStringLiteral("en");
-    if (!own->load(locale, QStringLiteral("cuelab"), QStringLiteral("_"), kDirectory) || own->isEmpty())
+    if (!own->load(locale, QStringLiteral("cuelab"), QStringLiteral("_"), kDirectory) || own->isEmpty()) {
+        // English text, English numbers (a German system without a German translation: "0.293 s").
+        const bool english = locale.language() == QLocale::English || locale.language() == QLocale::C;
+        QLocale::setDefault(english ? locale : QLocale(QLocale::English));
         return shownLanguage();
+    }
     const QLocale shown(own->language().isEmpty() ? locale.name() : own->language());  // "hu_HU", from the .ts
+    // The numbers the window shows (widgets/i18n/UiNumbers.h) and the spin boxes follow the language
+    // shown: "0,293 s" beside Hungarian text. Files and the command line never use QLocale().
+    QLocale::setDefault(locale.language() == shown.language() ? locale : shown);
     QCoreApplication::installTranslator(own.get());
     ownTranslator() = std::move(own);
 

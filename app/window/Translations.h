@@ -18,7 +18,9 @@ QLocale interfaceLocale(const QString& requested);
 
 // Installs the translations for `locale`'s languages (the first of QLocale::uiLanguages() that has
 // one) and Qt's own for the same language, replacing those an earlier call installed. Returns the
-// language shown: "hu", or "en" when no translation matched (English, the default).
+// language shown: "hu", or "en" when no translation matched (English, the default). The default
+// locale (QLocale::setDefault) follows the language shown, so that the numbers the window shows do
+// too ("0,293 s" in Hungarian: widgets/i18n/UiNumbers.h).
 QString installTranslations(const QLocale& locale);
 
 // The language the last installTranslations() call installed: "hu", or "en" (also before any call).

@@ -18,6 +18,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace cuelab {
 
@@ -51,6 +53,10 @@ UserGuide::UserGuide(QWidget* parent) : QDialog(parent), browser_(new QTextBrows
             QDesktopServices::openUrl(target);
     });
     connect(browser_, &QTextBrowser::sourceChanged, this, &UserGuide::fitPictures);
+    browser_->viewport()->installEventFilter(this);
+    // The pages are long: a scroll bar that came and went as the pictures were fitted changed the
+    // page's width under them (fitted 14 px too wide).
+    browser_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOn);
     browser_->setSource(home_, QTextDocument::MarkdownResource);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
@@ -70,18 +76,25 @@ UserGuide::UserGuide(QWidget* parent) : QDialog(parent), browser_(new QTextBrows
     resize(std::min(980, screen.width() * 9 / 10), std::min(1000, screen.height() * 9 / 10));
 }
 
-void UserGuide::resizeEvent(QResizeEvent* event)
+bool UserGuide::eventFilter(QObject* watched, QEvent* event)
 {
-    QDialog::resizeEvent(event);
-    fitPictures();
+    if (watched == browser_->viewport() && event->type() == QEvent::Resize) fitPictures();
+    return QDialog::eventFilter(watched, event);
+}
+
+int UserGuide::pictureWidthFor(int naturalWidth) const
+{
+    const int room = std::max(200, browser_->viewport()->width() - 2 * static_cast<int>(browser_->document()->documentMargin()) - 8);
+    return std::min(room, naturalWidth);
 }
 
 void UserGuide::fitPictures()
 {
     // The screenshots are as wide as the screens they show: each is drawn at most as wide as the
-    // page (its height follows), never wider than it is.
+    // page (its height follows), never wider than it is. The pictures are found first and changed
+    // after: changing a fragment's format while walking the fragments skips the ones after it.
     QTextDocument* doc = browser_->document();
-    const int room = std::max(200, browser_->viewport()->width() - 2 * static_cast<int>(doc->documentMargin()) - 8);
+    std::vector<std::pair<QTextFragment, QTextImageFormat>> changes;
     for (QTextBlock block = doc->begin(); block.isValid(); block = block.next()) {
         for (auto it = block.begin(); !it.atEnd(); ++it) {
             const QTextFragment fragment = it.fragment();
@@ -90,15 +103,18 @@ void UserGuide::fitPictures()
             const QUrl url = browser_->source().resolved(QUrl(image.name()));
             const QImage picture(QStringLiteral(":") + url.path());
             if (picture.isNull()) continue;
-            const int width = std::min(room, picture.width());
+            const int width = pictureWidthFor(picture.width());
             if (std::abs(image.width() - width) < 1) continue;
             image.setWidth(width);
             image.setHeight(static_cast<double>(width) * picture.height() / picture.width());
-            QTextCursor cursor(doc);
-            cursor.setPosition(fragment.position());
-            cursor.setPosition(fragment.position() + fragment.length(), QTextCursor::KeepAnchor);
-            cursor.setCharFormat(image);
+            changes.emplace_back(fragment, image);
         }
+    }
+    for (const auto& [fragment, image] : changes) {
+        QTextCursor cursor(doc);
+        cursor.setPosition(fragment.position());
+        cursor.setPosition(fragment.position() + fragment.length(), QTextCursor::KeepAnchor);
+        cursor.setCharFormat(image);
     }
 }
 

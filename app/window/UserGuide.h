@@ -30,9 +30,14 @@ public:
 
     // The widest picture's width now (for tests): every picture fits the page's width.
     int widestPicture() const;
+    // The width a picture `naturalWidth` pixels wide is drawn at on the page now: the page's width,
+    // or less when the picture is narrower (never drawn wider than it is).
+    int pictureWidthFor(int naturalWidth) const;
 
 protected:
-    void resizeEvent(QResizeEvent* event) override;
+    // The page's own resizes (its viewport's), not the dialog's: a hidden dialog's resize comes
+    // before its page is laid out, and the pictures fitted then stayed small.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void fitPictures();

@@ -5,6 +5,7 @@
 
 #include "MainWindow.h"
 #include "analysis/AnalysisPanel.h"
+#include "analysis/OutcomeMap.h"
 #include "analysis/ShotFinderSection.h"
 #include "editor/Document.h"
 #include "editor/Playback.h"
@@ -14,7 +15,10 @@
 
 #include <QDockWidget>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -33,6 +37,7 @@ private slots:
         QSettings().setValue(QStringLiteral("help/firstStartTipSeen"), true);  // the tip would cover the view
     }
     void clicksMakeTheGoal();
+    void mapTipOffsetsShowsTheMap();
 
 private:
     QTemporaryDir settings_;
@@ -94,6 +99,41 @@ void TestShotFinderWindow::clicksMakeTheGoal()
 
     finder->pickButton()->setChecked(false);
     QVERIFY(view->layers().count(QStringLiteral("shot-finder")) == 0);
+}
+
+// Analysis > Map tip offsets with the dock scrolled to its end (the shot finder, at the bottom, in
+// view): the map is brought into view (issue 44: it opened above the visible part).
+void TestShotFinderWindow::mapTipOffsetsShowsTheMap()
+{
+    MainWindow window;
+    window.resize(1280, 800);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(window.openFile(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/straight-shot.json")));
+    window.document()->waitForResult();
+    auto* dock = window.findChild<QDockWidget*>(QStringLiteral("AnalysisDock"));
+    QVERIFY(dock);
+    dock->show();
+    dock->raise();
+    QTest::qWait(200);
+    auto* scroller = qobject_cast<QScrollArea*>(dock->widget());
+    auto* panel = window.findChild<AnalysisPanel*>();
+    QVERIFY(scroller && panel);
+    QVERIFY2(scroller->verticalScrollBar()->maximum() > 0, "the dock does not scroll at 1280x800: nothing to test");
+    const auto mapShown = [&] {
+        const QRect map(panel->map()->mapTo(scroller->viewport(), QPoint(0, 0)), panel->map()->size());
+        return scroller->viewport()->rect().intersected(map).height() >= std::min(map.height(), scroller->viewport()->height()) / 2;
+    };
+    scroller->verticalScrollBar()->setValue(scroller->verticalScrollBar()->maximum());
+    QCoreApplication::processEvents();
+    QVERIFY(!mapShown());
+    QAction* map = nullptr;
+    for (QAction* a : window.findChildren<QAction*>())
+        if (a->shortcut() == QKeySequence(QStringLiteral("Ctrl+Alt+M"))) map = a;
+    QVERIFY(map);
+    map->trigger();
+    QTRY_VERIFY(mapShown());
+    panel->cancel();
 }
 
 QTEST_MAIN(TestShotFinderWindow)

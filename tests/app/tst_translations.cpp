@@ -9,7 +9,9 @@
 #include "export/ShotFacts.h"
 #include "i18n/DisplayNames.h"
 #include "i18n/ExampleTexts.h"
+#include "editor/BallsPanel.h"
 #include "editor/Document.h"
+#include "editor/Playback.h"
 #include "outcome/OutcomePanel.h"
 
 #include <QAction>
@@ -27,6 +29,7 @@
 #include <QProcess>
 #include <QTest>
 #include <QRegularExpression>
+#include <QLabel>
 #include <QTableWidget>
 #include <QTranslator>
 
@@ -59,6 +62,7 @@ private slots:
     void hungarianWindow();
     void qtOwnStrings();
     void hungarianOutcomeAndHandouts();
+    void hungarianNumbersUseADecimalComma();
     void exampleLessons();
     void englishWindow_data();
     void englishWindow();
@@ -194,6 +198,45 @@ void TestTranslations::hungarianOutcomeAndHandouts()
         QRegularExpression::CaseInsensitiveOption);
     const QRegularExpressionMatch found = english.match(all);
     QVERIFY2(!found.hasMatch(), qPrintable(QStringLiteral("English \"%1\" in: %2").arg(found.captured(0), all)));
+}
+
+// Issue 44: numbers beside Hungarian text take a decimal comma ("6,493 s"), as the language writes
+// them; English keeps the point. The half-ball cut comes to rest at 6.493 s, its cue ball starts at
+// x = 1.2000 m (the Balls table shows four decimals), and the first contact is at 0.293 s.
+void TestTranslations::hungarianNumbersUseADecimalComma()
+{
+    const auto readouts = [] {
+        MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        if (!QTest::qWaitForWindowExposed(&window)) return QStringList();
+        if (!window.openFile(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/half-ball-cut.json"))) return QStringList();
+        window.document()->waitForResult();
+        QCoreApplication::processEvents();
+        window.playback()->setTime(0.5);
+        QCoreApplication::processEvents();
+        QTableWidget* balls = window.ballsPanel()->table();
+        return QStringList{window.findChild<QLabel*>(QStringLiteral("summaryStatus"))->text(),
+                           window.findChild<QLabel*>(QStringLiteral("outcomeStatus"))->text(),
+                           balls->item(0, BallsPanel::XColumn)->text(), balls->item(0, BallsPanel::PositionColumn)->text(),
+                           balls->item(0, BallsPanel::SpeedColumn)->text()};
+    };
+    QCOMPARE(installTranslations(QLocale(QStringLiteral("hu_HU"))), QStringLiteral("hu"));
+    const QStringList hu = readouts();
+    QCOMPARE(hu.size(), 5);
+    QVERIFY2(hu[0].contains(QStringLiteral("6,493")) && !hu[0].contains(QStringLiteral("6.493")), qPrintable(hu[0]));
+    QVERIFY2(hu[1].contains(QStringLiteral("0,293")), qPrintable(hu[1]));
+    QCOMPARE(hu[2], QStringLiteral("1,2000"));
+    // A pair of decimal-comma numbers is split by a semicolon, never by a comma.
+    QVERIFY2(QRegularExpression(QStringLiteral("^\\(\\d+,\\d{3}; \\d+,\\d{3}\\)$")).match(hu[3]).hasMatch(), qPrintable(hu[3]));
+    QVERIFY2(QRegularExpression(QStringLiteral("^\\d+,\\d{3}$")).match(hu[4]).hasMatch(), qPrintable(hu[4]));
+
+    installTranslations(QLocale::c());
+    const QStringList en = readouts();
+    QCOMPARE(en.size(), 5);
+    QVERIFY2(en[0].contains(QStringLiteral("6.493")), qPrintable(en[0]));
+    QCOMPARE(en[2], QStringLiteral("1.2000"));
+    QVERIFY2(QRegularExpression(QStringLiteral("^\\(\\d+\\.\\d{3}, \\d+\\.\\d{3}\\)$")).match(en[3]).hasMatch(), qPrintable(en[3]));
 }
 
 // Qt's own strings (standard buttons) follow, from qtbase_hu.qm, when the system has it.

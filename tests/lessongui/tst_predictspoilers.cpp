@@ -5,6 +5,8 @@
 // after the first collision, so the pocketing is the spoiler looked for.
 
 #include "MainWindow.h"
+#include "analysis/AnalysisPanel.h"
+#include "compare/ComparePanel.h"
 #include "editor/Document.h"
 #include "editor/EventTreeModel.h"
 #include "editor/EventsPanel.h"
@@ -16,6 +18,7 @@
 #include "explain/ExplainPanel.h"
 #include "lesson/PredictPanel.h"
 #include "lesson/PredictSession.h"
+#include "lesson/SpoilerCurtain.h"
 #include "outcome/OutcomePanel.h"
 #include "plots/PlotsPanel.h"
 #include "view/TableView.h"
@@ -27,18 +30,39 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
 
 #include <algorithm>
+#include <numbers>
 
 using namespace cuelab;
 
 namespace {
 
 const QString kHalfBall = QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/half-ball-cut.json");
+
+// A left-button drag in the view through `path`.
+void drag(TableView* view, const QList<QPointF>& path)
+{
+    const auto send = [view](QEvent::Type type, const QPointF& pos, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent e(type, pos, view->mapToGlobal(pos), button, buttons, Qt::NoModifier);
+        QCoreApplication::sendEvent(view, &e);
+    };
+    send(QEvent::MouseButtonPress, path.front(), Qt::LeftButton, Qt::LeftButton);
+    for (qsizetype i = 1; i < path.size(); ++i) send(QEvent::MouseMove, path[i], Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, path.back(), Qt::LeftButton, Qt::NoButton);
+}
+
+// Where a table point (m, at a ball's centre height) shows in the view.
+QPointF at(const TableView& view, double x, double y)
+{
+    constexpr float kR = 0.028575f;  // m, a pool ball's radius
+    return view.widgetPointOf(QVector3D(float(x), float(y), kR)).value_or(QPointF(-1.0, -1.0));
+}
 
 // Every text of a model's rows (and their children), all columns.
 QStringList allTexts(const QAbstractItemModel& model, const QModelIndex& parent = {})
@@ -109,6 +133,9 @@ private slots:
     void theRevealShowsEverything();
     void aLaterQuestionStaysHiddenAfterTheFirstReveal();
     void stopShowsEverything();
+    void aimingKeysAreLockedWhileAQuestionWaits();
+    void aimDragsAreLockedUntilTheLastReveal();
+    void compareAndAnalysisWaitForTheReveal();
 
 private:
     void startAndWaitForQuestion();
@@ -305,6 +332,117 @@ void TestPredictSpoilers::stopShowsEverything()
     QTest::mouseClick(panel_->startButton(), Qt::LeftButton);  // Stop
     QCOMPARE(panel_->session()->state(), PredictSession::State::Idle);
     verifyWholeShown();
+}
+
+void TestPredictSpoilers::aimingKeysAreLockedWhileAQuestionWaits()
+{
+    // Ctrl+Left turns the cue at any time; during a question it would edit the shot, end the session
+    // and show the (almost) same shot whole: the answer. Locked, it changes nothing and says why.
+    startAndWaitForQuestion();
+    TableView* view = window_->tableView();
+    Document* d = window_->document();
+    const CueStrike shot = *d->setup().shot;
+    const int steps = d->undoStack()->count();
+    view->setFocus();
+    QTest::keyClick(view, Qt::Key_Left, Qt::ControlModifier);
+    QTest::keyClick(view, Qt::Key_Up, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(d->setup().shot->headingDeg, shot.headingDeg);
+    QCOMPARE(d->setup().shot->speed, shot.speed);
+    QCOMPARE(d->undoStack()->count(), steps);
+    QCOMPARE(panel_->session()->state(), PredictSession::State::Asking);
+    QCOMPARE(window_->statusBar()->currentMessage(), PredictSession::lockedWhy());
+    verifyShownUpTo(tHit_);
+
+    // After the (only) reveal the keys aim again.
+    QTest::mouseClick(panel_->revealButton(), Qt::LeftButton);
+    QVERIFY(view->editLock().isEmpty());
+    window_->playback()->pause();
+    view->setFocus();
+    QTest::keyClick(view, Qt::Key_Left, Qt::ControlModifier);
+    QCOMPARE(d->setup().shot->headingDeg, shot.headingDeg + 0.1);
+}
+
+void TestPredictSpoilers::aimDragsAreLockedUntilTheLastReveal()
+{
+    // Two questions: after the first reveal the second still waits. Back at t = 0 the cue can be
+    // dragged, a ball too; locked, neither moves, and the second question stays hidden.
+    Setup s = window_->document()->setup();
+    PredictQuestion first;
+    first.event = hit_;
+    PredictQuestion second;
+    second.event = pocketing_;
+    s.questions = {first, second};
+    QVERIFY(window_->document()->edit(QStringLiteral("Two questions"), s));
+    window_->document()->waitForResult();
+    whole_ = window_->document()->result();
+    startAndWaitForQuestion();
+    QTest::mouseClick(panel_->revealButton(), Qt::LeftButton);
+    window_->playback()->pause();
+    window_->playback()->setTime(0.0);
+    QCOMPARE(panel_->session()->state(), PredictSession::State::Revealed);
+    TableView* view = window_->tableView();
+    view->setCameraPreset(CameraPreset::Top, false);
+    QCoreApplication::processEvents();
+    Document* d = window_->document();
+    const CueStrike shot = *d->setup().shot;
+    const Vec2 cue = d->setup().balls[0].state.position;
+    QVERIFY(d->setup().balls[0].id == shot.ball);
+    const double h = shot.headingDeg * std::numbers::pi / 180.0;
+    const Vec2 back(-std::cos(h), -std::sin(h));
+    // The cue, 0.4 m behind the ball: something to aim with (the lock does not hide it).
+    const Vec2 grab = cue + 0.4 * back;
+    QCOMPARE(view->aim().handleAt(at(*view, grab.x(), grab.y())), AimHandle::Cue);
+    QList<QPointF> swing;
+    for (int k = 0; k <= 10; ++k) swing << at(*view, grab.x() + 0.01 * k * back.y(), grab.y() - 0.01 * k * back.x());
+    window_->statusBar()->clearMessage();
+    drag(view, swing);
+    QCOMPARE(d->setup().shot->headingDeg, shot.headingDeg);
+    QCOMPARE(window_->statusBar()->currentMessage(), PredictSession::lockedWhy());
+    // The cue ball dragged 10 cm sideways stays where it is.
+    QList<QPointF> move;
+    for (int k = 0; k <= 10; ++k) move << at(*view, cue.x(), cue.y() - 0.01 * k);
+    drag(view, move);
+    QVERIFY(d->setup().balls[0].state.position == cue);
+    QCOMPARE(panel_->session()->state(), PredictSession::State::Revealed);
+    QVERIFY(d->isWithholding());
+    QCOMPARE(*d->horizon(), whole_->events[std::size_t(pocketing_)].time);
+}
+
+void TestPredictSpoilers::compareAndAnalysisWaitForTheReveal()
+{
+    // Both docks run the shot themselves: before the reveal each shows only the curtain's line.
+    auto* compareDock = window_->findChild<QDockWidget*>(QStringLiteral("CompareDock"));
+    auto* analysisDock = window_->findChild<QDockWidget*>(QStringLiteral("AnalysisDock"));
+    QVERIFY(compareDock && analysisDock);
+    compareDock->show();
+    analysisDock->show();
+    analysisDock->raise();
+    auto* compare = window_->findChild<ComparePanel*>();
+    auto* analysis = window_->findChild<AnalysisPanel*>();
+    QVERIFY(compare && analysis);
+    compare->waitForIdle();
+    QTRY_VERIFY(compare->comparison() != nullptr);
+    QCoreApplication::processEvents();
+    QVERIFY(compare->isVisible() && analysis->isVisible());
+    QVERIFY(window_->tableView()->layers().count(QStringLiteral("compare")) == 1);
+
+    startAndWaitForQuestion();
+    QVERIFY(!compare->isVisible());
+    QVERIFY(!analysis->isVisible());
+    const QList<SpoilerCurtain*> curtains = window_->findChildren<SpoilerCurtain*>();
+    QCOMPARE(curtains.size(), 2);
+    for (SpoilerCurtain* curtain : curtains) {
+        QVERIFY(curtain->isDrawn());
+        QVERIFY(curtain->noteLabel()->isVisible());
+        QCOMPARE(curtain->noteLabel()->text(), SpoilerCurtain::note());
+    }
+    // Nor do the other engine's ghost balls stay in the view.
+    QCOMPARE(window_->tableView()->layers().count(QStringLiteral("compare")), std::size_t(0));
+
+    QTest::mouseClick(panel_->revealButton(), Qt::LeftButton);
+    QVERIFY(compare->isVisible() && analysis->isVisible());
+    for (SpoilerCurtain* curtain : curtains) QVERIFY(!curtain->isDrawn());
+    QCOMPARE(window_->tableView()->layers().count(QStringLiteral("compare")), std::size_t(1));
 }
 
 QTEST_MAIN(TestPredictSpoilers)

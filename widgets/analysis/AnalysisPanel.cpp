@@ -1,5 +1,7 @@
 #include "AnalysisPanel.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "GoalWords.h"
 
 #include "AnalysisJob.h"
@@ -88,7 +90,7 @@ QString cellTip(const ShotResult& shot, const SweepSpec& spec, const Table& tabl
                                                       ? QString::fromStdString(table.pockets[static_cast<std::size_t>(p.pocket)].id)
                                                       : QStringLiteral("?"));
         lines << AnalysisPanel::tr("pocketed: %1").arg(pots.isEmpty() ? AnalysisPanel::tr("none") : pots.join(QStringLiteral(", ")));
-        lines << AnalysisPanel::tr("%1 events, at rest at %2 s").arg(shot.events).arg(shot.endTime, 0, 'f', 3);
+        lines << AnalysisPanel::tr("%1 events, at rest at %2 s").arg(shot.events).arg(uiNumber(shot.endTime, 3));
     }
     lines << AnalysisPanel::tr("Click to load this shot.");
     return lines.join(QLatin1Char('\n'));

@@ -1,5 +1,7 @@
 #include "OddsMap.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "Tolerance.h"
 
 #include <QMouseEvent>
@@ -181,7 +183,7 @@ void OddsMap::paintEvent(QPaintEvent*)
         const QString unit = QString::fromStdString(analysis::unitOf(v.parameter.key())).trimmed();
         return QString::fromStdString(v.parameter.key()) + (unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit));
     };
-    const auto number = [](double v) { return QString::number(v, 'g', 4); };
+    const auto number = [](double v) { return uiSignificant(v, 4); };
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), fh), Qt::AlignLeft, number(x_->range.from));
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), fh), Qt::AlignRight, number(x_->range.to));
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), fh), Qt::AlignHCenter, label(*x_));

@@ -1,5 +1,7 @@
 #include "OutcomeMap.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "i18n/DisplayNames.h"
 
 #include <QHelpEvent>
@@ -156,7 +158,7 @@ void OutcomeMap::paintEvent(QPaintEvent*)
     // Axes: the parameters by name with their units, and the ends of the ranges.
     const int fh = fontMetrics().height();
     const auto label = [](const analysis::Variation& v) { return displayKeyName(v.parameter.key()); };
-    const auto number = [](double v) { return QString::number(v, 'g', 4); };
+    const auto number = [](double v) { return uiSignificant(v, 4); };
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), fh), Qt::AlignLeft, number(x_->range.from));
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), fh), Qt::AlignRight, number(x_->range.to));
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), fh), Qt::AlignHCenter, label(*x_));

@@ -1,5 +1,7 @@
 #include "ShotFinderSection.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "AnalysisJob.h"
 
 #include "editor/Document.h"
@@ -234,10 +236,10 @@ void ShotFinderSection::show(const solve::SolveResult& result)
     emit ghostLayerChanged();
     setStatus(shots_.empty() ? tr("No strike met the goal (%1 simulations, %2 s).")
                                    .arg(result.evaluations)
-                                   .arg(result.seconds, 0, 'f', 1)
+                                   .arg(uiNumber(result.seconds, 1))
                              : tr("%1 simulations in %2 s; each shot's odds from %3 fresh strikes.")
                                    .arg(result.evaluations)
-                                   .arg(result.seconds, 0, 'f', 1)
+                                   .arg(uiNumber(result.seconds, 1))
                                    .arg(kSamples));
 }
 
@@ -284,7 +286,7 @@ QString ShotFinderSection::pickedGoal() const
     if (setup.shot) {
         goal += QStringLiteral(",no-scratch");
         if (pickedZone_) {
-            const auto mm = [](double v) { return QString::number(v, 'f', 3); };
+            const auto mm = [](double v) { return uiNumber(v, 3); };
             goal += QStringLiteral(",in:%1@%2:%3:%4:%5")
                         .arg(QString::fromStdString(setup.shot->ball), mm(pickedZone_->first.x()), mm(pickedZone_->first.y()),
                              mm(pickedZone_->second.x()), mm(pickedZone_->second.y()));

@@ -1,5 +1,7 @@
 #include "ToleranceBar.h"
 
+#include "i18n/UiNumbers.h"
+
 #include <QPainter>
 #include <QPainterPath>
 
@@ -25,7 +27,7 @@ int decimalsFor(const std::string& key)
 QString valueText(const std::string& key, double value)
 {
     const QString unit = QString::fromStdString(analysis::unitOf(key)).trimmed();
-    const QString number = QString::number(value, 'f', decimalsFor(key));
+    const QString number = uiNumber(value, decimalsFor(key));
     if (unit.isEmpty()) return number;
     return unit == QStringLiteral("°") ? number + unit : number + QLatin1Char(' ') + unit;
 }

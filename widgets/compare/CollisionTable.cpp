@@ -1,5 +1,7 @@
 #include "CollisionTable.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "i18n/DisplayNames.h"
 
 #include <QHeaderView>
@@ -72,21 +74,21 @@ void CollisionTable::setComparison(const compare::Comparison& c)
         // The exact run's event number (#N, as the Events list, Explain and the report write it).
         setItem(r, Index, makeItem(k < a.size() && a[k].event >= 0 ? eventNumber(a[k].event) : QString()));
         if (k < a.size()) {
-            setItem(r, ExactTime, makeItem(QString::number(a[k].time, 'f', 4), a[k].time));
+            setItem(r, ExactTime, makeItem(uiNumber(a[k].time, 4), a[k].time));
             setItem(r, ExactWhat, makeItem(describe(a[k], c.exact.ids)));
         } else {
             setItem(r, ExactTime, makeItem(QString()));
             setItem(r, ExactWhat, makeItem(tr("(none)")));
         }
         if (k < b.size()) {
-            setItem(r, EngineTime, makeItem(QString::number(b[k].time, 'f', 4), b[k].time));
+            setItem(r, EngineTime, makeItem(uiNumber(b[k].time, 4), b[k].time));
             setItem(r, EngineWhat, makeItem(describe(b[k], c.run.ids)));
         } else {
             setItem(r, EngineTime, makeItem(QString()));
             setItem(r, EngineWhat, makeItem(tr("(none)")));
         }
         const bool matched = k < c.divergence.matched.size();
-        setItem(r, Difference, makeItem(matched ? QString::number(1000.0 * c.divergence.matched[k].difference(), 'f', 2)
+        setItem(r, Difference, makeItem(matched ? uiNumber(1000.0 * c.divergence.matched[k].difference(), 2)
                                             : QString()));
         if (r == first) {
             for (int col = 0; col < ColumnCount; ++col) {

@@ -13,6 +13,7 @@ CompareChart::CompareChart(QWidget* parent)
     : QChartView(parent), x_(new QValueAxis), y_(new QValueAxis), cursor_(new QLineSeries)
 {
     auto* c = new QChart;
+    c->setLocalizeNumbers(true);  // axis labels in the interface's language ("0,56")
     c->setTitle(tr("Position error against the exact run"));
     c->legend()->setAlignment(Qt::AlignRight);
     x_->setTitleText(tr("time (s)"));

@@ -1,5 +1,7 @@
 #include "ComparePanel.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "CollisionTable.h"
 #include "CompareChart.h"
 #include "CompareGhosts.h"
@@ -26,10 +28,10 @@ namespace {
 
 QString metres(double m)
 {
-    if (m >= 1.0) return QObject::tr("%1 m").arg(m, 0, 'f', 3);
-    if (m >= 0.01) return QObject::tr("%1 cm").arg(100.0 * m, 0, 'f', 1);
-    if (m >= 1e-5) return QObject::tr("%1 mm").arg(1000.0 * m, 0, 'f', 2);
-    return QObject::tr("%1 µm").arg(1e6 * m, 0, 'g', 3);
+    if (m >= 1.0) return QObject::tr("%1 m").arg(uiNumber(m, 3));
+    if (m >= 0.01) return QObject::tr("%1 cm").arg(uiNumber(100.0 * m, 1));
+    if (m >= 1e-5) return QObject::tr("%1 mm").arg(uiNumber(1000.0 * m, 2));
+    return QObject::tr("%1 µm").arg(uiSignificant(1e6 * m, 3));
 }
 
 }  // namespace
@@ -228,7 +230,7 @@ void ComparePanel::showResult()
     if (d.maxErrorBall >= 0 && d.maxError > 0.0)
         lines << tr("Largest error %1 (ball %2 at %3 s).")
                      .arg(metres(d.maxError), QString::fromStdString(c->run.ids[std::size_t(d.maxErrorBall)]))
-                     .arg(d.maxErrorTime, 0, 'f', 3);
+                     .arg(uiNumber(d.maxErrorTime, 3));
     else
         lines << tr("No position error.");
     double worstFinal = 0.0;
@@ -246,16 +248,16 @@ void ComparePanel::showResult()
                      .arg(eventNumber(exact[part].event))
                      .arg(d.matched.size())
                      .arg(exact.size())
-                     .arg(1000.0 * d.maxEventTimeDifference, 0, 'f', 2);
+                     .arg(uiNumber(1000.0 * d.maxEventTimeDifference, 2));
     else if (d.firstSequenceDifference)
         lines << tr("The collisions part after the exact run's last one (%1 of %2 agree; largest time difference %3 ms).")
                      .arg(d.matched.size())
                      .arg(exact.size())
-                     .arg(1000.0 * d.maxEventTimeDifference, 0, 'f', 2);
+                     .arg(uiNumber(1000.0 * d.maxEventTimeDifference, 2));
     else
         lines << tr("Same %1 collisions in the same order (largest time difference %2 ms).")
                      .arg(c->exact.collisions.size())
-                     .arg(1000.0 * d.maxEventTimeDifference, 0, 'f', 2);
+                     .arg(uiNumber(1000.0 * d.maxEventTimeDifference, 2));
     lines << tr("Deepest overlap of two balls: %1.").arg(metres(d.worstOverlap));
     summary_->setText(lines.join(QLatin1Char(' ')));
 

@@ -1,5 +1,7 @@
 #include "AimControl.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "Document.h"
 #include "Quantities.h"
 
@@ -128,8 +130,8 @@ void AimControl::refreshContact()
     const QString side = g->side == aim::CutSide::Left ? tr("left") : g->side == aim::CutSide::Right ? tr("right") : tr("straight");
     contact_->setText(tr("First contact: %1, cut %2 %3, ball fraction %4")
                           .arg(QString::fromStdString(result->balls[static_cast<std::size_t>(other)].id),
-                               QString::number(g->cutAngleDeg, 'f', 1) + QStringLiteral("°"), side,
-                               QString::number(g->ballFraction, 'f', 2)));
+                               uiNumber(g->cutAngleDeg, 1) + QStringLiteral("°"), side,
+                               uiNumber(g->ballFraction, 2)));
 }
 
 void AimControl::commit()
@@ -147,7 +149,7 @@ void AimControl::commit()
     if (!heading) return refresh();
     shot->headingDeg = *heading;
     const QString text = tr("Aim at %1, cut %2 %3")
-                             .arg(object_->currentText(), QString::number(cut, 'f', 1) + QStringLiteral("°"),
+                             .arg(object_->currentText(), uiNumber(cut, 1) + QStringLiteral("°"),
                                   side == aim::CutSide::Straight ? tr("straight") : side_->currentText());
     if (!document_->setShot(shot, text, kField)) refresh();
 }

@@ -1,5 +1,7 @@
 #include "AimLayer.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "Aim.h"
 #include "Quantities.h"
 
@@ -41,8 +43,8 @@ ViewLayer aimLayer(const SimulationResult& result)
     layer.polylines.push_back({{Vec3(g->ghostBall.x(), g->ghostBall.y(), kLineLift), Vec3(on.x(), on.y(), kLineLift)},
                                kCentresLine, 2.0f, false,
                                tr("cut %1 %2, ball fraction %3")
-                                   .arg(QString::number(g->cutAngleDeg, 'f', 1) + QStringLiteral("°"), side,
-                                        QString::number(g->ballFraction, 'f', 2))
+                                   .arg(uiNumber(g->cutAngleDeg, 1) + QStringLiteral("°"), side,
+                                        uiNumber(g->ballFraction, 2))
                                    .simplified()});
     LayerMarker& contact = layer.markers.emplace_back();
     contact.position = Vec3(g->contactPoint.x(), g->contactPoint.y(), 2.0 * std::max(struck.radius, other.radius) + kMarkerLift);

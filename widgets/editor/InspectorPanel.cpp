@@ -1,5 +1,7 @@
 #include "InspectorPanel.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "i18n/DisplayNames.h"
 #include "EventTableModel.h"
 #include "Quantities.h"
@@ -97,7 +99,7 @@ void InspectorPanel::addAim(QTreeWidgetItem* parent, const aim::AimGeometry& g)
     add(node, tr("Cut angle"), tr("%1 %2").arg(formatQuantity(g.cutAngleDeg, QStringLiteral("°"), 4), cutSideText(g.side)),
         tr("Angle in degrees between the first ball's path and the line of centres at contact: 0° full hit, "
            "30° half ball; left or right: where the other ball goes, seen along the path"));
-    add(node, tr("Ball fraction"), QString::number(g.ballFraction, 'f', 3),
+    add(node, tr("Ball fraction"), uiNumber(g.ballFraction, 3),
         tr("1 − sin(cut angle): the share of the other ball the first covers along its path (1 full, 0.5 half ball, 0 a graze)"));
     add(node, tr("Ghost ball"), formatVector(g.ghostBall, QStringLiteral("m"), 4),
         tr("Where the first ball's centre is at contact (m): aim at it"));

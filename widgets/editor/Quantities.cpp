@@ -1,9 +1,9 @@
 #include "Quantities.h"
 
-#include <QDoubleSpinBox>
-#include <QLocale>
+#include "i18n/UiNumbers.h"
 
-#include <cmath>
+#include <QDoubleSpinBox>
+
 
 namespace cuelab {
 
@@ -14,9 +14,7 @@ QString toQString(std::string_view text)
 
 QString formatNumber(double value, int decimals)
 {
-    // A value that rounds to zero is shown as zero, never as "-0.000".
-    if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;
-    return QLocale::c().toString(value, 'f', decimals);
+    return uiNumber(value, decimals);  // in the interface's language: "0,293" in Hungarian
 }
 
 QString formatQuantity(double value, const QString& unit, int decimals)
@@ -27,13 +25,14 @@ QString formatQuantity(double value, const QString& unit, int decimals)
 
 QString formatVector(const Vec2& v, const QString& unit, int decimals)
 {
-    return QStringLiteral("(%1, %2) %3").arg(formatNumber(v.x(), decimals), formatNumber(v.y(), decimals), unit);
+    return QStringLiteral("(%1%2%3) %4").arg(formatNumber(v.x(), decimals), uiListSeparator(), formatNumber(v.y(), decimals), unit);
 }
 
 QString formatVector(const Vec3& v, const QString& unit, int decimals)
 {
-    return QStringLiteral("(%1, %2, %3) %4")
-        .arg(formatNumber(v.x(), decimals), formatNumber(v.y(), decimals), formatNumber(v.z(), decimals), unit);
+    const QString sep = uiListSeparator();
+    return QStringLiteral("(%1%2%3%4%5) %6")
+        .arg(formatNumber(v.x(), decimals), sep, formatNumber(v.y(), decimals), sep, formatNumber(v.z(), decimals), unit);
 }
 
 QDoubleSpinBox* makeSpinBox(const SpinBoxSpec& spec, QWidget* parent)

@@ -1,5 +1,7 @@
 #include "ConservationWidget.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "Frames.h"
 
 #include <QFontMetricsF>
@@ -135,9 +137,9 @@ QString ConservationWidget::energyChange(double before, double after)
     // arithmetic, an elastic collision) is none.
     if (std::abs(change) <= 1e-6 * std::max(std::abs(before), std::abs(after)) || std::abs(change) < 1e-12)
         return tr("ΔE = 0 J (conserved)");
-    if (before <= 0.0) return tr("ΔE = %1 J").arg(change, 0, 'g', 3);
+    if (before <= 0.0) return tr("ΔE = %1 J").arg(uiSignificant(change, 3));
     const double percent = 100.0 * change / before;
-    return tr("ΔE = %1 J (%2 %)").arg(change, 0, 'g', 3).arg(percent, 0, 'g', std::abs(percent) >= 1.0 ? 3 : 2);
+    return tr("ΔE = %1 J (%2 %)").arg(uiSignificant(change, 3)).arg(uiSignificant(percent, std::abs(percent) >= 1.0 ? 3 : 2));
 }
 
 void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area, const Figure& f, const QPalette& palette)
@@ -193,7 +195,7 @@ void ConservationWidget::paintMomenta(QPainter& p, const QRectF& area, const Fig
         p.drawText(under, Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
         // A total that is rounding only (the centre-of-mass frame's, about 1e-17 N s) reads 0.
         const double total = tip.norm() <= 1e-12 * std::max(longest, 1e-9) ? 0.0 : tip.norm();
-        p.drawText(under.translated(0, line), Qt::AlignCenter, QStringLiteral("|P| = %1").arg(total, 0, 'g', 3));
+        p.drawText(under.translated(0, line), Qt::AlignCenter, QStringLiteral("|P| = %1").arg(uiSignificant(total, 3)));
     }
     // The key: each ball's colour, the total dashed.
     double x = area.left();
@@ -266,7 +268,7 @@ void ConservationWidget::paintEnergy(QPainter& p, const QRectF& area, const Figu
         p.setPen(palette.color(QPalette::Text));
         p.drawText(QRectF(x - 6, body.bottom() + 1, barW + 12, line), Qt::AlignCenter, phase == 0 ? tr("before") : tr("after"));
         // The total in its own row above the bars: never over the title or a bar.
-        p.drawText(QRectF(x - 10, values.top(), barW + 20, line), Qt::AlignCenter, QString::number(totals[phase], 'g', 3));
+        p.drawText(QRectF(x - 10, values.top(), barW + 20, line), Qt::AlignCenter, uiSignificant(totals[phase], 3));
     }
     // The legend: each ball's colour; the light part of a bar is rotation; the hatched parts are lost.
     double x = area.left();

@@ -1,5 +1,7 @@
 #include "EventArrows.h"
 
+#include "i18n/UiNumbers.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -15,7 +17,7 @@ constexpr double kVerticalImpulseShown = 5e-4;  // N·s: a smaller vertical impu
 // The context lupdate gives tr() calls in functions of namespace cuelab (resources/translations).
 QString tr(const char* text) { return QCoreApplication::translate("cuelab", text); }
 
-QString newtonSeconds(double value) { return QString::number(value, 'f', 3); }
+QString newtonSeconds(double value) { return uiNumber(value, 3); }
 
 }  // namespace
 

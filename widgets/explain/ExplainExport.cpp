@@ -1,5 +1,7 @@
 #include "ExplainExport.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "Explain.h"
 #include "ExplainLanguage.h"
 #include "ExplainText.h"
@@ -48,7 +50,7 @@ void paintToi(QPainter& p, const QRectF& area, const explain::TimeOfImpact& toi)
     };
     p.setPen(Qt::black);
     p.drawText(QRectF(area.left(), area.top(), area.width(), line), Qt::AlignHCenter,
-               QObject::tr("f(τ), the gap, from t₀ = %1 s").arg(toi.t0, 0, 'g', 6));
+               QObject::tr("f(τ), the gap, from t₀ = %1 s").arg(uiSignificant(toi.t0, 6)));
     p.setPen(QPen(QColor(150, 150, 150), 1.0));
     p.drawRect(plot);
     p.setPen(QPen(QColor(120, 120, 120), 1.0, Qt::DashLine));
@@ -67,12 +69,12 @@ void paintToi(QPainter& p, const QRectF& area, const explain::TimeOfImpact& toi)
     const QPointF root = at(toi.root, 0.0);
     p.drawEllipse(root, 4, 4);
     p.setPen(Qt::black);
-    p.drawText(QRectF(area.left(), plot.top(), 66, line), Qt::AlignRight, QString::number(hi, 'g', 3));
-    p.drawText(QRectF(area.left(), plot.bottom() - line, 66, line), Qt::AlignRight, QString::number(lo, 'g', 3));
+    p.drawText(QRectF(area.left(), plot.top(), 66, line), Qt::AlignRight, uiSignificant(hi, 3));
+    p.drawText(QRectF(area.left(), plot.bottom() - line, 66, line), Qt::AlignRight, uiSignificant(lo, 3));
     p.drawText(QRectF(plot.left(), plot.bottom() + 2, plot.width(), line), Qt::AlignLeft, QStringLiteral("0"));
-    p.drawText(QRectF(plot.left(), plot.bottom() + 2, plot.width(), line), Qt::AlignRight, QObject::tr("τ = %1 s").arg(span, 0, 'g', 4));
+    p.drawText(QRectF(plot.left(), plot.bottom() + 2, plot.width(), line), Qt::AlignRight, QObject::tr("τ = %1 s").arg(uiSignificant(span, 4)));
     p.drawText(QRectF(plot.left(), plot.bottom() + line + 2, plot.width(), line), Qt::AlignHCenter,
-               QObject::tr("blue: f(τ); dashed: f = 0; red dot: the chosen root τ* = %1 s").arg(toi.root, 0, 'g', 6));
+               QObject::tr("blue: f(τ); dashed: f = 0; red dot: the chosen root τ* = %1 s").arg(uiSignificant(toi.root, 6)));
 }
 
 // A figure as an inline <svg> element (no XML prolog), to embed in the HTML.

@@ -1,5 +1,7 @@
 #include "FrameArrows.h"
 
+#include "i18n/UiNumbers.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -34,7 +36,7 @@ ViewLayer momentumChangeLayer(const explain::Explanation& e, ArrowFrame frame)
         const Vec3 from = lifted(b.before.position + kArrowMetresPerNewtonSecond * p, z);
         const Vec3 to = lifted(b.before.position + kArrowMetresPerNewtonSecond * q, z);
         const QString id = QString::fromStdString(b.id);
-        const QString value = QString::number(change.norm(), 'f', 3);
+        const QString value = uiNumber(change.norm(), 3);
         // Labelled halfway: its head is the tip of p′, whose own label stands there.
         layer.arrows.push_back({from, to, kChangeColours[k % 2], 2.5f,
                                 k == 0 ? tr("Δp %1 = J = %2 N·s").arg(id, value) : tr("Δp %1 = −J = %2 N·s").arg(id, value),
@@ -61,7 +63,7 @@ ViewLayer centreOfMassLayer(const SimulationResult& result, const explain::Expla
     const Vec2 V = aim::centreOfMassFrame(bodies).velocity;
     if (V.norm() * 0.3 >= kShortest)
         layer.arrows.push_back({lifted(here, z), lifted(here + 0.3 * V, z), kFrameColour, 2.0f,
-                                tr("V = %1 m/s").arg(QString::number(V.norm(), 'f', 3))});
+                                tr("V = %1 m/s").arg(uiNumber(V.norm(), 3))});
     // The paths near the event in the frame: each side sampled from the exact motion.
     const double from = std::max(0.0, e.time - window), to = std::min(result.endTime, e.time + window);
     for (std::size_t k = 0; k < 2; ++k) {

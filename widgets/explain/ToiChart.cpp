@@ -1,5 +1,7 @@
 #include "ToiChart.h"
 
+#include "i18n/UiNumbers.h"
+
 #include <QChart>
 #include <QLegend>
 #include <QLegendMarker>
@@ -17,6 +19,7 @@ ToiChart::ToiChart(QWidget* parent) : QChartView(new QChart, parent)
     setRenderHint(QPainter::Antialiasing);
     chart()->legend()->setAlignment(Qt::AlignBottom);
     chart()->setMargins(QMargins(2, 2, 2, 2));
+    chart()->setLocalizeNumbers(true);  // axis labels in the interface's language ("0,56")
     setMinimumSize(240, 230);
     setExplanation(nullptr);
 }
@@ -40,7 +43,7 @@ void ToiChart::setExplanation(const explain::Explanation* e)
     if (std::isfinite(toi.horizon) && toi.horizon > 0.0) span = std::min(span, toi.horizon);
     tauMax_ = span;
     const bool linear = e->kind == EventKind::BallCushion || e->kind == EventKind::BallTable;  // a distance, m
-    c->setTitle(tr("f(τ) from t₀ = %1 s").arg(toi.t0, 0, 'g', 6));
+    c->setTitle(tr("f(τ) from t₀ = %1 s").arg(uiSignificant(toi.t0, 6)));
 
     auto* curve = new QLineSeries;
     curve->setName(tr("f(τ)"));
@@ -63,7 +66,7 @@ void ToiChart::setExplanation(const explain::Explanation* e)
     roots->setMarkerSize(8);
     roots->setColor(QColor(90, 90, 90));
     auto* chosen = new QScatterSeries;
-    chosen->setName(tr("τ* = %1 s").arg(toi.root, 0, 'g', 4));
+    chosen->setName(tr("τ* = %1 s").arg(uiSignificant(toi.root, 4)));
     chosen->setMarkerSize(13);
     chosen->setColor(QColor(220, 30, 30));
     for (const explain::ToiRoot& r : toi.roots) {

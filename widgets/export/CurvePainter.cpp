@@ -1,5 +1,7 @@
 #include "CurvePainter.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "view/BallAppearance.h"
 
 #include <QCoreApplication>
@@ -105,10 +107,10 @@ void paintChart(QPainter& p, const QRectF& area, const QString& title, const QSt
     for (double v = std::ceil(v0 / vs) * vs; v <= v1; v += vs) p.drawLine(QPointF(plot.left(), Y(v)), QPointF(plot.right(), Y(v)));
     p.setPen(Qt::black);
     for (double t = 0.0; t <= t1 + 1e-12; t += ts)
-        p.drawText(QRectF(X(t) - 3 * em, plot.bottom() + 0.2 * em, 6 * em, em), Qt::AlignHCenter | Qt::AlignTop, QString::number(t, 'g', 4));
+        p.drawText(QRectF(X(t) - 3 * em, plot.bottom() + 0.2 * em, 6 * em, em), Qt::AlignHCenter | Qt::AlignTop, uiSignificant(t, 4));
     for (double v = std::ceil(v0 / vs) * vs; v <= v1; v += vs)
         p.drawText(QRectF(area.left(), Y(v) - em / 2, plot.left() - area.left() - 0.3 * em, em), Qt::AlignRight | Qt::AlignVCenter,
-                   QString::number(std::abs(v) < vs * 1e-9 ? 0.0 : v, 'g', 4));
+                   uiSignificant(std::abs(v) < vs * 1e-9 ? 0.0 : v, 4));
     p.drawText(QRectF(plot.left(), plot.bottom() + 1.1 * em, plot.width(), em), Qt::AlignHCenter, tr("time (s)"));
     p.setPen(QPen(Qt::black, 0.8));
     p.setBrush(Qt::NoBrush);

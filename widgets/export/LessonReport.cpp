@@ -1,4 +1,6 @@
 #include "LessonReport.h"
+
+#include "i18n/UiNumbers.h"
 #include "editor/RunState.h"
 
 #include "CurvePainter.h"
@@ -207,11 +209,11 @@ void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& 
     QStringList lines;
     lines << tr("Struck ball: %1").arg(o.struckBall >= 0 ? id(r, o.struckBall) : tr("none (no shot)"));
     lines << tr("First contact: %1").arg(
-        o.firstContact ? tr("%1 at %2 s").arg(id(r, o.firstContact->ball)).arg(o.firstContact->time, 0, 'f', 4) : tr("none"));
+        o.firstContact ? tr("%1 at %2 s").arg(id(r, o.firstContact->ball)).arg(uiNumber(o.firstContact->time, 4)) : tr("none"));
     lines << tr("Cushions before the first contact: %1").arg(o.cushionsBeforeFirstContact);
     QStringList pocketed;
     for (const PocketedBall& b : o.pocketed)
-        pocketed << tr("%1 in the %2 at %3 s").arg(id(r, b.ball), displayElementName(r.table.pockets[b.pocket].id)).arg(b.time, 0, 'f', 4);
+        pocketed << tr("%1 in the %2 at %3 s").arg(id(r, b.ball), displayElementName(r.table.pockets[b.pocket].id)).arg(uiNumber(b.time, 4));
     lines << tr("Pocketed: %1").arg(pocketed.isEmpty() ? tr("none") : pocketed.join(QStringLiteral("; ")));
     lines << tr("Struck ball pocketed: %1").arg(o.struckBallPocketed ? tr("yes") : tr("no"));
     // The verdict of the setup's game (issue 43), with the event that decides it.
@@ -220,7 +222,7 @@ void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& 
                                          (verdict->event >= 0 ? QStringLiteral(" (#%1)").arg(verdict->event + 1) : QString()));
     // A partial run (still going, cancelled, cut short) is said to be one (issue 39).
     const QString unfinished = RunState::unfinishedNote(r);
-    lines << (unfinished.isEmpty() ? tr("The shot ends at %1 s, after %2 events.").arg(r.endTime, 0, 'f', 4).arg(r.events.size())
+    lines << (unfinished.isEmpty() ? tr("The shot ends at %1 s, after %2 events.").arg(uiNumber(r.endTime, 4)).arg(r.events.size())
                                    : unfinished + QLatin1Char('.'));
     y = paragraph(p, y, lines.join(QLatin1Char('\n')), 15);
     y += 10;
@@ -241,7 +243,7 @@ void notesAndOutcomePage(QPainter& p, const SimulationResult& r, const QString& 
                    s.motion == MotionState::Pocketed ? tr("in the %1").arg(displayElementName(r.table.pockets[s.pocket].id))
                                                      : displayName(s.motion));
         if (s.motion != MotionState::Pocketed)
-            p.drawText(QPointF(cols[3], y + 14), QStringLiteral("%1, %2").arg(s.position.x(), 0, 'f', 4).arg(s.position.y(), 0, 'f', 4));
+            p.drawText(QPointF(cols[3], y + 14), QStringLiteral("%1%2%3").arg(uiNumber(s.position.x(), 4), uiListSeparator(), uiNumber(s.position.y(), 4)));
         y += 20;
     }
 }
@@ -259,7 +261,7 @@ void keyCollisionPage(QPainter& p, const SimulationResult& r, const std::optiona
     // (Within the core's budget for running the shot again: a held group's solve past it is left
     // out of the page, which says so.)
     const explain::Explanation e = explain::explain(r, index, shot, explain::ExplainLimits{});
-    y = paragraph(p, y, QStringLiteral("%1 %2 (%3 s)").arg(eventNumber(index), translated(e.title)).arg(e.time, 0, 'f', 4), 15, true);
+    y = paragraph(p, y, QStringLiteral("%1 %2 (%3 s)").arg(eventNumber(index), translated(e.title)).arg(uiNumber(e.time, 4)), 15, true);
     if (!e.model.empty()) y = paragraph(p, y, tr("Model: %1").arg(translated(e.model)), 13);
     p.setFont(font(13));
     const QRectF figure(kMargin, y, kWidth - 2 * kMargin, 300);
@@ -356,7 +358,7 @@ void questionsPage(QPainter& p, const SimulationResult& r, const std::vector<Rep
         const QString prompt = PredictionText::prompt(q.asked);
         y += 8;
         y = paragraph(p, y, tr("Question %1: %2").arg(n + 1).arg(prompt), 15, true) - 4;
-        QString stops = tr("The shot stops before %1 at %2 s").arg(eventNumber(q.asked.event)).arg(q.asked.time, 0, 'f', 3);
+        QString stops = tr("The shot stops before %1 at %2 s").arg(eventNumber(q.asked.event)).arg(uiNumber(q.asked.time, 3));
         if (!q.answers.empty()) stops += QStringLiteral(" \u2014 ") + tr("score %1").arg(PredictionText::score(lesson::questionScore(q.answers)));
         y = paragraph(p, y, stops, 13);
         std::vector<QStringList> rows;
@@ -435,9 +437,9 @@ QStringList LessonReport::eventRow(const SimulationResult& r, int i)
     if (e.kind == EventKind::BallCushion) where = displayElementName(r.table.cushions[e.cushion].id);
     if (e.kind == EventKind::BallJaw) where = displayElementName(r.table.jaws[e.jaw].id);
     if (e.kind == EventKind::BallPocket) where = displayElementName(r.table.pockets[e.pocket].id);
-    QString speeds = QStringLiteral("%1 \u2192 %2").arg(e.before[0].velocity.norm(), 0, 'f', 3).arg(e.after[0].velocity.norm(), 0, 'f', 3);
-    if (two) speeds += QStringLiteral("; %1 \u2192 %2").arg(e.before[1].velocity.norm(), 0, 'f', 3).arg(e.after[1].velocity.norm(), 0, 'f', 3);
-    return {eventNumber(i), QString::number(e.time, 'f', 5), displayName(e.kind), balls, where, speeds};
+    QString speeds = QStringLiteral("%1 \u2192 %2").arg(uiNumber(e.before[0].velocity.norm(), 3)).arg(uiNumber(e.after[0].velocity.norm(), 3));
+    if (two) speeds += QStringLiteral("; %1 \u2192 %2").arg(uiNumber(e.before[1].velocity.norm(), 3)).arg(uiNumber(e.after[1].velocity.norm(), 3));
+    return {eventNumber(i), uiNumber(e.time, 5), displayName(e.kind), balls, where, speeds};
 }
 
 int LessonReport::eventPages() const

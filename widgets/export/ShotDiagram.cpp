@@ -1,4 +1,6 @@
 #include "ShotDiagram.h"
+
+#include "i18n/UiNumbers.h"
 #include "editor/RunState.h"
 
 #include "Curves.h"
@@ -43,7 +45,7 @@ QFont pixelFont(double size, bool bold = false)
     return f;
 }
 
-QString seconds(double t) { return QString::number(t, 'f', 3) + QStringLiteral(" s"); }
+QString seconds(double t) { return uiNumber(t, 3) + QStringLiteral(" s"); }
 
 // A diamond (contact marker) or a triangle (pocketing) as a polygon: not a circle.
 QPolygonF diamond(const QPointF& c, double r)

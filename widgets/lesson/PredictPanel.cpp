@@ -1,5 +1,7 @@
 #include "PredictPanel.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "PredictSession.h"
 #include "PredictionText.h"
 #include "editor/Document.h"
@@ -139,7 +141,7 @@ void PredictPanel::loadQuestions()
             else if (result && *q.event < static_cast<int>(result->events.size()))
                 stops = tr("%1 %2 at %3 s")
                             .arg(stops, displayName(result->events[std::size_t(*q.event)].kind))
-                            .arg(result->events[std::size_t(*q.event)].time, 0, 'f', 3);
+                            .arg(uiNumber(result->events[std::size_t(*q.event)].time, 3));
             else if (result)
                 stops = tr("%1 (not in this shot)").arg(stops);
         }
@@ -244,7 +246,7 @@ void PredictPanel::refreshMode()
         text = tr("Done: %1 of %2 questions, mean score %3 %.")
                    .arg(session_->revealed().size())
                    .arg(count)
-                   .arg(session_->meanScore() * 100.0, 0, 'f', 0);
+                   .arg(uiNumber(session_->meanScore() * 100.0, 0));
         break;
     }
     if (state != State::Idle && !session_->skipped().empty())

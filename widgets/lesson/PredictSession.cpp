@@ -1,5 +1,7 @@
 #include "PredictSession.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "editor/Document.h"
 #include "editor/Playback.h"
 #include "view/TableView.h"
@@ -85,8 +87,19 @@ bool PredictSession::start(QString* why)
 
 void PredictSession::withholdUntil(int question)
 {
-    document_->setHorizon(question < static_cast<int>(asked_.size()) ? std::optional<double>(asked_[std::size_t(question)].time)
-                                                                      : std::nullopt);
+    const bool open = question < static_cast<int>(asked_.size());
+    document_->setHorizon(open ? std::optional<double>(asked_[std::size_t(question)].time) : std::nullopt);
+    // Aiming in the view is locked while a question is open. Any change of the shot ends the session
+    // and shows the changed shot whole: a tenth of a degree (one Ctrl+arrow pressed by mistake) would
+    // show almost exactly the answer. The question is about the shot the student watched; to change
+    // it, Stop first.
+    if (view_) view_->setEditLock(open ? lockedWhy() : QString());
+}
+
+QString PredictSession::lockedWhy()
+{
+    return tr("Aiming is locked until you reveal the answer: a changed shot would give it away. Reveal, or "
+              "stop Predict, to aim again.");
 }
 
 void PredictSession::hideAnswers()
@@ -117,6 +130,7 @@ void PredictSession::stop()
     current_ = -1;
     predictions_.clear();
     document_->setHorizon(std::nullopt);  // everything shows again
+    if (view_) view_->setEditLock(QString());
     setState(State::Idle);
 }
 
@@ -203,7 +217,7 @@ void PredictSession::drawLayer()
         if (!reveals) continue;
         const lesson::BallReveal& r = (*reveals)[i];
         QString verdict;
-        if (r.errorDeg) verdict = tr("%1: went here, %2° off").arg(id).arg(*r.errorDeg, 0, 'f', 1);
+        if (r.errorDeg) verdict = tr("%1: went here, %2° off").arg(id).arg(uiNumber(*r.errorDeg, 1));
         else if (r.actualDeg) verdict = tr("%1: went here").arg(id);
         else verdict = tr("%1: stayed").arg(id);
         if (r.actualDeg) layer.arrows.push_back({centre, arrowTo(*r.actualDeg), kActualColour, 4.0f, verdict});

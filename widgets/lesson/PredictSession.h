@@ -7,7 +7,8 @@
 // the mouse while a question is asked.
 //
 // States: Idle → Playing → Asking → (Reveal) Revealed, playing on → Asking the next … → Finished.
-// Any edit of the shot, a new document or stop() ends the session.
+// Any edit of the shot, a new document or stop() ends the session. While a question is open the
+// table view refuses to aim or drag (TableView::setEditLock): the status bar says why.
 //
 // Until a question is revealed, nothing in the window shows what happens after its moment: the
 // session sets the document's horizon (Document::setHorizon) to the next unrevealed question's time,
@@ -73,6 +74,8 @@ public:
     // Sets a ball's prediction (the drag does this): a heading in degrees, or nullopt "it stays".
     void predict(int askedBall, std::optional<double> headingDeg);
     void reveal();
+    // Why the view refuses to aim while a question is open (TableView::setEditLock).
+    static QString lockedWhy();
 
 signals:
     void stateChanged(State state);

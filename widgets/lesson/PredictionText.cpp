@@ -1,10 +1,12 @@
 #include "PredictionText.h"
 
+#include "i18n/UiNumbers.h"
+
 namespace cuelab {
 
 QString PredictionText::heading(const std::optional<double>& headingDeg)
 {
-    return headingDeg ? tr("%1°").arg(*headingDeg, 0, 'f', 1) : tr("stays");
+    return headingDeg ? tr("%1°").arg(uiNumber(*headingDeg, 1)) : tr("stays");
 }
 
 QString PredictionText::verdict(lesson::Verdict v)
@@ -22,10 +24,10 @@ QString PredictionText::verdict(lesson::Verdict v)
 
 QString PredictionText::error(const lesson::BallReveal& r)
 {
-    return r.errorDeg ? tr("%1° (%2)").arg(*r.errorDeg, 0, 'f', 1).arg(verdict(r.verdict)) : verdict(r.verdict);
+    return r.errorDeg ? tr("%1° (%2)").arg(uiNumber(*r.errorDeg, 1)).arg(verdict(r.verdict)) : verdict(r.verdict);
 }
 
-QString PredictionText::score(double s) { return tr("%1 %").arg(s * 100.0, 0, 'f', 0); }
+QString PredictionText::score(double s) { return tr("%1 %").arg(uiNumber(s * 100.0, 0)); }
 
 QString PredictionText::prompt(const lesson::AskedQuestion& q)
 {

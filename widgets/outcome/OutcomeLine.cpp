@@ -1,5 +1,7 @@
 #include "OutcomeLine.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "i18n/DisplayNames.h"
 
 #include <QCoreApplication>
@@ -12,7 +14,7 @@ namespace {
 // The context lupdate gives tr() calls in functions of namespace cuelab (resources/translations).
 QString tr(const char* text) { return QCoreApplication::translate("cuelab", text); }
 
-QString seconds(double t) { return tr("%1 s").arg(t, 0, 'f', 3); }
+QString seconds(double t) { return tr("%1 s").arg(uiNumber(t, 3)); }
 QString cushions(int n) { return n == 1 ? tr("1 cushion") : tr("%1 cushions").arg(n); }
 
 }  // namespace

@@ -1,4 +1,6 @@
 #include "OutcomePanel.h"
+
+#include "i18n/UiNumbers.h"
 #include "editor/RunState.h"
 #include "layout/ColumnFit.h"
 
@@ -128,7 +130,7 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
     }
     addFact(tr("Struck ball"), o.struckBall >= 0 ? id(o.struckBall) : tr("none (no shot)"));
     if (o.firstContact)
-        addFact(tr("First contact"), tr("%1 at %2 s").arg(id(o.firstContact->ball)).arg(o.firstContact->time, 0, 'f', 4),
+        addFact(tr("First contact"), tr("%1 at %2 s").arg(id(o.firstContact->ball)).arg(uiNumber(o.firstContact->time, 4)),
                 eventIndex(r, EventKind::BallBall, o.struckBall, o.firstContact->time),
                 tr("The first ball the struck ball touches, and when (s)"));
     else
@@ -138,7 +140,7 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
     if (o.pocketed.empty()) addFact(tr("Pocketed"), tr("none"));
     for (const PocketedBall& p : o.pocketed)
         addFact(tr("Pocketed"),
-                tr("%1 in the %2 at %3 s").arg(id(p.ball), displayElementName(r.table.pockets[p.pocket].id)).arg(p.time, 0, 'f', 4),
+                tr("%1 in the %2 at %3 s").arg(id(p.ball), displayElementName(r.table.pockets[p.pocket].id)).arg(uiNumber(p.time, 4)),
                 eventIndex(r, EventKind::BallPocket, p.ball, p.time));
     addFact(tr("Struck ball pocketed"), o.struckBall >= 0 && o.struckBallPocketed ? tr("yes (a scratch)") : tr("no"));
     if (!recordingResidual_.isEmpty())
@@ -155,7 +157,7 @@ void OutcomePanel::setResult(std::shared_ptr<const SimulationResult> result)
                                   : displayName(s.motion);
         balls_->setItem(b, 2, item(state));
         balls_->setItem(b, 3, item(s.motion == MotionState::Pocketed ? QString()
-                                   : QStringLiteral("%1, %2").arg(s.position.x(), 0, 'f', 4).arg(s.position.y(), 0, 'f', 4),
+                                   : QStringLiteral("%1%2%3").arg(uiNumber(s.position.x(), 4), uiListSeparator(), uiNumber(s.position.y(), 4)),
                                    tr("Final position in metres (table frame)")));
     }
     fitColumns();

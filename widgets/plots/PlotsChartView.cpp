@@ -54,6 +54,7 @@ PlotsChartView::PlotsChartView(QWidget* parent) : QChartView(parent)
     setRenderHint(QPainter::Antialiasing);
     setMouseTracking(true);
     QChart* c = chart();
+    c->setLocalizeNumbers(true);  // axis labels in the interface's language ("0,56")
     c->legend()->setAlignment(Qt::AlignRight);
     c->setMargins(QMargins(4, 4, 4, 4));
     timeAxis_ = new QValueAxis(c);

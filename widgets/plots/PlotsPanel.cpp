@@ -1,4 +1,6 @@
 #include "PlotsPanel.h"
+
+#include "i18n/UiNumbers.h"
 #include "editor/RunState.h"
 
 #include "i18n/DisplayNames.h"
@@ -305,7 +307,7 @@ void PlotsPanel::rebuild()
             if (e.kind == EventKind::BallJaw) agents += QStringLiteral(", ") + displayElementName(r.table.jaws[e.jaw].id);
             if (e.kind == EventKind::BallPocket) agents += QStringLiteral(", ") + displayElementName(r.table.pockets[e.pocket].id);
             m.name = tr("Event %1: %2 (%3) at %4 s").arg(eventNumber(i), displayName(e.kind), agents)
-                         .arg(e.time, 0, 'f', 4);
+                         .arg(uiNumber(e.time, 4));
             markers.push_back(m);
             break;  // one marker per event
         }

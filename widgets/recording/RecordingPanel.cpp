@@ -1,5 +1,7 @@
 #include "RecordingPanel.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "Calibration.h"
 #include "RecordingSetup.h"
 #include "StrikeFit.h"
@@ -37,7 +39,7 @@ namespace {
 QString centimetres(double metres)
 {
     if (!std::isfinite(metres)) return RecordingPanel::tr("∞");
-    return RecordingPanel::tr("%1 cm").arg(metres * 100.0, 0, 'f', metres < 0.1 ? 2 : 1);
+    return RecordingPanel::tr("%1 cm").arg(uiNumber(metres * 100.0, metres < 0.1 ? 2 : 1));
 }
 
 }  // namespace
@@ -93,10 +95,10 @@ protected:
         p.setPen(QPen(palette().color(QPalette::Mid), 1.0));
         p.drawRect(plot);
         p.setPen(palette().color(QPalette::Text));
-        p.drawText(QRectF(0, plot.top() - line / 2, plot.left() - 4, line), Qt::AlignRight | Qt::AlignVCenter, QString::number(cm, 'f', 1));
+        p.drawText(QRectF(0, plot.top() - line / 2, plot.left() - 4, line), Qt::AlignRight | Qt::AlignVCenter, uiNumber(cm, 1));
         p.drawText(QRectF(0, plot.bottom() - line / 2, plot.left() - 4, line), Qt::AlignRight | Qt::AlignVCenter, QStringLiteral("0"));
         p.drawText(QRectF(plot.left(), plot.bottom() + 2, plot.width(), line), Qt::AlignLeft, QStringLiteral("0"));
-        p.drawText(QRectF(plot.left(), plot.bottom() + 2, plot.width(), line), Qt::AlignRight, RecordingPanel::tr("%1 s").arg(tMax, 0, 'g', 3));
+        p.drawText(QRectF(plot.left(), plot.bottom() + 2, plot.width(), line), Qt::AlignRight, RecordingPanel::tr("%1 s").arg(uiSignificant(tMax, 3)));
         const auto at = [&](const SampleResidual& s) {
             const double d = std::isfinite(s.distance) ? s.distance : dMax;
             return QPointF(plot.left() + plot.width() * s.time / tMax, plot.bottom() - plot.height() * d / dMax);
@@ -293,7 +295,7 @@ void RecordingPanel::refresh()
         QString text = tr("<b>%1</b>: %2 recorded balls, %3 s")
                            .arg(QString::fromStdString(recording_->name).toHtmlEscaped())
                            .arg(recording_->balls.size())
-                           .arg(recording_->duration(), 0, 'f', 2);
+                           .arg(uiNumber(recording_->duration(), 2));
         if (!recording_->source.empty()) text += QStringLiteral("<br><small>%1</small>").arg(QString::fromStdString(recording_->source).toHtmlEscaped());
         const std::string missing = missingBall(*recording_, document_->setup());
         if (!missing.empty())
@@ -441,14 +443,14 @@ void RecordingPanel::fitDone()
     if (applied && calibration) {
         refresh();
         emit fitFinished(true, tr("Cloth calibrated: μr = %1, μs = %2; RMSE %3 (moved balls); Edit → Undo takes it back")
-                                   .arg(after.physics.muRoll, 0, 'g', 4)
-                                   .arg(after.physics.muSlide, 0, 'g', 4)
+                                   .arg(uiSignificant(after.physics.muRoll, 4))
+                                   .arg(uiSignificant(after.physics.muSlide, 4))
                                    .arg(centimetres(result->rmse)));
         return;
     }
     refresh();
     emit fitFinished(applied, applied ? tr("Strike fitted in %1 s: RMSE %2 (moved balls); Edit → Undo takes it back")
-                                            .arg(result->seconds, 0, 'f', 1)
+                                            .arg(uiNumber(result->seconds, 1))
                                             .arg(centimetres(result->rmse))
                                       : tr("The fitted strike was refused"));
 }

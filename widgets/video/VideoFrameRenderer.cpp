@@ -1,5 +1,7 @@
 #include "VideoFrameRenderer.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "OpenGLProbe.h"
 #include "view/OverlayLabels.h"
 #include "view/RenderFrame.h"
@@ -129,9 +131,9 @@ void stampVideoTime(QImage& frame, double time, double slow)
     font.setPixelSize(std::max(12, frame.height() / 24));
     font.setBold(true);
     painter.setFont(font);
-    QString text = QCoreApplication::translate("cuelab::VideoExport", "t = %1 s").arg(time, 0, 'f', 3);
+    QString text = QCoreApplication::translate("cuelab::VideoExport", "t = %1 s").arg(uiNumber(time, 3));
     if (slow != 1.0)
-        text += QStringLiteral("   ") + QCoreApplication::translate("cuelab::VideoExport", "%1× slower").arg(slow, 0, 'g', 4);
+        text += QStringLiteral("   ") + QCoreApplication::translate("cuelab::VideoExport", "%1× slower").arg(uiSignificant(slow, 4));
     const QRect box = painter.fontMetrics().boundingRect(text).adjusted(-8, -4, 8, 4);
     const QPoint at(frame.height() / 40 + 8, frame.height() / 40 + painter.fontMetrics().ascent() + 4);
     painter.fillRect(box.translated(at), QColor(0, 0, 0, 160));

@@ -1,5 +1,7 @@
 #include "AimDrag.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "CuePlacement.h"
 #include "TableView.h"
 
@@ -294,12 +296,19 @@ void AimDrag::end()
     if (changed) emit view_.shotAimFinished();
 }
 
-bool AimDrag::keyPress(QKeyEvent* event)
+bool AimDrag::isAimingKey(const QKeyEvent* event)
 {
     const Qt::KeyboardModifiers mods = event->modifiers() & ~Qt::KeypadModifier;
     if (!(mods & Qt::ControlModifier) || (mods & ~(Qt::ControlModifier | Qt::ShiftModifier | Qt::AltModifier))) return false;
     const int key = event->key();
-    if (key != Qt::Key_Left && key != Qt::Key_Right && key != Qt::Key_Up && key != Qt::Key_Down) return false;
+    return key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Up || key == Qt::Key_Down;
+}
+
+bool AimDrag::keyPress(QKeyEvent* event)
+{
+    if (!isAimingKey(event)) return false;
+    const Qt::KeyboardModifiers mods = event->modifiers() & ~Qt::KeypadModifier;
+    const int key = event->key();
     const ViewScene& scene = view_.scene();
     if (!scene.shot || handle_ != AimHandle::None) return false;
     const double scale = (mods & Qt::ShiftModifier) ? 10.0 : (mods & Qt::AltModifier) ? 0.1 : 1.0;
@@ -373,19 +382,19 @@ QString AimDrag::readout() const
     QString set;
     switch (*gesture_) {
     case AimGesture::Turn:
-    case AimGesture::Ghost: set = tr("heading %1°").arg(s.headingDeg, 0, 'f', 2); break;
-    case AimGesture::Pull: set = tr("cue speed %1 m/s").arg(s.speed, 0, 'f', 2); break;
-    case AimGesture::Tip: set = tr("tip: side %1 R, height %2 R").arg(s.side, 0, 'f', 2).arg(s.height, 0, 'f', 2); break;
+    case AimGesture::Ghost: set = tr("heading %1°").arg(uiNumber(s.headingDeg, 2)); break;
+    case AimGesture::Pull: set = tr("cue speed %1 m/s").arg(uiNumber(s.speed, 2)); break;
+    case AimGesture::Tip: set = tr("tip: side %1 R, height %2 R").arg(uiNumber(s.side, 2)).arg(uiNumber(s.height, 2)); break;
     }
     QStringList lines{set};
     if (const auto& result = view_.scene().result) {
         if (const std::optional<aim::AimGeometry> g = aim::firstContact(*result)) {
             const QString side = g->side == aim::CutSide::Left ? tr("left") : g->side == aim::CutSide::Right ? tr("right") : QString();
-            lines << tr("cut %1° %2, ball fraction %3").arg(g->cutAngleDeg, 0, 'f', 1).arg(side).arg(g->ballFraction, 0, 'f', 2).simplified();
+            lines << tr("cut %1° %2, ball fraction %3").arg(uiNumber(g->cutAngleDeg, 1)).arg(side).arg(uiNumber(g->ballFraction, 2)).simplified();
         } else {
             lines << tr("no object ball hit");
         }
-        if (const std::optional<aim::Launch> l = aim::launchOf(*result)) lines << tr("ball speed %1 m/s").arg(l->speed, 0, 'f', 2);
+        if (const std::optional<aim::Launch> l = aim::launchOf(*result)) lines << tr("ball speed %1 m/s").arg(uiNumber(l->speed, 2));
     }
     return lines.join(QLatin1Char('\n'));
 }

@@ -58,6 +58,8 @@ public:
     AimHandle dragged() const { return handle_; }
 
     bool keyPress(QKeyEvent* event);    // true when the key aimed
+    // Ctrl+arrows, with or without Shift or Alt: the keys keyPress aims with.
+    static bool isAimingKey(const QKeyEvent* event);
     bool keyRelease(QKeyEvent* event);  // true when it ended an aiming key's gesture
 
     static Qt::CursorShape cursorFor(AimHandle handle, bool dragging);

@@ -1,5 +1,7 @@
 #include "OverlayLabels.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "LabelLayout.h"
 #include "OverlayLines.h"
 
@@ -81,7 +83,7 @@ const QImage& tagImage(LabelCache& cache, double time, TagStyle style)
     if (it != cache.tags.end()) return it->second;
     const QFont font = labelFont();
     const QFontMetricsF metrics(font);
-    const QString label = QStringLiteral("%1 s").arg(time, 0, 'f', 3);
+    const QString label = QStringLiteral("%1 s").arg(uiNumber(time, 3));
     const QSizeF size = metrics.size(Qt::TextSingleLine, label) + QSizeF(8.0, 2.0);
     QImage image = blankImage(size, cache.devicePixelRatio);
     const QColor ink = style == TagStyle::Highlighted ? QColor(20, 20, 0)
@@ -168,7 +170,7 @@ void collectEventTimes(const ViewScene& scene, const LabelFrame& frame, LabelCac
         if (!at) continue;
         // One label per instant as the label shows it (to the millisecond): a chain of contacts at
         // one instant (a rack, a break) reads as one time, at its first (or highlighted) event.
-        const QString text = QStringLiteral("%1 s").arg(ev.time, 0, 'f', 3);
+        const QString text = QStringLiteral("%1 s").arg(uiNumber(ev.time, 3));
         const bool repeated = std::any_of(shown.begin(), shown.end(), [&](const Shown& s) { return s.text == text; });
         if (repeated && !highlighted) continue;
         shown.push_back({text, *at});
@@ -324,13 +326,27 @@ OverlayLabelPlan planOverlayLabels(const ViewScene& scene, const LabelFrame& fra
     const std::vector<std::optional<QRectF>> boxes =
         layoutLabels(requests, QRectF(QPointF(0, 0), QSizeF(frame.logicalSize)), reserved);
     for (std::size_t k = 0; k < labels.size(); ++k)
-        if (boxes[k]) plan.labels.push_back({labels[k].text, *boxes[k], labels[k].image});
+        if (boxes[k]) plan.labels.push_back({labels[k].text, *boxes[k], labels[k].image, leaderLine(requests[k].anchor, *boxes[k])});
     return plan;
 }
 
 void paintOverlayLabels(QPainter& painter, const ViewScene& scene, const LabelFrame& frame)
 {
     const OverlayLabelPlan plan = planOverlayLabels(scene, frame, painter.device()->devicePixelRatioF());
+    // Leader lines under the labels: a dark casing and a light core read on every cloth.
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    for (const QColor& ink : {QColor(0, 0, 0, 150), QColor(255, 255, 255, 210)}) {
+        const bool casing = ink.lightness() < 128;
+        painter.setPen(QPen(ink, casing ? 3.0 : 1.2));
+        painter.setBrush(ink);
+        for (const OverlayLabelPlan::Item& l : plan.labels)
+            if (l.leader) {
+                painter.drawLine(*l.leader);
+                painter.drawEllipse(l.leader->p1(), casing ? 2.5 : 1.6, casing ? 2.5 : 1.6);
+            }
+    }
+    painter.restore();
     for (const OverlayLabelPlan::Item& l : plan.labels) painter.drawImage(l.box.topLeft(), l.image);
     for (const OverlayLabelPlan::Item& k : plan.keys) painter.drawImage(k.box.topLeft(), k.image);
 }

@@ -3,7 +3,7 @@
 // event marker, the labels of the view layers (ghosts, arrows, polylines, markers) and the scale
 // legend of the velocity arrows, and the layers' own keys (a scale) apart in the corner. Labels never
 // overlap each other, the legends or a ball (they go around it) and stay inside the view
-// (LabelLayout); event times at one instant (to the millisecond shown: a rack's chain) get one label;
+// (LabelLayout; one put away from its anchor in a crowd gets a leader line); event times at one instant (to the millisecond shown: a rack's chain) get one label;
 // with Labels Of: Selected Ball Only and no ball selected, only the highlighted event's. Works on a widget after paintGL and on a rendered QImage alike; each label is drawn once
 // into an image and reused (see OverlayLabels.cpp).
 
@@ -11,12 +11,14 @@
 #include "ViewScene.h"
 
 #include <QImage>
+#include <QLineF>
 #include <QMatrix4x4>
 #include <QRectF>
 #include <QSize>
 #include <QString>
 
 #include <bitset>
+#include <optional>
 #include <vector>
 
 class QPainter;
@@ -41,6 +43,7 @@ struct OverlayLabelPlan {
         QString text;
         QRectF box;
         QImage image;
+        std::optional<QLineF> leader;  // to the anchor, for a label put away from it (LabelLayout)
     };
     std::vector<Item> labels;  // event times and layer labels
     std::vector<Item> keys;    // the velocity legend and the layers' keys

@@ -1,5 +1,7 @@
 #include "TableInteraction.h"
 
+#include "i18n/UiNumbers.h"
+
 #include "BallPlacement.h"
 #include "CameraAnimator.h"
 #include "TableView.h"
@@ -67,7 +69,13 @@ void TableInteraction::press(QMouseEvent* event)
     }
     if (event->button() != Qt::LeftButton) return;
     const ViewScene& scene = view_.scene();
+    const bool locked = !view_.editLock().isEmpty();
     if (const int arrow = velocityArrowUnder(event->position()); arrow >= 0) {
+        if (locked) {
+            mode_ = Mode::Locked;
+            emit view_.ballClicked(arrow);
+            return;
+        }
         mode_ = Mode::Velocity;
         ball_ = arrow;
         const Ball& b = view_.setupBalls()[static_cast<std::size_t>(arrow)];
@@ -76,6 +84,10 @@ void TableInteraction::press(QMouseEvent* event)
         return;
     }
     const AimHandle aim = view_.aim_->handleAt(event->position());
+    if (aim == AimHandle::Tip && locked) {
+        mode_ = Mode::Locked;
+        return;
+    }
     if (aim == AimHandle::Tip && view_.aim_->begin(aim, event->position())) {
         mode_ = Mode::Aim;
         view_.setCursor(AimDrag::cursorFor(aim, true));
@@ -86,6 +98,10 @@ void TableInteraction::press(QMouseEvent* event)
         emit view_.ballClicked(ball);
         // Balls move only where they are set up: at t = 0. Later a press on a ball selects it and
         // a drag orbits.
+        if (view_.time() <= 0.0 && scene.result && locked) {
+            mode_ = Mode::Locked;
+            return;
+        }
         if (view_.time() <= 0.0 && scene.result) {
             const Ball& b = view_.setupBalls()[static_cast<std::size_t>(ball)];
             const int struck = scene.shot ? scene.result->ballIndex(scene.shot->ball) : -1;
@@ -104,6 +120,10 @@ void TableInteraction::press(QMouseEvent* event)
             return;
         }
     }
+    if (ball < 0 && aim != AimHandle::None && locked) {
+        mode_ = Mode::Locked;
+        return;
+    }
     if (ball < 0 && aim != AimHandle::None && view_.aim_->begin(aim, event->position())) {
         mode_ = Mode::Aim;
         view_.setCursor(AimDrag::cursorFor(aim, true));
@@ -116,6 +136,7 @@ void TableInteraction::move(QMouseEvent* event)
 {
     const QPointF pos = event->position();
     if (!moved_ && QLineF(pos, pressPos_).length() < kDragThresholdPx) return;
+    const bool firstMotion = !moved_;
     moved_ = true;
     switch (mode_) {
     case Mode::None: break;
@@ -133,6 +154,9 @@ void TableInteraction::move(QMouseEvent* event)
     case Mode::Ball: dragBall(pos); break;
     case Mode::Velocity: dragVelocity(pos); break;
     case Mode::Aim: view_.aim_->drag(pos); break;
+    case Mode::Locked:
+        if (firstMotion) emit view_.editRefused(view_.editLock());
+        break;
     }
     lastPos_ = pos;
 }
@@ -213,7 +237,7 @@ void TableInteraction::reportPlacement()
             break;
         }
     }
-    const QString distance = moved >= 0.1 ? tr("%1 m").arg(moved, 0, 'f', 2) : tr("%1 mm").arg(moved * 1e3, 0, 'f', 0);
+    const QString distance = moved >= 0.1 ? tr("%1 m").arg(uiNumber(moved, 2)) : tr("%1 mm").arg(uiNumber(moved * 1e3, 0));
     emit view_.ballPlacementAdjusted(ball_, tr("Ball \"%1\" placed %2 from the cursor, on the nearest free spot: %3.")
                                                 .arg(QString::fromStdString(ball.id), distance, why));
 }
@@ -221,7 +245,11 @@ void TableInteraction::reportPlacement()
 AimHandle TableInteraction::hover(const QPointF& pos)
 {
     // What a press there would drag, in the press's order: a velocity arrow's head, the tip mark, a
-    // ball (at t = 0), then the ghost ball or the cue.
+    // ball (at t = 0), then the ghost ball or the cue. Nothing while the view's edits are locked.
+    if (!view_.editLock().isEmpty()) {
+        if (view_.cursor().shape() != Qt::ArrowCursor) view_.setCursor(Qt::ArrowCursor);
+        return AimHandle::None;
+    }
     AimHandle aim = velocityArrowUnder(pos) >= 0 ? AimHandle::None : view_.aim_->handleAt(pos);
     const bool ball = velocityArrowUnder(pos) >= 0 ||
                       (aim != AimHandle::Tip && view_.time() <= 0.0 && view_.pickBall(pos) >= 0);

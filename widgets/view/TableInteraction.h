@@ -9,6 +9,8 @@
 //   right, middle or Shift + left    pan;
 //   wheel                            zoom towards the cursor;
 //   double-click                     centre on the ball or cloth point.
+// While the view's edits are locked (TableView::setEditLock), a press on what would be dragged only
+// selects; its first motion says why nothing moves (editRefused).
 // It reads the view's state and camera and reports through the view's signals.
 
 #include "AimDrag.h"
@@ -42,7 +44,7 @@ public:
     const std::optional<VelocityDrag>& velocityDrag() const { return velocity_; }
 
 private:
-    enum class Mode { None, Orbit, Pan, Ball, Velocity, Aim };
+    enum class Mode { None, Orbit, Pan, Ball, Velocity, Aim, Locked };
     int velocityArrowUnder(const QPointF& pos) const;  // the ball whose arrow head is there; -1
     void dragBall(const QPointF& pos);
     void dragVelocity(const QPointF& pos);

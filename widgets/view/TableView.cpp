@@ -416,7 +416,24 @@ void TableView::wheelEvent(QWheelEvent* event) { interaction_->wheel(event); }
 
 void TableView::keyPressEvent(QKeyEvent* event)
 {
+    // A locked view takes the aiming keys (they do nothing else here) and says why they do nothing.
+    if (!editLock_.isEmpty() && AimDrag::isAimingKey(event)) {
+        emit editRefused(editLock_);
+        return;
+    }
     if (!aim_->keyPress(event)) QOpenGLWidget::keyPressEvent(event);
+}
+
+void TableView::setEditLock(const QString& why)
+{
+    if (why == editLock_) return;
+    editLock_ = why;
+    // What the cursor is over can no longer be dragged: the cursor and the highlight say so at once.
+    if (!why.isEmpty() && hovered_ != AimHandle::None) {
+        hovered_ = AimHandle::None;
+        unsetCursor();
+        update();
+    }
 }
 
 void TableView::keyReleaseEvent(QKeyEvent* event)

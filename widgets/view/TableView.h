@@ -94,6 +94,12 @@ public:
     std::optional<QPointF> widgetPointOf(const QVector3D& world) const;
     // The aiming gestures (AimDrag.h): what is being dragged, and the readout drawn beside the cursor.
     const AimDrag& aim() const { return *aim_; }
+    // Edits in the view (aiming with the mouse or the keys, dragging a ball or its velocity) refused
+    // while `why` is not empty: a press on what would be dragged, or an aiming key, changes nothing
+    // and emits editRefused(why). A lesson's open question sets it (PredictSession): the shot may
+    // not change before the reveal.
+    void setEditLock(const QString& why);
+    const QString& editLock() const { return editLock_; }
     // The first OpenGL error met while painting the last frame (GL_NO_ERROR = 0 when none).
     unsigned int lastGlError() const { return lastGlError_; }
 
@@ -119,6 +125,8 @@ signals:
     // the key let go).
     void shotAimed(cuelab::AimGesture gesture, double headingDeg, double speed, double side, double height);
     void shotAimFinished();
+    // An edit in the view was refused (setEditLock): the reason, for the status bar.
+    void editRefused(const QString& why);
     void displayModesChanged();  // path scope, label scope or following changed
     // See FrameRateMeter: the rate of a run of continuous redrawing; 0 once when the run ends.
     void framesPerSecond(double fps);
@@ -168,6 +176,7 @@ private:
     std::unique_ptr<AimDrag> aim_;
     std::unique_ptr<TableInteraction> interaction_;
     AimHandle hovered_ = AimHandle::None;  // the aiming handle under the cursor (drawn highlighted)
+    QString editLock_;                     // see setEditLock
     CameraAnimator* animator_;
     FrameRateMeter* meter_;
     QTimer settleTimer_;  // single shot: repaints once the camera has stopped (see paintGL)

@@ -5,9 +5,11 @@
 #include "MainWindow.h"
 
 #include "analysis/AnalysisPanel.h"
+#include "analysis/OutcomeMap.h"
 #include "analysis/ShotFinderSection.h"
 #include "view/TableView.h"
 #include "editor/Document.h"
+#include "lesson/SpoilerCurtain.h"
 
 #include "Table.h"
 
@@ -16,6 +18,8 @@
 #include <QComboBox>
 #include <QMenu>
 #include <QMouseEvent>
+#include <QScrollArea>
+#include <QTimer>
 
 #include <optional>
 
@@ -99,7 +103,9 @@ void installAnalysis(MainWindow& window)
     placement.scroll = true;
     placement.tabifyWith = QStringLiteral("InspectorDock");  // the full height of the right column when raised
     placement.visible = false;  // opened from the Analysis menu; the layout remembers it afterwards
-    QDockWidget* dock = window.addPanel(panel, QObject::tr("Analysis"), QStringLiteral("AnalysisDock"), placement);
+    // While a lesson's question is open, the scans and maps would tell whether the shot makes its goal.
+    auto* curtain = new SpoilerCurtain(window.document(), panel);
+    QDockWidget* dock = window.addPanel(curtain, QObject::tr("Analysis"), QStringLiteral("AnalysisDock"), placement);
 
     QMenu* menu = window.menu(WindowMenu::Analysis);
     const auto showDock = [dock] {
@@ -116,20 +122,26 @@ void installAnalysis(MainWindow& window)
     QAction* map = menu->addAction(QObject::tr("&Map tip offsets"));
     map->setShortcut(QKeySequence(QStringLiteral("Ctrl+Alt+M")));
     map->setStatusTip(QObject::tr("Simulate the shot for every tip offset within the miscue limit and colour each by its outcome"));
-    QObject::connect(map, &QAction::triggered, panel, [panel, showDock] {
+    QObject::connect(map, &QAction::triggered, panel, [panel, showDock, dock] {
         showDock();
         panel->mapMode()->setCurrentIndex(AnalysisPanel::TipOffsetDisk);
         panel->runMap();
+        // The map in view, wherever the dock was scrolled (it opened above the visible part), once
+        // the dock just shown has been laid out.
+        QTimer::singleShot(0, panel, [panel, dock] {
+            if (auto* scroller = qobject_cast<QScrollArea*>(dock->widget())) scroller->ensureWidgetVisible(panel->map(), 0, 0);
+        });
     });
     // Find shots (issue 42): the chosen shot's paths drawn over the table while the dock is shown.
     ShotFinderSection* finder = panel->findChild<ShotFinderSection*>();
     TableView* view = window.tableView();
-    const auto showPaths = [finder, dock, view] {
+    const auto showPaths = [finder, dock, view, curtain] {
         ViewLayer layer = finder->ghostLayer();
-        if (dock->isVisible() && !layer.polylines.empty()) view->setLayer(QStringLiteral("shot-finder"), std::move(layer));
+        if (dock->isVisible() && !curtain->isDrawn() && !layer.polylines.empty()) view->setLayer(QStringLiteral("shot-finder"), std::move(layer));
         else view->clearLayer(QStringLiteral("shot-finder"));
     };
     QObject::connect(finder, &ShotFinderSection::ghostLayerChanged, view, showPaths);
+    QObject::connect(curtain, &SpoilerCurtain::drawnChanged, view, showPaths);
     view->installEventFilter(new GoalPicker(view, finder, window.document()));
     QObject::connect(dock, &QDockWidget::visibilityChanged, view, showPaths);
     QAction* find = menu->addAction(QObject::tr("&Find shots"));

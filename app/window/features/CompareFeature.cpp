@@ -7,6 +7,7 @@
 #include "compare/ComparePanel.h"
 #include "editor/Document.h"
 #include "editor/Playback.h"
+#include "lesson/SpoilerCurtain.h"
 #include "view/TableView.h"
 
 #include <QAction>
@@ -21,8 +22,10 @@ void installCompare(MainWindow& window)
     PanelPlacement placement;
     placement.area = Qt::BottomDockWidgetArea;
     placement.visible = false;
-    QDockWidget* dock = window.addPanel(panel, QObject::tr("Compare"), QStringLiteral("CompareDock"), placement);
     Document* document = window.document();
+    // While a lesson's question is open, the other engine's run would show what follows it.
+    auto* curtain = new SpoilerCurtain(document, panel);
+    QDockWidget* dock = window.addPanel(curtain, QObject::tr("Compare"), QStringLiteral("CompareDock"), placement);
     Playback* playback = window.playback();
     TableView* view = window.tableView();
 
@@ -35,13 +38,14 @@ void installCompare(MainWindow& window)
     QObject::connect(playback, &Playback::timeChanged, panel, &ComparePanel::setTime);
     QObject::connect(panel, &ComparePanel::timeRequested, playback, &Playback::setTime);
 
-    const auto showGhosts = [panel, dock, view] {
-        if (dock->isVisible() && panel->ghostsEnabled() && !panel->ghosts().empty())
+    const auto showGhosts = [panel, dock, view, curtain] {
+        if (dock->isVisible() && !curtain->isDrawn() && panel->ghostsEnabled() && !panel->ghosts().empty())
             view->setLayer(QStringLiteral("compare"), panel->ghosts());
         else
             view->clearLayer(QStringLiteral("compare"));
     };
     QObject::connect(panel, &ComparePanel::ghostLayerChanged, view, showGhosts);
+    QObject::connect(curtain, &SpoilerCurtain::drawnChanged, view, showGhosts);
     QObject::connect(dock, &QDockWidget::visibilityChanged, panel, [=](bool visible) {
         if (visible) {
             panel->setTime(playback->time());
