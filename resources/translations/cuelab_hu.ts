@@ -2591,6 +2591,10 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
         <source>Momenta and energy</source>
         <translation>Lendületek és energia</translation>
     </message>
+    <message>
+        <source>Deriving event #%1… (its held group is found by running the shot again up to it)</source>
+        <translation>A #%1 esemény levezetése… (tartott csoportját a lökés eddig az eseményig való újrafuttatása adja)</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::FirstStartTip</name>
@@ -4452,6 +4456,10 @@ Kimaradt kérdés: %1</translation>
         <source>Drag from each ball where it will go; click a ball that stays</source>
         <translation>Húzzon minden golyótól arra, amerre menni fog; kattintson arra a golyóra, amely helyben marad</translation>
     </message>
+    <message>
+        <source>Aiming is locked until you reveal the answer: a changed shot would give it away. Reveal, or stop Predict, to aim again.</source>
+        <translation>A célzás a válasz felfedéséig zárolva van: a megváltoztatott lövés elárulná a választ. Fedje fel, vagy állítsa le a Jóslást, hogy újra célozhasson.</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::RecentFiles</name>
@@ -5086,6 +5094,13 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>The simulation failed: %1</source>
         <translation>A szimuláció nem sikerült: %1</translation>
+    </message>
+</context>
+<context>
+    <name>cuelab::SpoilerCurtain</name>
+    <message>
+        <source>Hidden until you reveal the answer: this panel would show how the shot goes on.</source>
+        <translation>Rejtve, amíg fel nem fedi a választ: ez a panel megmutatná, hogyan folytatódik a lövés.</translation>
     </message>
 </context>
 <context>
@@ -6792,6 +6807,130 @@ Kimaradt kérdés: %1</translation>
     <message>
         <source>(The simulator found the contact&apos;s normal from its own instant of prediction, which rounds it a little differently: its states, given here, agree with the law&apos;s above to within 10^{−9} of their size.)</source>
         <translation>(A szimulátor az érintkezés normálisát a saját előrejelzési pillanatából számolta, ami kissé másképp kerekíti: az itt megadott állapotai a fenti törvényéivel méretük 10^{−9}-szeresén belül egyeznek.)</translation>
+    </message>
+    <message>
+        <source>No row needs a value: every λ = 0 satisfies the conditions.</source>
+        <translation>Egyik sornak sem kell érték: minden λ = 0 teljesíti a feltételeket.</translation>
+    </message>
+    <message>
+        <source>Found by pivoting: rows join the active set while their w would be negative and leave it while their λ would be; the active rows&apos; equations A_s λ_s = −b_s are solved by a pivoted LDLᵀ factorisation.</source>
+        <translation>Pivotálással adódik: egy sor belép az aktív halmazba, amíg w-je negatív lenne, és kilép, amíg λ-ja az lenne; az aktív sorok A_s λ_s = −b_s egyenleteit pivotált LDLᵀ-felbontás oldja meg.</translation>
+    </message>
+    <message>
+        <source>Found by pivoting; the active rows are dependent (more contacts than the balls have directions to move in, as in a packed cluster), so their equations are solved by the basic solution of the pivoted LDLᵀ factorisation, with no value on the dependent rows.</source>
+        <translation>Pivotálással adódik; az aktív sorok összefüggők (több az érintkezés, mint ahány irányban a golyók mozoghatnak, mint egy szoros csoportban), ezért egyenleteiket a pivotált LDLᵀ-felbontás bázismegoldása oldja meg, az összefüggő sorokon érték nélkül.</translation>
+    </message>
+    <message>
+        <source>Found by pivoting; the active rows&apos; equations have no exact solution (nearly parallel normals), so they are solved in the least-squares sense.</source>
+        <translation>Pivotálással adódik; az aktív sorok egyenleteinek nincs pontos megoldása (közel párhuzamos normálisok), ezért legkisebb négyzetes értelemben oldódnak meg.</translation>
+    </message>
+    <message>
+        <source>The pivoting ran out of steps: the values are those of the projected Gauss-Seidel iteration, complementary only approximately.</source>
+        <translation>A pivotálás kifogyott a lépésekből: az értékek a vetített Gauss–Seidel-iteráció értékei, a komplementaritás csak közelítőleg teljesül.</translation>
+    </message>
+    <message>
+        <source>row %1 active</source>
+        <translation>%1. sor aktív</translation>
+    </message>
+    <message>
+        <source>The details of the group&apos;s solve (its contacts as the rows of one problem, the impulses and forces that solve it) are left out: they come from running the shot again up to this event, and that took longer than %1 s.</source>
+        <translation>A csoport megoldásának részletei (érintkezései mint egyetlen feladat sorai, az azt megoldó impulzusok és erők) kimaradnak: ezek a lökés újrafuttatásából származnak eddig az eseményig, és ez tovább tartott %1 s-nál.</translation>
+    </message>
+    <message>
+        <source>The details of the group&apos;s solve (its contacts as the rows of one problem, the impulses and forces that solve it) are left out: running the shot again up to this event was stopped.</source>
+        <translation>A csoport megoldásának részletei (érintkezései mint egyetlen feladat sorai, az azt megoldó impulzusok és erők) kimaradnak: a lökés újrafuttatása eddig az eseményig leállt.</translation>
+    </message>
+    <message>
+        <source>The held group&apos;s solve</source>
+        <translation>A tartott csoport megoldása</translation>
+    </message>
+    <message>
+        <source>The other steps, from the event&apos;s own states, stand.</source>
+        <translation>A többi lépés, amely az esemény saját állapotaiból indul, érvényes.</translation>
+    </message>
+    <message>
+        <source>the event&apos;s own contact</source>
+        <translation>az esemény saját érintkezése</translation>
+    </message>
+    <message>
+        <source>held before</source>
+        <translation>már korábban is tartott</translation>
+    </message>
+    <message>
+        <source>touching, joins now</source>
+        <translation>érintkezik, most csatlakozik</translation>
+    </message>
+    <message>
+        <source>row %1: %2 and %3, n = (%4), %5, v_n = %6 m/s, %7</source>
+        <translation>%1. sor: %2 és %3, n = (%4), %5, v_n = %6 m/s, %7</translation>
+    </message>
+    <message>
+        <source>in space (a ball in the air)</source>
+        <translation>a térben (levegőben lévő golyó)</translation>
+    </message>
+    <message>
+        <source>on the cloth</source>
+        <translation>a posztón</translation>
+    </message>
+    <message>
+        <source>The group of held contacts</source>
+        <translation>A tartósan érintkező csoport érintkezései</translation>
+    </message>
+    <message>
+        <source>Bodies that touch (a gap of at most %1 m) and meet or part slower than the hold speed v_{hold} = %2 m/s do not bounce apart: they stay pressed together, and all the contacts of such a group are solved at once, each a row of one problem. A row&apos;s normal n points from its first ball to the other body; v_n &gt; 0 parts them.</source>
+        <translation>Az egymást érintő testek (legfeljebb %1 m-es réssel), amelyek a v_{hold} = %2 m/s tartási sebességnél lassabban közelednek vagy távolodnak, nem pattannak szét: egymáshoz nyomódva maradnak, és egy ilyen csoport összes érintkezését egyszerre oldja meg a szimulátor, mindegyiket egyetlen feladat egy soraként. Egy sor n normálisa az első golyótól a másik test felé mutat; v_n &gt; 0 esetén távolodnak.</translation>
+    </message>
+    <message>
+        <source>This group: %1 balls (%2), %3 contacts.</source>
+        <translation>Ez a csoport: %1 golyó (%2), %3 érintkezés.</translation>
+    </message>
+    <message>
+        <source>row %1 pressed</source>
+        <translation>%1. sor nyomott</translation>
+    </message>
+    <message>
+        <source>Normal impulses λ at the rows take away what relative normal speed the rows have: after them a row&apos;s speed is w = A λ + b, with b = v_n before and A the change of each row&apos;s speed per unit impulse at each row (through the balls&apos; masses: a sliding ball answers with 1/m, a rolling one with 5/7 · 1/m and keeps rolling, a ball at rest not at all; a ball in the air in 3-D). A held row ends at rest (w = 0, λ of either sign: it may draw its bodies together by at most v_{hold}); every other row only pushes: λ ≥ 0, w ≥ 0 and λ w = 0 (it presses with w = 0, or parts with λ = 0).</source>
+        <translation>A sorokon ható λ normális impulzusok elveszik a sorok relatív normális sebességét: utánuk egy sor sebessége w = A λ + b, ahol b = v_n az előtti érték, A pedig az, hogy az egyes sorokon ható egységnyi impulzus mennyit változtat az egyes sorok sebességén (a golyók tömegén át: a csúszó golyó 1/m-mel válaszol, a gördülő 5/7 · 1/m-mel és tovább gördül, a nyugvó egyáltalán nem; a levegőben lévő golyó térben). A tartott sor nyugalomban végez (w = 0, λ bármilyen előjelű: legfeljebb v_{hold} sebességgel húzhatja össze testeit); minden más sor csak tol: λ ≥ 0, w ≥ 0 és λ w = 0 (nyom, ha w = 0, vagy távolodik, ha λ = 0).</translation>
+    </message>
+    <message>
+        <source>Held this way the impulses would change a ball by more than v_{hold} per contact, so the problem was solved again with every row only pushing.</source>
+        <translation>Így tartva az impulzusok egy golyót érintkezésenként több mint v_{hold}-dal változtatnának meg, ezért a feladatot újra megoldotta úgy, hogy minden sor csak tol.</translation>
+    </message>
+    <message>
+        <source>Even pushing only, the impulses would be unsound (nearly parallel normals): they are dropped, and the balls keep their states.</source>
+        <translation>Az impulzusok még csak tolva is megbízhatatlanok lennének (közel párhuzamos normálisok): elmaradnak, és a golyók megtartják állapotukat.</translation>
+    </message>
+    <message>
+        <source>(The matrix of this many rows is not written out.)</source>
+        <translation>(Ennyi sor mátrixát nem írjuk ki.)</translation>
+    </message>
+    <message>
+        <source>Re-seating the contacts</source>
+        <translation>Az érintkezések újraillesztése</translation>
+    </message>
+    <message>
+        <source>row %1 held</source>
+        <translation>%1. sor tartott</translation>
+    </message>
+    <message>
+        <source>No row has a relative normal speed beyond rounding: no impulse is needed, λ = 0.</source>
+        <translation>Egyik sornak sincs kerekítésnél nagyobb relatív normális sebessége: nincs szükség impulzusra, λ = 0.</translation>
+    </message>
+    <message>
+        <source>Contact forces of the held segment</source>
+        <translation>A tartott szakasz érintkezési erői</translation>
+    </message>
+    <message>
+        <source>The rows kept held (%1) carry constant normal forces N ≥ 0 until the group is solved again: per row, the relative normal acceleration w = A N + b must not be negative (b: what the cloth&apos;s friction and the balls&apos; paths give without the forces), N must not be negative, and N w = 0: a row presses (w = 0) or parts (N = 0). Row k of this problem is the k-th kept row.</source>
+        <translation>A tartva maradó sorok (%1) állandó N ≥ 0 normális erőt visznek, amíg a csoportot újra meg nem oldja: soronként a w = A N + b relatív normális gyorsulás nem lehet negatív (b: amit a posztó súrlódása és a golyók pályája ad az erők nélkül), N sem lehet negatív, és N w = 0: egy sor nyom (w = 0) vagy távolodik (N = 0). E feladat k-adik sora a k-adik tartva maradó sor.</translation>
+    </message>
+    <message>
+        <source>Velocities and spins after the group&apos;s impulses</source>
+        <translation>Sebességek és pörgések a csoport impulzusai után</translation>
+    </message>
+    <message>
+        <source>Each ball&apos;s impulse J is the sum of its rows&apos; λ n (−λ n for a row&apos;s first ball); its velocity changes by c J/m (c = 1 sliding or in the air, 5/7 rolling, 0 at rest) and a rolling ball&apos;s spin follows its velocity. A slip the cloth would end within a picometre is rolled out. These are the states the simulation goes on from.</source>
+        <translation>Minden golyó J impulzusa sorai λ n értékeinek összege (egy sor első golyójára −λ n); sebessége c J/m-mel változik (c = 1 csúszva vagy a levegőben, 5/7 gördülve, 0 nyugalomban), a gördülő golyó pörgése pedig követi a sebességét. Az a csúszás, amelyet a posztó egy pikométeren belül megszüntetne, kigördül. Ezekből az állapotokból folytatódik a szimuláció.</translation>
     </message>
 </context>
 </TS>
