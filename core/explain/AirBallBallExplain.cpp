@@ -44,7 +44,7 @@ void addClothAnswerStep(Explanation& e, const std::string& letter, const std::st
                                       .arg(id),
                                   kept ? Text::tr("The rebound would lift it less than %1 m off the cloth: the cloth keeps it "
                                                   "down (v_z = 0), and the rebound's vertical speed goes into the cloth.")
-                                             .arg(number(kHeldGap))
+                                             .arg(Text::numeral(number(kHeldGap)))
                                        : Text()},
                                  " "),
                       "P_{cloth,z} = (1 + e_t) m w,   |P_{cloth,t}| ≤ μ_t P_{cloth,z},   v″ = v′ + P_{cloth}/m");
@@ -62,7 +62,7 @@ void addClothAnswerStep(Explanation& e, const std::string& letter, const std::st
                          "within %2 m of the cloth (v_z² / 2g): the cloth keeps it down (v_z = 0), and its vertical "
                          "speed goes into the cloth, as a landing's.")
                     .arg(id)
-                    .arg(number(kHeldGap)),
+                    .arg(Text::numeral(number(kHeldGap))),
                 "v_z² / (2 g) ≤ h_{held}   ⇒   v_z″ = 0")
         .in("vz_law_" + letter, "v_{z," + letter + "}", law.vz, "m/s")
         .out("hop_" + letter, "v_z² / (2 g)", law.vz * law.vz / (2.0 * p.gravity), "m");
@@ -174,7 +174,7 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
                        "held instead: the re-seating takes the parting speed away (which only removes energy), and from "
                        "here a contact force N ≥ 0 along n keeps the balls touching, solved with gravity and the cloth's "
                        "friction. These are the states the simulation goes on from.")
-                  .arg(number(kHoldSpeed));
+                  .arg(Text::numeral(number(kHoldSpeed)));
     else if (ev.grouped)
         law = Text::tr("The pair joins the balls it is held with: their contacts are solved together, and what relative "
                        "normal speed the others have left is taken away at the same time. These are the states the "

@@ -212,7 +212,7 @@ void explainAirCushion(const SimulationResult& r, int index, Explanation& e)
                        "ever lower on the edge. It is held there instead, the rebound taken away (which only removes "
                        "energy); from here a contact force N ≥ 0 along n holds it. These are the states the simulation "
                        "goes on from.")
-                  .arg(number(kHoldSpeed));
+                  .arg(Text::numeral(number(kHoldSpeed)));
     else
         law = Text::tr("The ball joins the group of contacts it is held in, and their rows are solved together: these "
                        "are the states the simulation goes on from.");

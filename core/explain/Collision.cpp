@@ -155,7 +155,7 @@ void explainBallBall(const SimulationResult& r, int index, Explanation& e)
                              "contact force N ≥ 0 pushes along n, solved with the cloth's friction. Each "
                              "ball takes the impulse by one rule: c = 1 sliding, 5/7 rolling (it keeps rolling; the "
                              "cloth takes the rest), 0 at rest.")
-                        .arg(number(kHoldSpeed)),
+                        .arg(Text::numeral(number(kHoldSpeed))),
                     "ΔP (c_a/m_a + c_b/m_b) = (v′_b − v′_a)·n,   v″_a = v′_a + c_a ΔP/m_a n,   v″_b = v′_b − c_b ΔP/m_b n")
             .in("v_sep", "(v′_b − v′_a)·n", separation, "m/s")
             .in("v_hold", "v_{hold}", kHoldSpeed, "m/s")
@@ -259,7 +259,7 @@ void explainCushion(const SimulationResult& r, int index, Explanation& e)
                              "removes energy) and holds the ball against the cushion: from here the cushion's force "
                              "N ≥ 0 pushes along N. The ball takes the impulse by one rule: c = 1 sliding, "
                              "5/7 rolling (it keeps rolling), 0 at rest.")
-                        .arg(number(kHoldSpeed)),
+                        .arg(Text::numeral(number(kHoldSpeed))),
                     "ΔP c/m = v′·N,   v″ = v′ − c ΔP/m N")
             .in("v_sep", "v′·N", separation, "m/s")
             .in("v_hold", "v_{hold}", kHoldSpeed, "m/s")

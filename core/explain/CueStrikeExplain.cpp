@@ -84,7 +84,7 @@ void explainCueStrike(const SimulationResult& r, int index, const std::optional<
     const double cueEnergy = 0.5 * shot->cueMass * shot->speed * shot->speed;
     addEnergyStep(e, Text::tr("The cue brings ½ M V_0² = %1 J; an elastic tip keeps the total, so the cue keeps the "
                               "rest.")
-                         .arg(number(cueEnergy)));
+                         .arg(Text::numeral(number(cueEnergy))));
     addMomentumStep(e, Text::tr("The ball's momentum is the horizontal part of the impulse F e."));
 }
 

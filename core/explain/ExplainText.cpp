@@ -118,6 +118,12 @@ Text word(Word w)
 
 std::string unitText(const std::string& unit) { return unit.empty() ? std::string() : " " + unit; }
 
+// A number as the reader's language writes it (Text::Kind::Number).
+std::string localNumber(const std::string& number, const Text::Lookup& language)
+{
+    return language ? language(Text::Kind::Number, number) : number;
+}
+
 std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language)
 {
     std::string out = "### " + std::to_string(number) + ". " + markupToText(s.title.in(language)) + "\n\n";
@@ -128,14 +134,14 @@ std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language
     if (!s.inputs.empty()) {
         out += word(Word::Inputs).in(language);
         for (const Quantity& q : s.inputs)
-            out += " " + markupToText(q.symbol.in(language)) + " = " + readable(q.value, q.scale) + unitText(q.unit) + ";";
+            out += " " + markupToText(q.symbol.in(language)) + " = " + localNumber(readable(q.value, q.scale), language) + unitText(q.unit) + ";";
         out.back() = '\n';
         out += "\n";
     }
     if (!s.results.empty()) {
         out += "**" + word(Word::Results).in(language) + "**";
         for (const Quantity& q : s.results)
-            out += " **" + markupToText(q.symbol.in(language)) + " = " + readable(q.value, q.scale) + unitText(q.unit) + "**;";
+            out += " **" + markupToText(q.symbol.in(language)) + " = " + localNumber(readable(q.value, q.scale), language) + unitText(q.unit) + "**;";
         out.back() = '\n';
         out += "\n";
     }
@@ -144,7 +150,7 @@ std::string stepMarkdown(const Step& s, int number, const Text::Lookup& language
 
 std::string heading(const Explanation& e, const Text::Lookup& language)
 {
-    return word(Word::Heading).arg(e.title).arg(eventNumber(e.event)).arg(readable(e.time)).in(language);
+    return word(Word::Heading).arg(e.title).arg(eventNumber(e.event)).arg(Text::numeral(readable(e.time))).in(language);
 }
 
 std::string quantitiesHtml(const std::vector<Quantity>& qs, bool result, const Text::Lookup& language)
@@ -152,7 +158,7 @@ std::string quantitiesHtml(const std::vector<Quantity>& qs, bool result, const T
     std::string out;
     for (const Quantity& q : qs) {
         out += result ? "<tr><td style=\"background-color:#fff3c4\"><b>" : "<tr><td>";
-        out += markupToHtml(q.symbol.in(language)) + " = " + escape(readable(q.value, q.scale)) + (q.unit.empty() ? "" : " " + escape(q.unit));
+        out += markupToHtml(q.symbol.in(language)) + " = " + escape(localNumber(readable(q.value, q.scale), language)) + (q.unit.empty() ? "" : " " + escape(q.unit));
         out += result ? "</b></td></tr>" : "</td></tr>";
     }
     return out;
@@ -233,7 +239,7 @@ std::string toMarkdown(const Explanation& e, const Text::Lookup& language)
                                 : !r.closing  ? word(Word::BodiesPart)
                                 : !r.onSegment ? word(Word::OffSegment)
                                                : word(Word::Later);
-            out += " τ = " + readable(r.tau) + " s (" + status.in(language) + ");";
+            out += " τ = " + localNumber(readable(r.tau), language) + " s (" + status.in(language) + ");";
         }
         if (e.toi->roots.empty()) out += " " + word(Word::None).in(language) + ";";
         out.back() = '\n';

@@ -156,7 +156,7 @@ void addLeftOutStep(HeldTraceStatus status, double budget, Explanation& e)
                          ? Text::tr("The details of the group's solve (its contacts as the rows of one problem, the "
                                     "impulses and forces that solve it) are left out: they come from running the shot "
                                     "again up to this event, and that took longer than %1 s.")
-                               .arg(number(budget))
+                               .arg(Text::numeral(number(budget)))
                          : Text::tr("The details of the group's solve (its contacts as the rows of one problem, the "
                                     "impulses and forces that solve it) are left out: running the shot again up to "
                                     "this event was stopped.");
@@ -203,9 +203,9 @@ void addHeldGroupSteps(const SimulationResult& r, int index, const std::optional
                            .arg(std::to_string(k + 1))
                            .arg(name(row.link.a))
                            .arg(otherBody(r, row.contact))
-                           .arg(vectorText(n))
+                           .arg(Text::numeral(vectorText(n)))
                            .arg(row.inSpace ? Text::tr("in space (a ball in the air)") : Text::tr("on the cloth"))
-                           .arg(readable(row.normalSpeed, kHoldSpeed))
+                           .arg(Text::numeral(readable(row.normalSpeed, kHoldSpeed)))
                            .arg(why));
     }
     {
@@ -214,8 +214,8 @@ void addHeldGroupSteps(const SimulationResult& r, int index, const std::optional
                                            "speed v_{hold} = %2 m/s do not bounce apart: they stay pressed together, and all "
                                            "the contacts of such a group are solved at once, each a row of one problem. A "
                                            "row's normal n points from its first ball to the other body; v_n > 0 parts them.")
-                                      .arg(number(kHeldGap))
-                                      .arg(number(kHoldSpeed)),
+                                      .arg(Text::numeral(number(kHeldGap)))
+                                      .arg(Text::numeral(number(kHoldSpeed))),
                                   Text::tr("This group: %1 balls (%2), %3 contacts.")
                                       .arg(std::to_string(g.members.size()))
                                       .arg(Text::join(std::move(memberNames), ", "))

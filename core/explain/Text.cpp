@@ -33,6 +33,14 @@ Text Text::join(std::vector<Text> parts, std::string separator)
     return t;
 }
 
+Text Text::numeral(std::string formatted)
+{
+    Text t;
+    t.kind_ = Kind::Number;
+    t.source_ = std::move(formatted);
+    return t;
+}
+
 Text& Text::arg(Text value) &
 {
     args_.push_back(std::move(value));
@@ -50,7 +58,8 @@ std::string Text::in(const Lookup& lookup) const
     switch (kind_) {
     case Kind::Literal: return source_;
     case Kind::Element:
-    case Kind::Name: return lookup ? lookup(kind_, source_) : source_;
+    case Kind::Name:
+    case Kind::Number: return lookup ? lookup(kind_, source_) : source_;
     case Kind::Join: {
         std::string out;
         bool first = true;

@@ -30,6 +30,8 @@ public:
         Element,   // a table element's id ("pocket-tr", "rail-r"): the window names it in words
         Name,      // a core name (Names.h): a motion state ("rolling"), an event kind ("slide-to-roll")
         Join,      // the arguments one after the other, `source` between them
+        Number,    // a number or a list of numbers, written with a decimal point and ", " between
+                   // them: the window writes them its language's way ("0,5; 1,25" in Hungarian)
     };
 
     Text() = default;
@@ -40,6 +42,7 @@ public:
     static Text element(std::string id);
     static Text name(std::string coreName);
     static Text join(std::vector<Text> parts, std::string separator);
+    static Text numeral(std::string formatted);
 
     // The next placeholder's argument (%1 first).
     Text& arg(Text value) &;

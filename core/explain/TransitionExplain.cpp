@@ -120,7 +120,7 @@ void explainTransition(const SimulationResult& r, int index, Explanation& e)
     }
     const double e0 = kineticEnergy(seg.state, ball.radius, ball.mass);
     addEnergyStep(e, Text::tr("Energy is continuous at a transition; since t_{start} friction has taken %1 J.")
-                         .arg(number(e0 - kineticEnergy(ev.before[0], ball.radius, ball.mass))));
+                         .arg(Text::numeral(number(e0 - kineticEnergy(ev.before[0], ball.radius, ball.mass)))));
 }
 
 }  // namespace cuelab::explain::detail

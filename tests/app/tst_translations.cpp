@@ -9,6 +9,10 @@
 #include "export/ShotFacts.h"
 #include "i18n/DisplayNames.h"
 #include "i18n/ExampleTexts.h"
+#include "explain/ExplainLanguage.h"
+#include "Explain.h"
+#include "ExplainText.h"
+#include "Simulation.h"
 #include "editor/BallsPanel.h"
 #include "editor/Document.h"
 #include "editor/Playback.h"
@@ -63,6 +67,7 @@ private slots:
     void qtOwnStrings();
     void hungarianOutcomeAndHandouts();
     void hungarianNumbersUseADecimalComma();
+    void explainNumbersFollowTheLanguage();
     void exampleLessons();
     void englishWindow_data();
     void englishWindow();
@@ -237,6 +242,38 @@ void TestTranslations::hungarianNumbersUseADecimalComma()
     QVERIFY2(en[0].contains(QStringLiteral("6.493")), qPrintable(en[0]));
     QCOMPARE(en[2], QStringLiteral("1.2000"));
     QVERIFY2(QRegularExpression(QStringLiteral("^\\(\\d+\\.\\d{3}, \\d+\\.\\d{3}\\)$")).match(en[3]).hasMatch(), qPrintable(en[3]));
+}
+
+// The derivation's numbers follow the language too (Text::Kind::Number): the heading's time, the
+// inputs and results, and numbers inside sentences; a list of them is split by "; " beside commas.
+// The command line (english(), no lookup) keeps the point.
+void TestTranslations::explainNumbersFollowTheLanguage()
+{
+    QString error;
+    const std::optional<Setup> setup = io::loadSetup(QStringLiteral(CUELAB_SOURCE_DIR "/resources/examples/half-ball-cut.json"), &error);
+    QVERIFY2(setup, qPrintable(error));
+    const SimulationResult result = simulate(*setup);
+    int index = -1;
+    for (std::size_t k = 0; k < result.events.size() && index < 0; ++k)
+        if (result.events[k].kind == EventKind::BallBall) index = static_cast<int>(k);
+    QVERIFY(index >= 0);
+    const explain::Explanation e = explain::explain(result, index, setup->shot);
+
+    QCOMPARE(installTranslations(QLocale(QStringLiteral("hu_HU"))), QStringLiteral("hu"));
+    const QString hu = QString::fromStdString(explain::toHtml(e, explainLanguage()));
+    QCOMPARE(translated(explain::Text::numeral("0.5, 1.25, -3e-05")), QStringLiteral("0,5; 1,25; -3e-05"));
+    installTranslations(QLocale::c());
+    const QString en = QString::fromStdString(explain::toHtml(e, explainLanguage()));
+    QCOMPARE(translated(explain::Text::numeral("0.5, 1.25")), QStringLiteral("0.5, 1.25"));
+
+    // The event's time, as the heading and the first step's t0 show it: 0.29… s.
+    static const QRegularExpression huTime(QStringLiteral("0,29\\d*"));
+    static const QRegularExpression enTime(QStringLiteral("0\\.29\\d*"));
+    QVERIFY2(huTime.match(hu).hasMatch(), qPrintable(hu.left(400)));
+    QVERIFY2(!enTime.match(hu).hasMatch(), qPrintable(enTime.match(hu).captured(0)));
+    QVERIFY2(enTime.match(en).hasMatch(), qPrintable(en.left(400)));
+    QVERIFY(!huTime.match(en).hasMatch());
+    QVERIFY(QString::fromStdString(explain::toHtml(e)).contains(enTime));  // (no lookup: the point)
 }
 
 // Qt's own strings (standard buttons) follow, from qtbase_hu.qm, when the system has it.
