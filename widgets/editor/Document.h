@@ -151,6 +151,10 @@ signals:
     void dragFinished();      // isDragging() turned false (released, or ended by another edit)
 
 private:
+    // m, the least gap between a ball the editor places (a new ball, a copy, a ball moved off a table
+    // that shrank) and everything else: a visible gap, so that a new ball is not frozen to another.
+    static constexpr double kEditorGap = 1e-4;
+
     friend class SetupCommand;
     void applySetup(const Setup& setup);  // called by commands only
     void replace(const Setup& setup, const QString& path, const QString& title);
