@@ -1,5 +1,6 @@
-// Sustained contact in the event loop (Contact.h): which contacts are held, the group an event
-// touches, its solve and new segments (settle), and how long a frozen segment may last (turnLimit).
+// Sustained contact in the event loop (Contact.h): the group an event touches, its solve and its
+// new segments (settle). Which contacts are held, and how long a frozen segment may last
+// (turnLimit), are in HeldSegments.cpp.
 
 #include "Simulator.h"
 
@@ -10,21 +11,6 @@
 #include <cmath>
 
 namespace cuelab::detail {
-
-
-bool Simulator::heldPair(int i, int j) const
-{
-    for (const HeldContact& h : held_)
-        if (h.body == ContactBody::Ball && ((h.a == i && h.other == j) || (h.a == j && h.other == i))) return true;
-    return false;
-}
-
-bool Simulator::heldWall(int i, ContactBody body, int index) const
-{
-    for (const HeldContact& h : held_)
-        if (h.a == i && h.body == body && h.other == index) return true;
-    return false;
-}
 
 Simulator::Settled Simulator::settle(double t, const std::vector<int>& eventBalls,
                                      const std::vector<BallState>& eventStates, const HeldContact* candidate,

@@ -1,7 +1,7 @@
-// The segments of held groups (Contact.h): how long a group's frozen directions and normals may be
-// kept before it is solved again (turnLimit), the bound on a group solved again without an event
-// (quietFloor, Contact.h's kQuietSolves), and which event a pushed state's end is. The groups
-// themselves are solved in HeldContacts.cpp.
+// The segments of held groups (Contact.h): which contacts are held (heldPair, heldWall), how long a
+// group's frozen directions and normals may be kept before it is solved again (turnLimit), the bound
+// on a group solved again without an event (quietFloor, Contact.h's kQuietSolves), and which event a
+// pushed state's end is. The groups themselves are solved in HeldContacts.cpp.
 
 #include "Simulator.h"
 
@@ -11,6 +11,20 @@
 #include <cmath>
 
 namespace cuelab::detail {
+
+bool Simulator::heldPair(int i, int j) const
+{
+    for (const HeldContact& h : held_)
+        if (h.body == ContactBody::Ball && ((h.a == i && h.other == j) || (h.a == j && h.other == i))) return true;
+    return false;
+}
+
+bool Simulator::heldWall(int i, ContactBody body, int index) const
+{
+    for (const HeldContact& h : held_)
+        if (h.a == i && h.body == body && h.other == index) return true;
+    return false;
+}
 
 bool pushedTransitionKind(MotionState before, MotionState after, EventKind& kind)
 {
