@@ -2,6 +2,7 @@
 #include "MainWindowPrivate.h"
 
 #include "DockLayout.h"
+#include "ElidingStatusBar.h"
 #include "Features.h"
 #include "FirstStartTip.h"
 #include "InputGuard.h"
@@ -262,6 +263,7 @@ QMenu* MainWindow::menu(WindowMenu which)
 
 void MainWindow::createStatusBar()
 {
+    setStatusBar(new window::ElidingStatusBar(this));
     summaryLabel_ = new QLabel(this);
     summaryLabel_->setObjectName(QStringLiteral("summaryStatus"));
     fpsLabel_ = new QLabel(this);

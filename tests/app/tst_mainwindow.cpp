@@ -1,6 +1,7 @@
 // The main window driven as a user would: menus, keys, mouse clicks on the panels, files, and the
 // cuelab executable's command line.
 
+#include "ElidingStatusBar.h"
 #include "MainWindow.h"
 #include "RecentFiles.h"
 
@@ -111,6 +112,7 @@ private slots:
     void ballDragInTheViewIsOneStep();
     void ballPositionEditedInTheTable();
     void dockLayoutIsRemembered();
+    void longStatusMessageIsElided();
 
 private:
     QTemporaryDir settingsDir_;
@@ -529,4 +531,40 @@ void TestMainWindow::dockLayoutIsRemembered()
 }
 
 QTEST_MAIN(TestMainWindow)
+void TestMainWindow::longStatusMessageIsElided()
+{
+    // A file deep in a folder tree at 1024 px: "Opened <path>" is elided in its middle within the room
+    // left of the shot's summary, and the whole message is the bar's tooltip (issue 44's review: it ran
+    // into the summary, cut off mid-word).
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString folder = dir.filePath(QStringLiteral("Documents/Billiards lessons/Autumn term 2026/week 7 of the course"));
+    QVERIFY(QDir().mkpath(folder));
+    const QString path = folder + QStringLiteral("/an eight-ball break with a long file name.json");
+    QVERIFY(QFile::copy(examplePath("8-ball-break.json"), path));
+    MainWindow w;
+    w.resize(1024, 700);
+    w.show();
+    QVERIFY(activate(w));
+    QVERIFY(w.openFile(path));
+    auto* bar = qobject_cast<window::ElidingStatusBar*>(w.statusBar());
+    QVERIFY(bar);
+    QVERIFY(bar->currentMessage().endsWith(QStringLiteral("long file name.json")));
+    QTRY_VERIFY(bar->messageRect().width() > 0);
+    const QString shown = bar->shownMessage();
+    QVERIFY2(shown != bar->currentMessage(), qPrintable(shown));
+    QVERIFY(shown.contains(QChar(0x2026)));
+    QVERIFY(shown.startsWith(QStringLiteral("Opened ")));
+    QVERIFY(shown.endsWith(QStringLiteral(".json")));
+    QVERIFY(bar->fontMetrics().horizontalAdvance(shown) <= bar->messageRect().width());
+    const QLabel* summary = w.findChild<QLabel*>(QStringLiteral("summaryStatus"));
+    QVERIFY(summary && summary->isVisible());
+    QVERIFY(bar->messageRect().right() < summary->x());
+    QCOMPARE(bar->toolTip(), bar->currentMessage());
+    // A short one is shown whole, with no tooltip.
+    bar->showMessage(QStringLiteral("Saved"));
+    QCOMPARE(bar->shownMessage(), QStringLiteral("Saved"));
+    QVERIFY(bar->toolTip().isEmpty());
+}
+
 #include "tst_mainwindow.moc"
