@@ -1812,6 +1812,34 @@ legal, scores, point — a beállított játék szabályai: nincs szabálytalans
         <source>fails</source>
         <translation>nem teljesül</translation>
     </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tűrés</translation>
+    </message>
+    <message>
+        <source>How far heading, speed, elevation and the tip offsets may miss</source>
+        <translation>Mennyit téveszthet az irány, a sebesség, a dőlés és a dákóvég helye</translation>
+    </message>
+    <message>
+        <source>The outcome of every tip offset, or of any two parameters</source>
+        <translation>Minden dákóvég-hely, vagy bármely két paraméter minden értékének eredménye</translation>
+    </message>
+    <message>
+        <source>Odds</source>
+        <translation>Esély</translation>
+    </message>
+    <message>
+        <source>How often the shot meets the goal under a player&apos;s execution noise</source>
+        <translation>Milyen gyakran teljesíti a lökés a célt a játékos kivitelezési szórásával</translation>
+    </message>
+    <message>
+        <source>Find shots</source>
+        <translation>Lökések keresése</translation>
+    </message>
+    <message>
+        <source>The strikes that meet the goal most often for the chosen player</source>
+        <translation>A választott játékosnak a célt leggyakrabban teljesítő lökések</translation>
+    </message>
 </context>
 <context>
     <name>cuelab::BallEditor</name>

@@ -18,6 +18,7 @@
 #include <QUndoStack>
 #include <QLabel>
 #include <QTableWidget>
+#include <QTabWidget>
 #include <QtTest>
 
 using namespace cuelab;
@@ -58,6 +59,7 @@ private slots:
     void cancelStops();
     void setupChangeDropsResults();
     void twoParameterMap();
+    void sectionsAreTabs();
 };
 
 void TestAnalysisPanel::goalComesFromTheShot()
@@ -192,6 +194,32 @@ void TestAnalysisPanel::twoParameterMap()
     QVERIFY(waitForJob(f.panel));
     QCOMPARE(f.panel.map()->filled(), 49);
     QVERIFY(f.panel.map()->counts()[static_cast<std::size_t>(ShotClass::Outside)] == 0);
+}
+
+void TestAnalysisPanel::sectionsAreTabs()
+{
+    // The four sections are tabs under the shared goal (issue 44's review: stacked, they needed
+    // scrolling even at 2560x1440): the panel's least height fits the Coach layout's right column at
+    // 1280x800 with room to spare, and the scan, the map and the finder raise their own tab.
+    Fixture f("half-ball-cut.json");
+    QTabWidget* tabs = f.panel.sections();
+    QVERIFY(tabs);
+    QCOMPARE(tabs->count(), 4);
+    const int least = f.panel.minimumSizeHint().height();
+    qInfo() << "least height" << least << "pages" << tabs->widget(0)->minimumSizeHint().height() << tabs->widget(1)->minimumSizeHint().height()
+            << tabs->widget(2)->minimumSizeHint().height() << tabs->widget(3)->minimumSizeHint().height();
+    QVERIFY2(least <= 560, qPrintable(QString::number(least)));
+    f.panel.showSection(AnalysisPanel::OddsPage);
+    QVERIFY(!f.panel.map()->isVisibleTo(&f.panel));
+    f.panel.mapMode()->setCurrentIndex(AnalysisPanel::TipOffsetDisk);
+    f.panel.mapCells()->setValue(5);
+    f.panel.runMap();
+    QCOMPARE(tabs->currentIndex(), static_cast<int>(AnalysisPanel::MapPage));
+    QVERIFY(f.panel.map()->isVisibleTo(&f.panel));
+    QVERIFY(waitForJob(f.panel));
+    f.panel.runTolerance();
+    QCOMPARE(tabs->currentIndex(), static_cast<int>(AnalysisPanel::TolerancePage));
+    QVERIFY(waitForJob(f.panel));
 }
 
 QTEST_MAIN(TestAnalysisPanel)

@@ -18,6 +18,7 @@
 #include <QMenu>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QTabWidget>
 #include <QScrollBar>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -101,8 +102,9 @@ void TestShotFinderWindow::clicksMakeTheGoal()
     QVERIFY(view->layers().count(QStringLiteral("shot-finder")) == 0);
 }
 
-// Analysis > Map tip offsets with the dock scrolled to its end (the shot finder, at the bottom, in
-// view): the map is brought into view (issue 44: it opened above the visible part).
+// Analysis > Map tip offsets with the Find shots tab raised: the map's tab is raised and the map is
+// in view within the dock (issue 44: it opened above the visible part of a dock that had to scroll;
+// the sections are tabs now, and the dock needs no scrolling at 1280x800).
 void TestShotFinderWindow::mapTipOffsetsShowsTheMap()
 {
     MainWindow window;
@@ -116,22 +118,23 @@ void TestShotFinderWindow::mapTipOffsetsShowsTheMap()
     dock->show();
     dock->raise();
     QTest::qWait(200);
-    auto* scroller = qobject_cast<QScrollArea*>(dock->widget());
     auto* panel = window.findChild<AnalysisPanel*>();
-    QVERIFY(scroller && panel);
-    QVERIFY2(scroller->verticalScrollBar()->maximum() > 0, "the dock does not scroll at 1280x800: nothing to test");
-    const auto mapShown = [&] {
-        const QRect map(panel->map()->mapTo(scroller->viewport(), QPoint(0, 0)), panel->map()->size());
-        return scroller->viewport()->rect().intersected(map).height() >= std::min(map.height(), scroller->viewport()->height()) / 2;
-    };
-    scroller->verticalScrollBar()->setValue(scroller->verticalScrollBar()->maximum());
+    QVERIFY(panel);
+    if (auto* scroller = qobject_cast<QScrollArea*>(dock->widget())) QCOMPARE(scroller->verticalScrollBar()->maximum(), 0);
+    panel->showSection(AnalysisPanel::FinderPage);
     QCoreApplication::processEvents();
-    QVERIFY(!mapShown());
+    QVERIFY(!panel->map()->isVisible());
+    const auto mapShown = [&] {
+        if (!panel->map()->isVisible()) return false;
+        const QRect map(panel->map()->mapTo(dock, QPoint(0, 0)), panel->map()->size());
+        return dock->rect().intersected(map).height() >= std::min(map.height(), dock->height()) / 2;
+    };
     QAction* map = nullptr;
     for (QAction* a : window.findChildren<QAction*>())
         if (a->shortcut() == QKeySequence(QStringLiteral("Ctrl+Alt+M"))) map = a;
     QVERIFY(map);
     map->trigger();
+    QCOMPARE(panel->sections()->currentIndex(), static_cast<int>(AnalysisPanel::MapPage));
     QTRY_VERIFY(mapShown());
     panel->cancel();
 }

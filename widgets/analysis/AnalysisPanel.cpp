@@ -21,6 +21,9 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QTabWidget>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -216,28 +219,59 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
     status_ = new QLabel(this);
     status_->setWordWrap(true);
 
+    // The goal (shared by every section) above one tab per section: stacked, the four needed scrolling
+    // even at 2560x1440 (issue 44's review), and the map opened above the visible part. The progress
+    // and the status of the scans and the map stay under the tabs, whichever is raised.
     auto* layout = new QVBoxLayout(this);
     auto* goalRow = new QHBoxLayout;
     goalRow->addWidget(new QLabel(tr("Goal"), this));
     goalRow->addWidget(goal_, 1);
     layout->addLayout(goalRow);
     layout->addWidget(goalFromShot_, 0, Qt::AlignRight);  // under the goal: the dock fits a narrow column
-    layout->addWidget(tolerance);
-    layout->addWidget(mapBox, 1);
+    sections_ = new QTabWidget(this);
+    sections_->setObjectName(QStringLiteral("analysisSections"));
+    sections_->setDocumentMode(true);
+    sections_->setUsesScrollButtons(true);  // four tabs in a narrow side column
+    auto* odds = new OddsSection(document_, [this] { return goal_->text(); }, this);  // issue 25
+    const auto setGoal = [this](const QString& text) {
+        goal_->setText(text);
+        goalEdited_ = true;
+    };
+    auto* finder = new ShotFinderSection(document_, [this] { return goal_->text(); }, [odds] { return odds->noise(); },
+                                         setGoal, this);  // issue 42
+    // Each section's own title says what it is; in its tab a flat box (no frame inside the tab's),
+    // which scrolls within its tab when the dock is shorter than it (the odds need some 800 px): the
+    // tallest section no longer sets the whole dock's least height.
+    const auto page = [this](QGroupBox* box, bool stretch) {
+        box->setFlat(true);
+        auto* holder = new QWidget;
+        auto* column = new QVBoxLayout(holder);
+        column->setContentsMargins(0, 0, 0, 0);
+        column->addWidget(box, stretch ? 1 : 0);
+        if (!stretch) column->addStretch(1);
+        auto* scroller = new QScrollArea(sections_);
+        scroller->setFrameShape(QFrame::NoFrame);
+        scroller->setWidgetResizable(true);
+        scroller->setWidget(holder);
+        // As wide as the box needs (a scroll area alone would let the dock squeeze it), with room for
+        // the vertical scroll bar.
+        scroller->setMinimumWidth(holder->minimumSizeHint().width() + scroller->verticalScrollBar()->sizeHint().width());
+        return scroller;
+    };
+    sections_->insertTab(TolerancePage, page(tolerance, false), tr("Tolerance"));
+    sections_->setTabToolTip(TolerancePage, tr("How far heading, speed, elevation and the tip offsets may miss"));
+    sections_->insertTab(MapPage, page(mapBox, true), tr("Map"));
+    sections_->setTabToolTip(MapPage, tr("The outcome of every tip offset, or of any two parameters"));
+    sections_->insertTab(OddsPage, page(odds, true), tr("Odds"));
+    sections_->setTabToolTip(OddsPage, tr("How often the shot meets the goal under a player's execution noise"));
+    sections_->insertTab(FinderPage, page(finder, true), tr("Find shots"));
+    sections_->setTabToolTip(FinderPage, tr("The strikes that meet the goal most often for the chosen player"));
+    layout->addWidget(sections_, 1);
     auto* progressRow = new QHBoxLayout;
     progressRow->addWidget(progress_, 1);
     progressRow->addWidget(cancel_);
     layout->addLayout(progressRow);
     layout->addWidget(status_);
-    auto* odds = new OddsSection(document_, [this] { return goal_->text(); }, this);
-    layout->addWidget(odds, 1);  // issue 25
-    const auto setGoal = [this](const QString& text) {
-        goal_->setText(text);
-        goalEdited_ = true;
-    };
-    layout->addWidget(new ShotFinderSection(document_, [this] { return goal_->text(); }, [odds] { return odds->noise(); },
-                                            setGoal, this),
-                      1);  // issue 42
 
     connect(scan_, &QPushButton::clicked, this, &AnalysisPanel::runTolerance);
     connect(mapButton_, &QPushButton::clicked, this, &AnalysisPanel::runMap);
@@ -384,8 +418,11 @@ SweepSpec AnalysisPanel::baseSpec(const ResolvedGoal& goal) const
     return spec;
 }
 
+void AnalysisPanel::showSection(Section section) { sections_->setCurrentIndex(section); }
+
 void AnalysisPanel::runTolerance()
 {
+    showSection(TolerancePage);
     if (!document_->setup().shot) return setStatus(tr("The setup has no cue strike to scan."));
     const auto goal = currentGoal();
     if (!goal) return;
@@ -462,6 +499,7 @@ void AnalysisPanel::fillToleranceTable()
 
 void AnalysisPanel::runMap()
 {
+    showSection(MapPage);
     const auto goal = currentGoal();
     if (!goal) return;
     const SweepSpec base = baseSpec(*goal);

@@ -25,6 +25,7 @@ class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
+class QTabWidget;
 
 namespace cuelab {
 
@@ -58,6 +59,10 @@ public:
     bool loadCell(int index);
 
     enum MapMode { TipOffsetDisk = 0, TwoParameters = 1 };
+    // The dock's tabs, in order.
+    enum Section { TolerancePage = 0, MapPage = 1, OddsPage = 2, FinderPage = 3 };
+    QTabWidget* sections() const { return sections_; }
+    void showSection(Section section);
 
 private:
     void onSetupChanged();
@@ -94,6 +99,7 @@ private:
     QProgressBar* progress_;
     QPushButton* cancel_;
     QLabel* status_;
+    QTabWidget* sections_ = nullptr;
 
     bool goalEdited_ = false;  // the user typed a goal: keep it across edits of the shot
     // The map's setup and axes: a setup equal to it but for the two mapped values is one of its cells.

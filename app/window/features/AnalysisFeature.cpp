@@ -146,8 +146,9 @@ void installAnalysis(MainWindow& window)
     QObject::connect(dock, &QDockWidget::visibilityChanged, view, showPaths);
     QAction* find = menu->addAction(QObject::tr("&Find shots"));
     find->setStatusTip(QObject::tr("The strikes that meet the goal most often for the chosen player"));
-    QObject::connect(find, &QAction::triggered, panel, [finder, showDock] {
+    QObject::connect(find, &QAction::triggered, panel, [panel, finder, showDock] {
         showDock();
+        panel->showSection(AnalysisPanel::FinderPage);
         finder->find();
     });
     QAction* cancel = menu->addAction(QObject::tr("&Cancel analysis"));
