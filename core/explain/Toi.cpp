@@ -97,10 +97,16 @@ TimeOfImpact timeOfImpact(const SimulationResult& r, int index)
 
     std::array<double, 4> roots{};
     const int count = solveQuartic(q, roots);
-    if (chosen == 0.0) touchingNow = true;
+    const double late = ev.time - p.t0;
+    if (chosen == 0.0) {
+        touchingNow = true;
+        // Touching at t0 but met later: the simulator predicted the pair again at the event (another
+        // ball's event or its group's solve) and met it at once there, the bodies still touching (two
+        // balls creeping at nanometres a second, the gap within rounding all along).
+        chosen = late > 0.0 ? late : 0.0;
+    }
     // The simulator met the contact later than t0 and at once: the bodies were touching and pressed
     // together at the event (a held group solved again there; Detection.h's resting contact).
-    const double late = ev.time - p.t0;
     if (!touchingNow && late > 0.0 && (chosen == kNever || std::abs(chosen - late) > 1e-12 * std::max(1.0, std::abs(ev.time)))) {
         const Path a = p.a.shifted(late);
         double now = kNever;

@@ -207,7 +207,7 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
         // And for either ball let go at this instant by a nose edge or a jaw's rim that presses it on
         // the other (seed16-shot363458: a flying ball on a rim and a hopping ball); the edge or rim,
         // met at once, joins the group (airCushion).
-        const bool wedged = (airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b && !flying(b)) ||
+        const bool wedged = (airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b) ||
                             (flying(b) && airLetGo_[at(b)] == e.time && airLetGoOf_[at(b)] != a) ||
                             airEdgeLetGo_[at(a)] == e.time || (flying(b) && airEdgeLetGo_[at(b)] == e.time);
         if (wedged && holdCollision(e, HeldContact{i, ContactBody::Ball, j}, 0.0)) return;

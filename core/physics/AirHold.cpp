@@ -421,7 +421,11 @@ bool Simulator::airHoldRule(Event& e, const AirBallBallResult& res)
     // pairwise hold would hand a back and forth with the group (seed16-shot68467, 585155).
     // So too a flying ball that another ball's hold let go at this instant: wedged between the two, it
     // would be handed back and forth by pairwise holds (seed16-shot260322), as in the wedge rule above.
-    const bool wedged = airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b;
+    // And the ball on the cloth, let go at this instant by a second flying ball (wide-seed16-shot100384:
+    // a sliding ball between two balls coming down on it, the two pairwise holds taking turns at one
+    // instant, each approach 0.6 of the last, to the event cap).
+    const bool wedged = (airLetGo_[at(a)] == e.time && airLetGoOf_[at(a)] != b) ||
+                        (airLetGo_[at(b)] == e.time && airLetGoOf_[at(b)] != a);
     if (wedged || heldCount_[at(a)] > 0 || heldCount_[at(b)] > 0) {
         if (holdCollision(e, HeldContact{i, ContactBody::Ball, j}, separation)) return true;
         e.held = false;
