@@ -86,6 +86,19 @@ private slots:
         QVERIFY(panel->recording());
         QVERIFY(window.findChild<QDockWidget*>(QStringLiteral("RecordingDock"))->isVisible());
         QCOMPARE(window.document()->setup().balls.size(), truth.balls.size());  // the shot stayed
+        // The residual plot whole in the dock at 1600x1000, its time axis included (issue 44's review:
+        // the dock scrolled and hid the plot's lower part).
+        {
+            auto* dock = window.findChild<QDockWidget*>(QStringLiteral("RecordingDock"));
+            auto* chart = panel->findChild<QWidget*>(QStringLiteral("recordingResidual"));
+            QVERIFY(chart);
+            const auto whole = [&] {
+                const QRect r(chart->mapTo(dock, QPoint(0, 0)), chart->size());
+                return chart->isVisible() && dock->rect().contains(r) && r.height() >= 140;
+            };
+            QTRY_VERIFY2(whole(), qPrintable(QStringLiteral("chart at %1, height %2; dock height %3")
+                                                 .arg(chart->mapTo(dock, QPoint(0, 0)).y()).arg(chart->height()).arg(dock->height())));
+        }
         // The samples over the view: one dot per sample, one ghost per recorded ball.
         const ViewLayers& layers = window.tableView()->layers();
         QVERIFY(layers.count(QStringLiteral("recording")));

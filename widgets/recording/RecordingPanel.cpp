@@ -49,7 +49,7 @@ class ResidualChart : public QWidget {
 public:
     explicit ResidualChart(QWidget* parent) : QWidget(parent)
     {
-        setMinimumSize(220, 220);
+        setMinimumSize(220, 140);  // low enough that the dock need not scroll at 1600-1920 px (its axes in view)
         setToolTip(RecordingPanel::tr("Distance (cm) between each recorded sample and the simulated ball at the sample's "
                                       "time (s), one line per ball: where the model and the recording part. Thin grey "
                                       "lines: the simulation's collisions"));
@@ -177,7 +177,11 @@ RecordingPanel::RecordingPanel(Document* document, QWidget* parent)
     balls_->verticalHeader()->hide();
     balls_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     balls_->setToolTip(tr("Per recorded ball: its samples and their RMSE (cm) against the simulation"));
+    // Its header and three rows at least (it scrolls beyond): the residual plot above keeps the room.
+    balls_->setMinimumHeight(balls_->horizontalHeader()->sizeHint().height() + 3 * balls_->fontMetrics().height() + 12);
+    balls_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Ignored);
     chart_ = new ResidualChart(this);
+    chart_->setObjectName(QStringLiteral("recordingResidual"));
     fit_ = new QPushButton(tr("Fit Strike"), this);
     fit_->setObjectName(QStringLiteral("recordingFit"));
     fit_->setToolTip(tr("Find the heading (°), cue speed (m/s) and tip offsets (R) whose simulation follows the recording best "

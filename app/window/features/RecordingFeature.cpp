@@ -17,6 +17,7 @@
 #include "recording/RecordingPanel.h"
 #include "view/TableView.h"
 
+#include <QTimer>
 #include <QAction>
 #include <QCoreApplication>
 #include <QDockWidget>
@@ -164,8 +165,11 @@ void installRecording(MainWindow& window)
         dock->show();
         dock->raise();
         // Room for the residual plot: half the window's height (the docks beside it keep the rest).
-        if (!dock->isFloating() && w->dockWidgetArea(dock) != Qt::NoDockWidgetArea)
-            w->resizeDocks({dock}, {std::max(dock->minimumSizeHint().height(), w->height() / 2)}, Qt::Vertical);
+        // (Once the dock just shown is laid out: at once, the docks' layout did not take it yet.)
+        QTimer::singleShot(0, dock, [w, dock] {
+            if (!dock->isFloating() && w->dockWidgetArea(dock) != Qt::NoDockWidgetArea)
+                w->resizeDocks({dock}, {std::max(dock->minimumSizeHint().height(), w->height() / 2)}, Qt::Vertical);
+        });
         w->statusBar()->showMessage(tr("Opened the recording %1").arg(QFileInfo(path).fileName()), 6000);
         return true;
     };
