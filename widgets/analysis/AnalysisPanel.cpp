@@ -22,7 +22,6 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QScrollArea>
-#include <QScrollBar>
 #include <QTabWidget>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -253,9 +252,9 @@ AnalysisPanel::AnalysisPanel(Document* document, QWidget* parent)
         scroller->setFrameShape(QFrame::NoFrame);
         scroller->setWidgetResizable(true);
         scroller->setWidget(holder);
-        // As wide as the box needs (a scroll area alone would let the dock squeeze it), with room for
-        // the vertical scroll bar.
-        scroller->setMinimumWidth(holder->minimumSizeHint().width() + scroller->verticalScrollBar()->sizeHint().width());
+        // As wide as the box needs (a scroll area alone would let the dock squeeze it); a page that also
+        // scrolls down in the narrowest column (Coach at 800x600) scrolls sideways by its scroll bar's width.
+        scroller->setMinimumWidth(holder->minimumSizeHint().width());
         return scroller;
     };
     sections_->insertTab(TolerancePage, page(tolerance, false), tr("Tolerance"));
