@@ -63,6 +63,7 @@ private slots:
     void momentum();
     void groupMomentum();
     void runChecks();
+    void runDigest();
 };
 
 void TestChecks::places_data()
@@ -330,6 +331,28 @@ void TestChecks::runChecks()
     soak::CheckOptions noSecondRun;
     noSecondRun.determinism = false;
     QVERIFY(soak::checkRun(other, r, noSecondRun).empty());
+}
+
+void TestChecks::runDigest()
+{
+    // The same run twice gives the same digest; a change of one bit in an event's state, a segment's
+    // push or the end time gives another.
+    const SimulationResult r = sample();
+    const std::uint64_t d = soak::runDigest(r);
+    QCOMPARE(soak::runDigest(simulate(sampleSetup())), d);
+    SimulationResult nudged = r;
+    for (Event& e : nudged.events)
+        if (e.kind == EventKind::BallBall) {
+            e.after[1].velocity.x() = std::nextafter(e.after[1].velocity.x(), 1.0);
+            break;
+        }
+    QVERIFY(soak::runDigest(nudged) != d);
+    SimulationResult pushed = r;
+    pushed.timelines[0].back().push.y() = 1e-300;
+    QVERIFY(soak::runDigest(pushed) != d);
+    SimulationResult later = r;
+    later.endTime = std::nextafter(r.endTime, 1e9);
+    QVERIFY(soak::runDigest(later) != d);
 }
 
 QTEST_APPLESS_MAIN(TestChecks)

@@ -256,6 +256,44 @@ bool sameRun(const SimulationResult& a, const SimulationResult& b)
     return true;
 }
 
+namespace {
+
+struct Fnv {
+    std::uint64_t h = 1469598103934665603ull;
+    template <typename T>
+    void add(const T& value)
+    {
+        unsigned char bytes[sizeof(T)];
+        std::memcpy(bytes, &value, sizeof(T));
+        for (unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
+    }
+    void add(const Vec2& v) { add(v.x()), add(v.y()); }
+    void add(const Vec3& v) { add(v.x()), add(v.y()), add(v.z()); }
+    void add(const BallState& s)
+    {
+        add(s.position), add(s.velocity), add(s.spin), add(static_cast<int>(s.motion)), add(s.pocket), add(s.z), add(s.vz);
+    }
+};
+
+}  // namespace
+
+std::uint64_t runDigest(const SimulationResult& r)
+{
+    Fnv f;
+    f.add(static_cast<int>(r.status));
+    f.add(r.endTime);
+    for (const Event& e : r.events) {
+        f.add(static_cast<int>(e.kind)), f.add(e.time), f.add(e.balls[0]), f.add(e.balls[1]);
+        f.add(e.cushion), f.add(e.jaw), f.add(e.pocket), f.add(e.impulse), f.add(e.normal), f.add(e.approachSpeed);
+        f.add(e.held), f.add(e.holdImpulse), f.add(e.grouped);
+        for (std::size_t q = 0; q < 2; ++q) f.add(e.before[q]), f.add(e.after[q]);
+        for (const Event::GroupChange& g : e.group) f.add(g.ball), f.add(g.before), f.add(g.after);
+    }
+    for (const auto& timeline : r.timelines)
+        for (const MotionSegment& s : timeline) f.add(s.start), f.add(s.push), f.add(s.pushZ), f.add(s.state);
+    return f.h;
+}
+
 std::vector<Failure> checkRun(const Setup& setup, const SimulationResult& result, const CheckOptions& options,
                               RunMeasures* measures, const SimulationOptions& simulation)
 {

@@ -62,6 +62,11 @@ std::vector<Failure> checkRun(const Setup& setup, const SimulationResult& result
 // timelines, end time and status.
 bool sameRun(const SimulationResult& a, const SimulationResult& b);
 
+// A fingerprint of what sameRun compares (64-bit FNV-1a over the values' bits): two builds whose
+// soaks give the same digest gave the same events and timelines, bit for bit, on every shot (a
+// refactoring of the simulator meant to change nothing is checked so, over a million shots).
+std::uint64_t runDigest(const SimulationResult& r);
+
 // One line per failure: "kind: message".
 std::string describe(const std::vector<Failure>& failures);
 

@@ -31,6 +31,7 @@ void keepWorst(ShotFigure& worst, const ShotFigure& f)
 void merge(SoakSummary& into, SoakSummary& part)
 {
     into.events += part.events;
+    into.digest += part.digest;
     into.simulateCpuSeconds += part.simulateCpuSeconds;
     for (std::size_t k = 0; k < into.shotsPerClass.size(); ++k) into.shotsPerClass[k] += part.shotsPerClass[k];
     for (std::size_t k = 0; k < into.failuresPerKind.size(); ++k) into.failuresPerKind[k] += part.failuresPerKind[k];
@@ -63,6 +64,12 @@ void runShot(const SoakOptions& o, std::uint64_t index, SoakSummary& part)
     const ShotClass c = shot.shotClass;
     ++part.shotsPerClass[static_cast<std::size_t>(c)];
     part.events += static_cast<long long>(r.events.size());
+    {
+        std::uint64_t z = runDigest(r) ^ (index * 0x9E3779B97F4A7C15ull);  // (splitmix64's finaliser)
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        part.digest += z ^ (z >> 31);
+    }
     part.simulateCpuSeconds += cpu;
     keepWorst(part.worstEnergyRise, {index, c, m.worstEnergyRise});
     if (m.initialEnergy > 0.0) keepWorst(part.worstRelativeEnergyRise, {index, c, m.worstEnergyRise / m.initialEnergy});
@@ -171,6 +178,8 @@ std::string toJson(const SoakSummary& s, std::size_t listed)
                   s.shots, s.first, static_cast<unsigned long long>(s.seed), s.jobs, s.events, s.wallSeconds, s.cpuSeconds,
                   s.simulateCpuSeconds, s.failedShots);
     std::string out = buffer;
+    std::snprintf(buffer, sizeof buffer, " \"events_digest\": \"%016llx\",\n", static_cast<unsigned long long>(s.digest));
+    out += buffer;
     out += " \"shots_per_class\": {";
     for (std::size_t k = 0; k < shotClasses().size(); ++k)
         out += (k ? ", \"" : "\"") + std::string(toString(shotClasses()[k])) + "\": " + std::to_string(s.shotsPerClass[k]);

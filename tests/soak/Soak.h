@@ -50,6 +50,9 @@ struct SoakSummary {
     std::uint64_t seed = 0;
     int jobs = 0;
     long long events = 0;                 // over all shots (first runs)
+    // The shots' runDigest (RunChecks.h), each mixed with its index and summed: the same for any
+    // number of jobs, and the same for two builds only if every shot gave the same events.
+    std::uint64_t digest = 0;
     double wallSeconds = 0.0;
     double cpuSeconds = 0.0;              // the process's processor time over the soak
     double simulateCpuSeconds = 0.0;      // of which in the first simulate() of each shot
