@@ -162,7 +162,11 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
     if (res.bBounced || trace.bKept)
         addClothAnswerStep(e, "b", B.id, trace.bLaw, res.bBounced, res.bBounce, trace.bKept, p, B.mass);
 
-    // The states the simulation goes on from: the law's, or a hold's.
+    // The states the simulation goes on from: the law's, or a hold's (the pair held on its own, the
+    // air hold: derived with the simulator's own computation).
+    std::optional<std::array<BallState, 2>> hold;
+    if (ev.held && ev.group.empty() && !ev.grouped) hold = addAirHoldSteps(e, res, A, B, p);
+    const bool holdExact = hold && sameMotion(ev.after[0], (*hold)[0], A.radius, 0.0) && sameMotion(ev.after[1], (*hold)[1], B.radius, 0.0);
     const bool exact = sameMotion(ev.after[0], res.a, A.radius, 0.0) && sameMotion(ev.after[1], res.b, B.radius, 0.0);
     const bool lawStands = sameMotion(ev.after[0], res.a, A.radius, 1e-9) && sameMotion(ev.after[1], res.b, B.radius, 1e-9);
     Text law;
@@ -183,9 +187,10 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
         law = Text::tr("The balls touch with no approach: the ball on the cloth goes on as its slip says (a slip of "
                        "rounding rolled out, a roll slower than the cloth can tell stopped). These are the states the "
                        "simulation goes on from.");
-    const BallState& a = exact ? res.a : ev.after[0];
-    const BallState& b = exact ? res.b : ev.after[1];
-    const Vec3 J = exact ? res.impulse : ev.impulse;
+    if (!lawStands && ev.held && hold && !holdExact) law = Text::join({law, roundedNormal()}, " ");
+    const BallState& a = exact ? res.a : holdExact ? (*hold)[0] : ev.after[0];
+    const BallState& b = exact ? res.b : holdExact ? (*hold)[1] : ev.after[1];
+    const Vec3 J = exact || holdExact ? res.impulse : ev.impulse;
     StepBuilder(e.steps, Text::tr("After the collision"), law, "v′_a, ω′_a, v′_b, ω′_b,   E′ = Σ (½ m |v′|^2 + ½ I |ω′|^2)")
         .out("v_a_after", "v′_a", velocity3(a), "m/s")
         .out("w_a_after", "ω′_a", a.spin, "rad/s")

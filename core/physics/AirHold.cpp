@@ -6,7 +6,8 @@
 // are (Contact.h): over a segment the normal n (from B's centre to A's) is frozen and the contact
 // force N along it constant, so A flies on a parabola with the acceleration -g z + (N/m_A) n and B
 // moves in Motion.h's pushed motion with -(N/m_B) n_h (the cloth takes the force's vertical part).
-// N makes the pair's relative normal acceleration kHeldCurvatureShare of the curvature |v_t|^2 / d:
+// N makes the pair's relative normal acceleration kHeldCurvatureShare of the curvature |v_t|^2 / d
+// (AirHoldForce.h solves it, for the simulator and the explanation alike):
 //     N (1/m_A + c_B |n_h|^2 / m_B) = g n_z + n_h . a_B - share |v_t|^2 / d,
 // with c_B and a_B B's response to a push through its centre and its cloth's friction along its
 // frozen direction (sliding: 1, -mu_s g e; rolling: 5/7, -mu_r g d; at rest: it rolls off when
@@ -31,6 +32,7 @@
 
 #include "Simulator.h"
 
+#include "AirHoldForce.h"
 #include "CircleLimits.h"
 
 #include <algorithm>
@@ -94,50 +96,6 @@ bool Simulator::groupHoldable(int a, int b) const
     return heldCount_[at(a)] > 0 || heldCount_[at(b)] > 0;
 }
 
-Simulator::AirHoldForce Simulator::airHoldForce(int a, int b, const BallState& sa, const BallState& sb) const
-{
-    AirHoldForce f;
-    const double Ra = radius(a), Rb = radius(b), ma = mass(a), mb = mass(b), g = p_.gravity;
-    const SpaceContact sc = spaceContact(sb, Rb, sa, Ra);  // (n from b to a)
-    if (!(sc.distance > 0.0)) return f;
-    const Vec3& n = sc.normal;
-    f.normal = n;
-    f.gap = sc.gap;
-    f.normalSpeed = sc.normalSpeed;
-    const Vec2 nh = n.head<2>();
-    const double nh2 = nh.squaredNorm(), nhLength = std::sqrt(nh2);
-    const double curvature = kHeldCurvatureShare * sc.tangentSpeed2 / sc.distance;
-    double c = 0.0;
-    Vec2 friction = Vec2::Zero();  // b's cloth friction along its frozen direction (m/s^2)
-    f.labelB = sb.motion;
-    const bool fromRest = !(sb.motion == MotionState::Sliding || (sb.motion == MotionState::Rolling && sb.velocity.norm() > kRollOffSpeed));
-    if (sb.motion == MotionState::Sliding) {
-        c = 1.0;
-        const Vec2 u = slipVelocity(sb, Rb);
-        if (u.norm() > 0.0) friction = -(p_.muSlide * g) * u.normalized();
-    } else if (!fromRest) {
-        c = 5.0 / 7.0;
-        friction = -(p_.muRoll * g) * sb.velocity.normalized();
-    } else if (nhLength > 0.0) {
-        // At rest it rolls off along the push -n_h, its rolling resistance against it.
-        c = 5.0 / 7.0;
-        friction = (p_.muRoll * g / nhLength) * nh;
-        f.labelB = MotionState::Rolling;
-    }
-    double N = (g * n.z() + nh.dot(friction) - curvature) / (1.0 / ma + c * nh2 / mb);
-    if (fromRest && !(c * N * nhLength / mb > p_.muRoll * g)) {
-        // The push does not beat the rolling resistance: the cloth holds b still.
-        f.stillB = true;
-        f.labelB = sb.motion;
-        N = (g * n.z() - curvature) * ma;
-    }
-    f.force = N;
-    if (!(N > 0.0)) return f;
-    f.pushA = (N / ma) * n;
-    if (!f.stillB) f.pushB = -(N / mb) * nh;
-    return f;
-}
-
 void Simulator::beginHeldFlight(int i, double t, const BallState& s, const Vec3& push)
 {
     BallState st = s;
@@ -162,33 +120,12 @@ bool Simulator::airHold(int a, int b, double t, BallState sa, BallState sb, bool
     // (In the air, or on the cloth and leaving it: a ball jumping off the cloth beside a ball whose
     // sliding friction brings it back against it, seed14-shot381639.)
     if (!(sa.z > 0.0 || sa.vz > 0.0) || !airHoldable(a, b, onCloth)) return false;
-    // A slip that has as good as ended, or one that the cloth would end within kSlipRollOutLength, has a
-    // direction of rounding, and so would the friction the force is solved with: the re-seat's
-    // impulse of a micronewton-second can turn it about and the force's sign with it (seed12-shot78694:
-    // 0.29 N, then -0.018 N, and the contact met again at the same instant). It rolls out, as a held
-    // group's member does (HeldContacts.cpp), at the hold's event too (an air event's momentum is the
-    // cloth's as well as the pair's: AirImpacts.h), and again after the re-seat.
-    rollOutRounding(sb, radius(b), p_);
-    AirHoldForce f = airHoldForce(a, b, sa, sb);
-    if (!(f.force > 0.0) || std::abs(f.gap) > kHeldGap || std::abs(f.normalSpeed) > kHoldSpeed) return false;
-    if (f.normalSpeed != 0.0) {
-        // Re-seated, as the cloth's held contacts are: the frozen normal of the last segment left the
-        // pair parting at about (1 - share) |v_t|^2 s / d (the force would do work on that parting),
-        // or approaching when the tangential motion slowed over it (the pair would sink into each
-        // other). An impulse along the normal takes it away (inelastic: the energy falls), b
-        // answering by Contact.h's rule (the cloth takes the rest).
-        const double Rb = radius(b), ma = mass(a), mb = mass(b);
-        const Vec3 n = f.normal;
-        const Vec2 nh = n.head<2>();
-        const double J = f.normalSpeed / (1.0 / ma + contactResponse(sb) * nh.squaredNorm() / mb);
-        const Vec3 dv = -(J / ma) * n;
-        sa.velocity += dv.head<2>();
-        sa.vz += dv.z();
-        applyContactImpulse(sb, Rb, mb, J * nh);
-        rollOutRounding(sb, radius(b), p_);
-        f = airHoldForce(a, b, sa, sb);
-        if (!(f.force > 0.0)) return false;
-    }
+    // The force and the re-seat (AirHoldForce.h: the explanation derives them with the same call).
+    const AirHoldStart start = startAirHold(sa, radius(a), mass(a), sb, radius(b), mass(b), p_);
+    if (!start.held) return false;
+    const AirHoldForce& f = start.force;
+    sa = start.a;
+    sb = start.b;
     airHeld_[at(a)] = b;
     airHeld_[at(b)] = a;
     beginHeldFlight(a, t, sa, f.pushA);

@@ -174,17 +174,6 @@ private:
     // A flying ball a pressed on a ball b (on the cloth or flying) that a group holds (or a itself held
     // on one): their contact joins the group (settle) as a row in space.
     bool groupHoldable(int a, int b) const;
-    struct AirHoldForce {
-        double force = 0.0;          // N, along the normal (> 0 pressed)
-        double gap = 0.0;            // m
-        double normalSpeed = 0.0;    // m/s, (v_a - v_b) . n (> 0 parting)
-        Vec3 normal = Vec3::Zero();  // n, unit, from b's centre to a's (zero if they coincide)
-        Vec3 pushA = Vec3::Zero();   // m/s^2 on a
-        Vec2 pushB = Vec2::Zero();   // m/s^2 on b (the cloth takes the vertical part)
-        MotionState labelB = MotionState::Stationary;  // b's pushed label (Rolling when it rolls off)
-        bool stillB = false;         // b stays at rest: the cloth holds it against the push
-    };
-    AirHoldForce airHoldForce(int a, int b, const BallState& sa, const BallState& sb) const;
     // Solves the pair at t and begins its held segments; false (and nothing changed) when it is not
     // pressed, has parted or cannot be held.
     bool airHold(int a, int b, double t);

@@ -6960,5 +6960,49 @@ Kimaradt kérdés: %1</translation>
         <source>Each ball&apos;s impulse J is the sum of its rows&apos; λ n (−λ n for a row&apos;s first ball); its velocity changes by c J/m (c = 1 sliding or in the air, 5/7 rolling, 0 at rest) and a rolling ball&apos;s spin follows its velocity. A slip the cloth would end within a picometre is rolled out. These are the states the simulation goes on from.</source>
         <translation>Minden golyó J impulzusa sorai λ n értékeinek összege (egy sor első golyójára −λ n); sebessége c J/m-mel változik (c = 1 csúszva vagy a levegőben, 5/7 gördülve, 0 nyugalomban), a gördülő golyó pörgése pedig követi a sebességét. Az a csúszás, amelyet a posztó egy pikométeren belül megszüntetne, kigördül. Ezekből az állapotokból folytatódik a szimuláció.</translation>
     </message>
+    <message>
+        <source>Re-seating the held pair</source>
+        <translation>A tartott pár újraillesztése</translation>
+    </message>
+    <message>
+        <source>The law leaves %1 (flying, f) and %2 (on the cloth, c) moving apart (or together) along n at v_n, slower than the hold speed; n points from %2&apos;s centre to %1&apos;s. An impulse J along n takes that speed away, as for any held contact: %1 takes it all (1/m_f), %2 answers with c_c of it (1 sliding, 5/7 rolling, 0 at rest: the cloth takes the rest). It only removes energy.</source>
+        <translation>A törvény után %1 (repül, f) és %2 (a posztón, c) n mentén v_n sebességgel távolodik (vagy közeledik), lassabban a tartási sebességnél; n %2 középpontjától %1 középpontja felé mutat. Egy n menti J impulzus elveszi ezt a sebességet, mint minden tartott érintkezésnél: %1 egészében felveszi (1/m_f), %2 c_c részével válaszol (csúszva 1, gördülve 5/7, nyugalomban 0: a többit a posztó veszi fel). Ez csak energiát von el.</translation>
+    </message>
+    <message>
+        <source>%1 is at rest and the push does not beat its rolling resistance (5/7 N |n_h| / m_c ≤ μ_r g): the cloth holds it still, and N carries %2&apos;s weight along n alone.</source>
+        <translation>%1 nyugalomban van, és a nyomás nem győzi le a gördülési ellenállását (5/7 N |n_h| / m_c ≤ μ_r g): a posztó egy helyben tartja, és N egyedül hordozza %2 súlyát n mentén.</translation>
+    </message>
+    <message>
+        <source>%1 is at rest and the push beats its rolling resistance: it rolls off along −n_h (c_c = 5/7), its rolling resistance μ_r g against the push.</source>
+        <translation>%1 nyugalomban van, és a nyomás legyőzi a gördülési ellenállását: −n_h irányban elgördül (c_c = 5/7), μ_r g gördülési ellenállása a nyomással szemben hat.</translation>
+    </message>
+    <message>
+        <source>%1 slides: it takes the whole push (c_c = 1), and the cloth&apos;s sliding friction μ_s g acts against its slip.</source>
+        <translation>%1 csúszik: a teljes nyomást felveszi (c_c = 1), és a posztó μ_s g csúszó súrlódása a csúszásával szemben hat.</translation>
+    </message>
+    <message>
+        <source>%1 rolls: static friction keeps it rolling (c_c = 5/7), and its rolling resistance μ_r g acts against its velocity.</source>
+        <translation>%1 gördül: a tapadási súrlódás gördülésben tartja (c_c = 5/7), és μ_r g gördülési ellenállása a sebességével szemben hat.</translation>
+    </message>
+    <message>
+        <source>The hold&apos;s contact force</source>
+        <translation>A tartás érintkezési ereje</translation>
+    </message>
+    <message>
+        <source>Here f is %1, the flying ball above, and c is %2, on the cloth.</source>
+        <translation>Itt f a fent repülő %1, c pedig a posztón lévő %2.</translation>
+    </message>
+    <message>
+        <source>From here a constant force N along n keeps the balls touching over the hold&apos;s segment: %1 flies on a parabola under gravity and N/m_f n, %2 is pushed along −n_h (the cloth takes the vertical part). N makes their relative acceleration along n part them by only a share of the curvature |v_t|²/d of their relative motion, so they never sink into each other.</source>
+        <translation>Innen egy n menti állandó N erő tartja érintkezésben a golyókat a tartás szakaszán: %1 parabolán repül a gravitáció és N/m_f n hatására, %2 golyót −n_h irányban tolja (a függőleges részt a posztó veszi fel). N olyan, hogy a relatív gyorsulásuk n mentén a relatív mozgásuk |v_t|²/d görbületének csak egy részével távolítja őket, így sosem süllyednek egymásba.</translation>
+    </message>
+    <message>
+        <source>Velocities and spins after the hold</source>
+        <translation>Sebességek és pörgések a tartás után</translation>
+    </message>
+    <message>
+        <source>The states the held pair goes on from: the re-seated velocities (the spins are the law&apos;s: the hold&apos;s impulse and force act through both centres), %1 flying and %2 on the cloth.</source>
+        <translation>Az állapotok, amelyekből a tartott pár továbbhalad: az újraillesztett sebességek (a pörgések a törvényéi: a tartás impulzusa és ereje mindkét középponton át hat), %1 repül, %2 a posztón.</translation>
+    </message>
 </context>
 </TS>

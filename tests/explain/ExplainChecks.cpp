@@ -13,6 +13,8 @@ namespace {
 
 constexpr double kRel = 1e-12;
 const char* const kHeldGroupAfter = "Velocities and spins after the group's impulses";
+const char* const kAirHoldForce = "The hold's contact force";
+const char* const kAirHoldAfter = "Velocities and spins after the hold";
 
 struct Checker {
     const explain::Explanation& e;
@@ -240,8 +242,34 @@ std::vector<std::string> checkExplanation(const SimulationResult& r, const expla
     // solve, and what it changed of the ball, belong to that event.)
     if (ev.held || !ev.group.empty() || (ev.grouped && !isTransition(ev.kind))) {
         const explain::Step* after = e.step(kHeldGroupAfter);
-        // (A flying ball held on one ball by the air hold, N in closed form: not derived yet.)
-        if (!after && air) return c.problems;
+        // A flying ball held on one ball by a collision's hold (the air hold, N in closed form): its
+        // force solves its equation with the numbers shown, and its states after are checked below.
+        if (!after && air && ev.held && ev.group.empty()) {
+            after = e.step(kAirHoldAfter);
+            const explain::Step* force = e.step(kAirHoldForce);
+            if (!force) {
+                c.problems.push_back("event " + std::to_string(e.event) + ": no air hold derivation");
+                return c.problems;
+            }
+            auto in = [&](const std::string& key) { const explain::Quantity* q = force->input(key); return q ? q->value : std::nan(""); };
+            const double N = force->result("hold_N") ? force->result("hold_N")->value : std::nan("");
+            const double g = in("g"), nz = in("hold_n_force_z"), curvature = in("hold_curvature"), mf = in("m_f_hold");
+            double lhs = 0.0, rhs = 0.0, scale = 0.0;
+            if (force->input("hold_c_c_force")) {  // (b pushed: the force shares the push between the two)
+                const double cc = in("hold_c_c_force"), nh2 = in("hold_nh2_force"), mc = in("m_c_hold");
+                const double push = in("hold_n_force_x") * in("hold_f_c_x") + in("hold_n_force_y") * in("hold_f_c_y");
+                lhs = N * (1.0 / mf + cc * nh2 / mc);
+                rhs = g * nz + push - curvature;
+                scale = g + std::abs(push) + std::abs(curvature);
+            } else {  // (b held still by the cloth)
+                lhs = N;
+                rhs = mf * (g * nz - curvature);
+                scale = mf * (g + std::abs(curvature));
+            }
+            if (!(N > 0.0) || !(std::abs(lhs - rhs) <= 1e-12 * scale))
+                c.problems.push_back("event " + std::to_string(e.event) + ": the air hold's N = " + std::to_string(N) +
+                                     " does not solve its equation");
+        }
         if (!after) {
             c.problems.push_back("event " + std::to_string(e.event) + ": no held group derivation");
             return c.problems;
