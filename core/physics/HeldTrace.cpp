@@ -85,7 +85,11 @@ HeldTraces runAgain(const SimulationResult& result, const std::optional<CueStrik
         again.balls = result.balls;
         SimulationOptions options;
         options.strikeKeepsElevation = elevation;
-        options.maxEvents = static_cast<long long>(result.events.size()) + 1;
+        // (The time limit ends it at the event. The event cap also caps the loop's steps, 50 per
+        // event, and a shot whose held groups are solved again many times between events takes
+        // more: the run again must have the room the first run had, or it stops short and differs,
+        // seed41-shot1421's cluster at its event 164.)
+        options.maxEvents = std::max(static_cast<long long>(result.events.size()) + 1, SimulationOptions{}.maxEvents);
         options.cancel = stop.get_token();
         if (timed) {
             options.progressInterval = 0.005;

@@ -65,6 +65,29 @@ double largestDifference(const Event& ev, const explain::Step& after)
 class TestExplainShots : public QObject {
     Q_OBJECT
 private slots:
+    // A cluster (seed 41, shot 1421) whose held groups are solved again, without an event, more than
+    // 50 times per event: the run again that records a group's solve must have the room the first
+    // run had. It was capped at the result's events plus one, and with them the loop's steps (50 per
+    // event): it stopped before event 164 and every later group went underived.
+    void runAgainHasTheFirstRunsRoom()
+    {
+        const soak::RandomShot shot = soak::randomShot(kSeed, 1421, soak::ShotClass::Cluster);
+        SimulationOptions options;
+        options.maxEvents = 20000;
+        const SimulationResult r = simulate(shot.setup, options);
+        const explain::ExplainLimits unlimited{{}, std::numeric_limits<double>::infinity()};
+        int derived = 0, held = 0;
+        for (int i = 0; i < static_cast<int>(r.events.size()); ++i) {
+            const Event& ev = r.events[static_cast<std::size_t>(i)];
+            if (!(ev.held || !ev.group.empty() || (ev.grouped && !isTransition(ev.kind)))) continue;
+            ++held;
+            const explain::Explanation e = explain::explain(r, i, shot.setup.shot, unlimited);
+            if (e.step("Velocities and spins after the group's impulses")) ++derived;
+            else qWarning("event %d: no held group derivation", i);
+        }
+        QVERIFY(held > 0);
+        QCOMPARE(derived, held);
+    }
     void everyEventAgrees_data()
     {
         QTest::addColumn<int>("shotClass");
