@@ -5,6 +5,7 @@
 
 #include "AirImpactsTrace.h"
 #include "Contact.h"
+#include "Detection.h"
 #include "Flight.h"
 #include "Motion.h"
 #include "Parts.h"
@@ -164,8 +165,13 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
 
     // The states the simulation goes on from: the law's, or a hold's (the pair held on its own, the
     // air hold: derived with the simulator's own computation).
+    // (As the simulator tells a touch with no approach, whose hold starts from the states before.)
+    auto unchanged = [](const BallState& x, const BallState& y) { return x.velocity == y.velocity && x.vz == y.vz && x.spin == y.spin; };
+    const bool resting = res.approachSpeed <= kRestingSpeed &&
+                         (res.impulse.isZero(0.0) || (unchanged(res.a, ev.before[0]) && unchanged(res.b, ev.before[1])));
     std::optional<std::array<BallState, 2>> hold;
-    if (ev.held && ev.group.empty() && !ev.grouped) hold = addAirHoldSteps(e, res, A, B, p);
+    if (ev.held && ev.group.empty() && !ev.grouped)
+        hold = addAirHoldSteps(e, resting ? ev.before : std::array<BallState, 2>{res.a, res.b}, resting, A, B, p);
     const bool holdExact = hold && sameMotion(ev.after[0], (*hold)[0], A.radius, 0.0) && sameMotion(ev.after[1], (*hold)[1], B.radius, 0.0);
     const bool exact = sameMotion(ev.after[0], res.a, A.radius, 0.0) && sameMotion(ev.after[1], res.b, B.radius, 0.0);
     const bool lawStands = sameMotion(ev.after[0], res.a, A.radius, 1e-9) && sameMotion(ev.after[1], res.b, B.radius, 1e-9);
@@ -190,7 +196,7 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
     if (!lawStands && ev.held && hold && !holdExact) law = Text::join({law, roundedNormal()}, " ");
     const BallState& a = exact ? res.a : holdExact ? (*hold)[0] : ev.after[0];
     const BallState& b = exact ? res.b : holdExact ? (*hold)[1] : ev.after[1];
-    const Vec3 J = exact || holdExact ? res.impulse : ev.impulse;
+    const Vec3 J = exact || (holdExact && !resting) ? res.impulse : ev.impulse;  // (no approach: no impulse)
     StepBuilder(e.steps, Text::tr("After the collision"), law, "v′_a, ω′_a, v′_b, ω′_b,   E′ = Σ (½ m |v′|^2 + ½ I |ω′|^2)")
         .out("v_a_after", "v′_a", velocity3(a), "m/s")
         .out("w_a_after", "ω′_a", a.spin, "rad/s")

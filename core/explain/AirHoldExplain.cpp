@@ -13,18 +13,22 @@
 
 namespace cuelab::explain::detail {
 
-std::optional<std::array<BallState, 2>> addAirHoldSteps(Explanation& e, const AirBallBallResult& res, const Ball& A,
-                                                        const Ball& B, const PhysicsParams& p)
+std::optional<std::array<BallState, 2>> addAirHoldSteps(Explanation& e, const std::array<BallState, 2>& states, bool resting,
+                                                        const Ball& A, const Ball& B, const PhysicsParams& p)
 {
-    // As the simulator's hold rule: a is the higher ball, b's micro-hop off the cloth is the cloth's.
-    const int ka = res.a.z >= res.b.z ? 0 : 1;
+    // As the simulator picks the pair: a touch with no approach holds the flying ball on the other
+    // from their states at the event (AirCollisions.cpp); a collision's hold rule takes the law's
+    // states, a the higher ball, b's micro-hop off the cloth the cloth's (airHoldRule).
+    const int ka = resting ? (states[0].motion == MotionState::Airborne ? 0 : 1) : (states[0].z >= states[1].z ? 0 : 1);
     const Ball& upper = ka == 0 ? A : B;
     const Ball& lower = ka == 0 ? B : A;
-    BallState sa = ka == 0 ? res.a : res.b;
-    BallState sb = ka == 0 ? res.b : res.a;
-    sb.z = 0.0;
-    sb.vz = 0.0;
-    sb.motion = classify(sb, lower.radius);
+    BallState sa = states[static_cast<std::size_t>(ka)];
+    BallState sb = states[static_cast<std::size_t>(1 - ka)];
+    if (!resting) {
+        sb.z = 0.0;
+        sb.vz = 0.0;
+        sb.motion = classify(sb, lower.radius);
+    }
     const AirHoldStart start = startAirHold(sa, upper.radius, upper.mass, sb, lower.radius, lower.mass, p);
     if (!start.held) return std::nullopt;
     const std::string a = upper.id, b = lower.id;

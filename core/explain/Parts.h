@@ -41,11 +41,12 @@ TimeOfImpact airBallBallToi(const SimulationResult& r, int index);
 // The sentence for an event whose states after agree with its law's to rounding only.
 Text roundedNormal();
 void explainAirBallBall(const SimulationResult& r, int index, Explanation& e);
-// A flying ball held on a ball on the cloth by a collision's hold (AirHoldExplain.cpp): the re-seat
-// and the contact force's steps from the law's result `res`, and the states the hold goes on from
-// (in the event's order); none when the simulator's computation does not hold the pair.
-std::optional<std::array<BallState, 2>> addAirHoldSteps(Explanation& e, const AirBallBallResult& res, const Ball& A,
-                                                        const Ball& B, const PhysicsParams& p);
+// A flying ball held on a ball on the cloth (AirHoldExplain.cpp): the re-seat and the contact force's
+// steps from `states` (the event's order: its states before for a touch with no approach, `resting`,
+// else the law's result), and the states the hold goes on from; none when the simulator's
+// computation does not hold the pair.
+std::optional<std::array<BallState, 2>> addAirHoldSteps(Explanation& e, const std::array<BallState, 2>& states, bool resting,
+                                                        const Ball& A, const Ball& B, const PhysicsParams& p);
 void explainAirCushion(const SimulationResult& r, int index, Explanation& e);  // AirCushionExplain.cpp
 void addSpaceMomentumStep(Explanation& e, const Text& law, const std::string& key, const std::string& symbol, const Vec3& outside);
 
