@@ -95,6 +95,19 @@ AirHoldStart startAirHold(BallState sa, double ra, double ma, BallState sb, doub
         out.b = sb;
         if (!(f.force > 0.0)) return out;
     }
+    // The cloth holds b still: a b rolling slower than kRollOffSpeed (a law's or a re-seat's impulse
+    // of rounding, counted as at rest by the force above) is at rest, as a resting touch leaves it
+    // (AirCollisions.cpp). Left rolling, its stop nanoseconds later ended the hold, and the pair was
+    // met and held again at once until the event cap (wide-seed18-shot123395: 1e-11 m/s, an event
+    // every 30 ns).
+    if (f.stillB && sb.motion == MotionState::Rolling && sb.velocity.norm() <= kRollOffSpeed) {
+        sb.velocity = Vec2::Zero();
+        sb.spin.x() = 0.0;
+        sb.spin.y() = 0.0;
+        sb.motion = classify(sb, rb);
+        out.b = sb;
+        out.force.labelB = sb.motion;
+    }
     out.held = true;
     return out;
 }
