@@ -5,7 +5,6 @@
 
 #include "AirImpactsTrace.h"
 #include "Contact.h"
-#include "Detection.h"
 #include "Flight.h"
 #include "Motion.h"
 #include "Parts.h"
@@ -165,10 +164,8 @@ void explainAirBallBall(const SimulationResult& r, int index, Explanation& e)
 
     // The states the simulation goes on from: the law's, or a hold's (the pair held on its own, the
     // air hold: derived with the simulator's own computation).
-    // (As the simulator tells a touch with no approach, whose hold starts from the states before.)
-    auto unchanged = [](const BallState& x, const BallState& y) { return x.velocity == y.velocity && x.vz == y.vz && x.spin == y.spin; };
-    const bool resting = res.approachSpeed <= kRestingSpeed &&
-                         (res.impulse.isZero(0.0) || (unchanged(res.a, ev.before[0]) && unchanged(res.b, ev.before[1])));
+    // (A touch with no approach, as the simulator tells it: its hold starts from the states before.)
+    const bool resting = airTouchRests(res, ev.before[0], ev.before[1]);
     std::optional<std::array<BallState, 2>> hold;
     if (ev.held && ev.group.empty() && !ev.grouped)
         hold = addAirHoldSteps(e, resting ? ev.before : std::array<BallState, 2>{res.a, res.b}, resting, A, B, p);

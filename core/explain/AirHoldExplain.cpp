@@ -5,7 +5,6 @@
 // impulse that takes the parting away, the contact force N in closed form, and the states after.
 
 #include "AirHoldForce.h"
-#include "Contact.h"
 #include "Motion.h"
 #include "Parts.h"
 
@@ -46,7 +45,7 @@ std::optional<std::array<BallState, 2>> addAirHoldSteps(Explanation& e, const st
                     "J = v_n / (1/m_f + c_c |n_h|² / m_c),   v′_f = v_f − (J/m_f) n,   v′_c = v_c + c_c (J/m_c) n_h")
             .in("hold_n", "n", f.normal, "")
             .in("hold_vn", "v_n", f.normalSpeed, "m/s")
-            .in("hold_c_c", "c_c", contactResponse(sb))
+            .in("hold_c_c", "c_c", start.reseatResponse)
             .in("hold_nh2", "|n_h|²", nh.squaredNorm())
             .out("hold_J", "J", start.reseat, "N s")
             .out("hold_v_f", "v′_f", velocity3(start.a), "m/s")
@@ -65,7 +64,7 @@ std::optional<std::array<BallState, 2>> addAirHoldSteps(Explanation& e, const st
         how = Text::tr("%1 is at rest and the push beats its rolling resistance: it rolls off along −n_h (c_c = 5/7), "
                        "its rolling resistance μ_r g against the push.")
                   .arg(b);
-    else if (sb.motion == MotionState::Sliding)
+    else if (f.response == 1.0)  // (Contact.h's rule: a sliding ball takes the whole push)
         how = Text::tr("%1 slides: it takes the whole push (c_c = 1), and the cloth's sliding friction μ_s g acts "
                        "against its slip.")
                   .arg(b);

@@ -179,11 +179,7 @@ void Simulator::airBallBall(const Candidate& c, Event& e)
     // the cloth beside it, approaching at 8e-20 m/s, the law's 1e-20 N s lost, met again at that
     // instant until the event cap). (A law that does change them stands: seed19-shot723846's
     // 4e-12 m/s joins the group its balls are held in, as a collision.)
-    auto unchanged = [](const BallState& x, const BallState& y) {
-        return x.velocity == y.velocity && x.vz == y.vz && x.spin == y.spin;
-    };
-    const bool resting = res.approachSpeed <= kRestingSpeed &&
-                         (res.impulse.isZero(0.0) || (unchanged(res.a, e.before[0]) && unchanged(res.b, e.before[1])));
+    const bool resting = airTouchRests(res, e.before[0], e.before[1]);
     if (resting) {
         const int a = flying(i) ? i : j, b = a == i ? j : i;
         // A held event marks where the hold begins and changes no velocity (the fall-through below

@@ -81,7 +81,8 @@ AirHoldStart startAirHold(BallState sa, double ra, double ma, BallState sb, doub
         // answering by Contact.h's rule (the cloth takes the rest).
         const Vec3 n = f.normal;
         const Vec2 nh = n.head<2>();
-        const double J = f.normalSpeed / (1.0 / ma + contactResponse(sb) * nh.squaredNorm() / mb);
+        const double c = contactResponse(sb);
+        const double J = f.normalSpeed / (1.0 / ma + c * nh.squaredNorm() / mb);
         const Vec3 dv = -(J / ma) * n;
         sa.velocity += dv.head<2>();
         sa.vz += dv.z();
@@ -89,6 +90,7 @@ AirHoldStart startAirHold(BallState sa, double ra, double ma, BallState sb, doub
         rollOutRounding(sb, rb, p);
         out.reseated = true;
         out.reseat = J;
+        out.reseatResponse = c;
         f = airHoldForce(sa, ra, ma, sb, rb, mb, p);
         out.force = f;
         out.a = sa;

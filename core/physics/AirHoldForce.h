@@ -48,6 +48,7 @@ struct AirHoldStart {
     AirHoldForce entering;   // the force from the states it is solved from
     bool reseated = false;   // a normal speed was taken away
     double reseat = 0.0;     // N s, the re-seating impulse along -n on a (+n_h on b's cloth plane)
+    double reseatResponse = 0.0;  // c_b of the re-seat (Contact.h's contactResponse of b then)
     AirHoldForce force;      // the hold's force (after the re-seat, when there was one)
 };
 AirHoldStart startAirHold(BallState sa, double ra, double ma, BallState sb, double rb, double mb, const PhysicsParams& p);

@@ -2,6 +2,7 @@
 #include "AirImpactsTrace.h"
 
 #include "Contact.h"
+#include "Detection.h"
 
 #include <Eigen/Geometry>
 
@@ -164,6 +165,14 @@ AirBallBallResult resolveAirBallBall(const AirState& a, double ra, double ma, co
         trace->bKept = bKept;
     }
     return r;
+}
+
+bool airTouchRests(const AirBallBallResult& res, const AirState& a, const AirState& b)
+{
+    auto unchanged = [](const AirState& x, const AirState& y) {
+        return x.velocity == y.velocity && x.vz == y.vz && x.spin == y.spin;
+    };
+    return res.approachSpeed <= kRestingSpeed && (res.impulse.isZero(0.0) || (unchanged(res.a, a) && unchanged(res.b, b)));
 }
 
 }  // namespace cuelab

@@ -58,4 +58,9 @@ struct AirBallBallResult {
 AirBallBallResult resolveAirBallBall(const AirState& a, double ra, double ma, const AirState& b, double rb, double mb,
                                      const PhysicsParams& p);
 
+// A touch with no approach (AirCollisions.cpp, and the explanation alike): the law's `res` of the
+// states before `a`, `b` approaches within kRestingSpeed and changes no velocity (no impulse, or one
+// lost in rounding). The simulator holds such a pair from the states before, or lets it be.
+bool airTouchRests(const AirBallBallResult& res, const AirState& a, const AirState& b);
+
 }  // namespace cuelab
