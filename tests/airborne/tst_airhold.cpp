@@ -381,24 +381,7 @@ void TestAirHold::comingDownOnARollingBallIsHeld()
     // (1e-10 m/s); low bounced back, top fell on it again, each time a little slower: a Zeno run of
     // impacts until the event cap. Now the law's micro-bounce is dropped (the hold rule in the air,
     // AirborneLoop.cpp's airHoldRule): low's hop goes into the cloth and the pair is held.
-    Setup s;
-    s.physics.ballBallModel = BallBallModel::Frictional;
-    s.physics.ballBallRestitution = 0.8696339351623968;
-    s.physics.ballBallFrictionKind = BallBallFriction::Alciatore;
-    Ball low;
-    low.id = "low";
-    low.state.position = Vec2(0.55797045382499333, 0.3201902311557831);
-    low.state.velocity = Vec2(-0.18728457527418221, 0.064693595031395629);
-    low.state.spin = Vec3(-low.state.velocity.y() / kR, low.state.velocity.x() / kR, 0.0931026);  // rolling
-    Ball top;
-    top.id = "top";
-    top.state.position = Vec2(0.5801230826325765, 0.31698493365925795);
-    top.state.z = 0.052584309515991051;
-    top.state.velocity = Vec2(-0.16430699696696116, 0.16876048016763104);
-    top.state.vz = -0.0033365180679032478;
-    top.state.spin = Vec3(127.296, 27.9377, -31.354);
-    s.balls = {low, top};
-    for (Ball& b : s.balls) b.state.motion = isAirborne(b.state) ? MotionState::Airborne : classify(b.state, b.radius);
+    const Setup s = comingDownOnARollingBall();
     SimulationOptions options;
     options.maxEvents = 5000;
     const SimulationResult r = simulate(s, options);

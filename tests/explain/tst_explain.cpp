@@ -8,6 +8,7 @@
 #include "ExplainChecks.h"
 #include "ExplainText.h"
 #include "Flight.h"
+#include "FlyingBall.h"
 #include "Motion.h"
 #include "Racks.h"
 #include "SetupFile.h"
@@ -274,25 +275,7 @@ private slots:
     // numbers shown, and the states the hold goes on from equal the event's bit for bit.
     void airHoldDerived()
     {
-        const double R = 0.028575;
-        Setup s;
-        s.physics.ballBallModel = BallBallModel::Frictional;
-        s.physics.ballBallRestitution = 0.8696339351623968;
-        s.physics.ballBallFrictionKind = BallBallFriction::Alciatore;
-        Ball low;
-        low.id = "low";
-        low.state.position = Vec2(0.55797045382499333, 0.3201902311557831);
-        low.state.velocity = Vec2(-0.18728457527418221, 0.064693595031395629);
-        low.state.spin = Vec3(-low.state.velocity.y() / R, low.state.velocity.x() / R, 0.0931026);  // rolling
-        Ball top;
-        top.id = "top";
-        top.state.position = Vec2(0.5801230826325765, 0.31698493365925795);
-        top.state.z = 0.052584309515991051;
-        top.state.velocity = Vec2(-0.16430699696696116, 0.16876048016763104);
-        top.state.vz = -0.0033365180679032478;
-        top.state.spin = Vec3(127.296, 27.9377, -31.354);
-        s.balls = {low, top};
-        for (Ball& b : s.balls) b.state.motion = isAirborne(b.state) ? MotionState::Airborne : classify(b.state, b.radius);
+        const Setup s = comingDownOnARollingBall();
         const SimulationResult r = simulate(s);
         QVERIFY(!r.events.empty());
         const Event& ev = r.events.front();
